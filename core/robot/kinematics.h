@@ -1,0 +1,63 @@
+#pragma once
+
+#include <vector>
+
+#include <Eigen/Core>
+#include <Eigen/Geometry>
+
+#include "core/robot/robot_model.h"
+#include "core/robot/whole_body_state.h"
+
+namespace topay {
+
+/// Poses computed by Kinematics::Update for one whole-body state. Sized once by
+/// Kinematics::MakeCache; Update then never allocates.
+struct KinematicsCache {
+  Eigen::Isometry3d X_WB = Eigen::Isometry3d::Identity();  ///< Base frame in the world.
+  std::vector<Eigen::Isometry3d> X_WL;                     ///< Every link, in model order.
+  std::vector<Eigen::Vector3d> p_WS;                       ///< Every collision sphere centre.
+  Eigen::Isometry3d X_WE = Eigen::Isometry3d::Identity();  ///< End-effector frame.
+};
+
+/// Forward kinematics and analytic Jacobians of the whole body with respect to the flat state
+/// z = [x, y, yaw, q1..qN] (see WholeBodyState).
+///
+/// The model must outlive this object.
+class Kinematics {
+ public:
+  explicit Kinematics(const RobotModel& model);
+
+  const RobotModel& model() const { return model_; }
+  int num_joints() const { return model_.num_joints(); }
+  /// Size of the flat state z: 3 + N.
+  int num_states() const { return 3 + model_.num_joints(); }
+
+  KinematicsCache MakeCache() const;
+
+  /// Computes X_WB, every X_WL, every sphere centre p_WS and X_WE. Allocation-free.
+  void Update(const WholeBodyState& state, KinematicsCache* cache) const;
+
+  /// d p_WS / d z (3 x (3+N)) of sphere `sphere`, at the state of the last Update of `cache`.
+  void SphereJacobian(const KinematicsCache& cache, int sphere,
+                      Eigen::Ref<Eigen::MatrixXd> J_WS) const;
+
+  /// Spatial Jacobian of the end effector (6 x (3+N)): rows 0-2 map z-dot to the angular
+  /// velocity w_WE expressed in W, rows 3-5 to the translational velocity v_WE of E's origin
+  /// expressed in W.
+  void EndEffectorJacobian(const KinematicsCache& cache, Eigen::Ref<Eigen::MatrixXd> J_WE) const;
+
+  /// Same form as EndEffectorJacobian, for the origin of an arbitrary link.
+  void LinkJacobian(const KinematicsCache& cache, int link,
+                    Eigen::Ref<Eigen::MatrixXd> J_WL) const;
+
+  /// Convenience: X_WE for a state (allocates a cache; not for hot loops).
+  Eigen::Isometry3d EndEffectorPose(const WholeBodyState& state) const;
+
+ private:
+  const RobotModel& model_;
+  // For each link, the q indices of the movable joints on its path from the root (ancestors
+  // and itself), so Jacobians skip joints that do not move it.
+  std::vector<std::vector<int>> ancestor_links_with_joints_;
+};
+
+}  // namespace topay
