@@ -47,16 +47,30 @@ class Kinematics {
   void EndEffectorJacobian(const KinematicsCache& cache, Eigen::Ref<Eigen::MatrixXd> J_WE) const;
 
   /// Same form as EndEffectorJacobian, for the origin of an arbitrary link.
-  void LinkJacobian(const KinematicsCache& cache, int link,
-                    Eigen::Ref<Eigen::MatrixXd> J_WL) const;
+  void LinkJacobian(const KinematicsCache& cache, int link, Eigen::Ref<Eigen::MatrixXd> J_WL) const;
+
+  /// gradient += J_WP^T * f_W, where J_WP (3 x (3+N)) is the translational Jacobian of the
+  /// point p_WP rigidly attached to `link`: the gradient of f_W . p_WP with respect to z
+  /// (f_W held fixed), without forming J_WP. Allocation-free; for distance and penalty
+  /// gradients.
+  void AddPointJacobianTransposeTimes(const KinematicsCache& cache, int link,
+                                      const Eigen::Vector3d& p_WP, const Eigen::Vector3d& f_W,
+                                      Eigen::Ref<Eigen::VectorXd> gradient) const;
 
   /// Convenience: X_WE for a state (allocates a cache; not for hot loops).
+  /// All methods throw std::invalid_argument for a state of the wrong size, a NaN in it, an
+  /// index out of range or a Jacobian buffer of the wrong shape.
   Eigen::Isometry3d EndEffectorPose(const WholeBodyState& state) const;
 
  private:
   const RobotModel& model_;
-  // For each link, the q indices of the movable joints on its path from the root (ancestors
-  // and itself), so Jacobians skip joints that do not move it.
+  /// Fills columns of a point Jacobian J (3 or 6 rows: [angular;] linear) for point p_WP
+  /// fixed to `link`.
+  void PointJacobian(const KinematicsCache& cache, int link, const Eigen::Vector3d& p_WP,
+                     bool with_angular, Eigen::Ref<Eigen::MatrixXd> J) const;
+
+  // For each link, the indices of the links on its path from the root (ancestors and itself)
+  // whose joint is movable, so Jacobians visit only the joints that move it.
   std::vector<std::vector<int>> ancestor_links_with_joints_;
 };
 

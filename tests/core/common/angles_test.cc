@@ -15,7 +15,7 @@ TEST(WrapAngleTest, MapsIntoHalfOpenInterval) {
   EXPECT_DOUBLE_EQ(WrapAngle(-kPi), kPi);
   EXPECT_NEAR(WrapAngle(3.0 * kPi / 2.0), -kPi / 2.0, 1e-12);
   EXPECT_NEAR(WrapAngle(-5.0 * kPi / 2.0), -kPi / 2.0, 1e-12);
-  EXPECT_NEAR(WrapAngle(100.0), 100.0 - 16.0 * kPi, 1e-12);
+  EXPECT_NEAR(WrapAngle(100.0), 100.0 - 32.0 * kPi, 1e-12);
 }
 
 TEST(WrapAngleTest, KeepsEquivalentAngle) {

@@ -1,0 +1,57 @@
+#pragma once
+
+#include <cstdint>
+#include <optional>
+
+#include <Eigen/Geometry>
+
+#include "core/geometry/scene.h"
+#include "core/map/occupancy_grid2.h"
+#include "core/map/signed_distance_field2.h"
+#include "core/map/signed_distance_field3.h"
+
+namespace topay {
+
+/// How BuildSceneDistanceFields maps a scene.
+struct SceneDistanceFieldsOptions {
+  /// Cell size (m) of both fields: the benchmark maps use 0.1 m.
+  double resolution_m = 0.1;
+  /// Obstacles whose z extent overlaps this band's interior block the base (2D field); the
+  /// default is the floor up to the chassis top, so the base may pass under table tops and
+  /// floating boxes, which the arm must clear in the 3D field.
+  HeightBand base_band{0.0, 0.155};
+  /// Placement of the zero level, for both fields.
+  SignedDistanceFieldOptions field;
+  /// Volume the 3D field covers (and, in xy, the 2D one); unset: the scene's bounds_W_m.
+  std::optional<Eigen::AlignedBox3d> bounds_W_m;
+};
+
+/// What BuildSceneDistanceFields did: sizes and wall-clock timings (steady clock, s).
+struct SceneDistanceFieldsSummary {
+  std::int64_t num_cells_3d = 0;
+  std::int64_t num_occupied_3d = 0;
+  std::int64_t num_cells_2d = 0;
+  std::int64_t num_occupied_2d = 0;
+  int num_boxes_in_base_band = 0;  ///< Boxes that count for the 2D base field.
+  double rasterize_3d_s = 0.0;     ///< OccupancyGrid3::AddBox over all boxes.
+  double build_3d_s = 0.0;         ///< SignedDistanceField3::Build.
+  double rasterize_2d_s = 0.0;     ///< OccupancyGrid2::AddBoxInBand over all boxes.
+  double build_2d_s = 0.0;         ///< SignedDistanceField2::Build.
+  double total_s = 0.0;
+};
+
+/// The arm's 3D field and the base's 2D field of one scene.
+struct SceneDistanceFields {
+  SignedDistanceField3 field_3d;
+  SignedDistanceField2 base_field_2d;
+  SceneDistanceFieldsSummary summary;
+};
+
+/// Rasterises every box of the scene exactly (conservative: thin parts are kept) into a 3D grid
+/// over the bounds and, if it overlaps the base band, into a 2D grid, then builds both signed
+/// distance fields. Throws std::invalid_argument for bad options or a box with NaN/inf values
+/// or negative sizes (the message names the box index).
+SceneDistanceFields BuildSceneDistanceFields(const Scene& scene,
+                                             const SceneDistanceFieldsOptions& options = {});
+
+}  // namespace topay

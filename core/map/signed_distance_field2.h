@@ -1,0 +1,97 @@
+#pragma once
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "core/map/distance_transform.h"
+#include "core/map/grid_geometry.h"
+#include "core/map/occupancy_grid2.h"
+#include "core/map/signed_distance_values.h"
+
+namespace topay {
+
+/// The 2D counterpart of SignedDistanceField3, in the world xy plane, for the mobile base:
+/// built from an OccupancyGrid2 (e.g. OccupancyGrid2::AddBoxInBand over the chassis band).
+/// Same cell values (exact EDTs, beyond the grid counts as free, zero level placed by
+/// SignedDistanceFieldOptions, +max_distance_m() everywhere for a grid without occupied cells),
+/// bilinear interpolation with its exact gradient, and the same
+/// behaviour outside the box of cell centres: clamp to its nearest point c and add |p - c|.
+class SignedDistanceField2 {
+ public:
+  /// Builds the field (two exact squared EDTs); the workspace, if given, is reused.
+  static SignedDistanceField2 Build(const OccupancyGrid2& occupancy,
+                                    const SignedDistanceFieldOptions& options = {},
+                                    EdtWorkspace* workspace = nullptr);
+  void Rebuild(const OccupancyGrid2& occupancy, const SignedDistanceFieldOptions& options = {},
+               EdtWorkspace* workspace = nullptr);
+
+  const GridGeometry2& geometry() const { return geometry_; }
+  double max_distance_m() const { return max_distance_m_; }
+  float CellValue(int ix, int iy) const { return values_[geometry_.Index(ix, iy)]; }
+  const std::vector<float>& values() const { return values_; }
+
+  /// Interpolated signed distance (m) at p_W (xy).
+  double Distance(const Eigen::Vector2d& p_W) const { return Interpolate(p_W, nullptr); }
+
+  /// Distance(p_W) and its gradient with respect to p_W.
+  double DistanceAndGradient(const Eigen::Vector2d& p_W, Eigen::Vector2d* gradient_W) const {
+    return Interpolate(p_W, gradient_W);
+  }
+
+ private:
+  SignedDistanceField2() = default;
+  inline double Interpolate(const Eigen::Vector2d& p_W, Eigen::Vector2d* gradient_W) const;
+
+  GridGeometry2 geometry_;
+  double inv_resolution_ = 10.0;
+  double max_distance_m_ = 0.0;
+  std::vector<float> values_;
+};
+
+inline double SignedDistanceField2::Interpolate(const Eigen::Vector2d& p_W,
+                                                Eigen::Vector2d* gradient_W) const {
+  const GridGeometry2& g = geometry_;
+  double t[2];
+  double outside_m[2];
+  bool clamped[2];
+  int base[2];
+  for (int a = 0; a < 2; ++a) {
+    // Continuous index in which cell centre i sits at u = i.
+    const double u = (p_W(a) - g.origin_W_m(a)) * inv_resolution_ - 0.5;
+    const double last = g.dims(a) - 1;
+    double u_clamped = u > 0.0 ? u : 0.0;  // NaN goes to 0 here and propagates via outside_m.
+    u_clamped = u_clamped < last ? u_clamped : last;
+    outside_m[a] = (u - u_clamped) * g.resolution_m;
+    clamped[a] = u != u_clamped;
+    base[a] = std::min(static_cast<int>(u_clamped), g.dims(a) - 2);
+    t[a] = u_clamped - base[a];
+  }
+  const std::int64_t sy = g.dims.x();
+  const float* c = values_.data() + g.Index(base[0], base[1]);
+  const double c00 = c[0], c10 = c[1], c01 = c[sy], c11 = c[sy + 1];
+  // Bilinear interpolation: linear in x on both rows, then in y (Numerical Recipes 3rd ed.,
+  // eq. 3.6.5).
+  const double c0 = c00 + t[0] * (c10 - c00);
+  const double c1 = c01 + t[0] * (c11 - c01);
+  double distance = c0 + t[1] * (c1 - c0);
+  if (gradient_W) {
+    // Exact partial derivatives of the interpolant, times dt/dp = 1 / res (0 where clamped).
+    const double d_dty = c1 - c0;
+    const double d_dtx = (1.0 - t[1]) * (c10 - c00) + t[1] * (c11 - c01);
+    *gradient_W = Eigen::Vector2d(clamped[0] ? 0.0 : d_dtx * inv_resolution_,
+                                  clamped[1] ? 0.0 : d_dty * inv_resolution_);
+  }
+  const double outside_sq = outside_m[0] * outside_m[0] + outside_m[1] * outside_m[1];
+  if (outside_sq != 0.0) {  // also taken for NaN, which then propagates
+    const double outside_norm = std::sqrt(outside_sq);
+    distance += outside_norm;
+    if (gradient_W) *gradient_W += Eigen::Vector2d(outside_m[0], outside_m[1]) / outside_norm;
+  }
+  return distance;
+}
+
+}  // namespace topay

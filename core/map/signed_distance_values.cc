@@ -1,0 +1,56 @@
+#include "core/map/signed_distance_values.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+#include <string>
+
+namespace topay {
+namespace {
+
+// Distance in cells from cell i to the nearest virtual cell beyond the grid (index -1 or n).
+inline int CellsToBorder(int i, int n) { return std::min(i + 1, n - i); }
+
+}  // namespace
+
+void ValidateSignedDistanceFieldOptions(const SignedDistanceFieldOptions& options) {
+  if (!(options.zero_level_inset_cells >= 0.0 && options.zero_level_inset_cells <= 0.5)) {
+    throw std::invalid_argument(
+        "SignedDistanceFieldOptions: zero_level_inset_cells must be in [0, 0.5], got " +
+        std::to_string(options.zero_level_inset_cells));
+  }
+}
+
+void SignedValuesFromSquaredDistances(const std::uint8_t* cells, const Eigen::Vector3i& dims,
+                                      int num_axes, double resolution_m,
+                                      double max_distance_m,
+                                      const SignedDistanceFieldOptions& options,
+                                      float* squared_to_signed) {
+  const float res = static_cast<float>(resolution_m);
+  const float cap = static_cast<float>(max_distance_m);
+  const float outside_offset = static_cast<float>(options.zero_level_inset_cells) - 0.5f;
+  const float inside_offset = -0.5f - static_cast<float>(options.zero_level_inset_cells);
+  const int no_border = std::numeric_limits<int>::max() / 2;
+  std::size_t i = 0;
+  for (int iz = 0; iz < dims.z(); ++iz) {
+    const int border_z = num_axes == 3 ? CellsToBorder(iz, dims.z()) : no_border;
+    for (int iy = 0; iy < dims.y(); ++iy) {
+      const int border_yz = std::min(border_z, CellsToBorder(iy, dims.y()));
+      for (int ix = 0; ix < dims.x(); ++ix, ++i) {
+        if (cells[i] == 0) {
+          // sqrt(inf) = inf, clipped to the cap.
+          const float root = std::sqrt(squared_to_signed[i]);
+          squared_to_signed[i] = std::min((root + outside_offset) * res, cap);
+        } else {
+          const int border = std::min(border_yz, CellsToBorder(ix, dims.x()));
+          const float squared =
+              std::min(squared_to_signed[i], static_cast<float>(border * border));
+          squared_to_signed[i] = -std::min((std::sqrt(squared) + inside_offset) * res, cap);
+        }
+      }
+    }
+  }
+}
+
+}  // namespace topay

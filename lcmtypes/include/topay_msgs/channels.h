@@ -1,0 +1,27 @@
+#pragma once
+// LCM channel names of the TopAY process graph, one per stream. lcmtypes/README.md lists the
+// message type, publisher and subscribers of each.
+
+#include <array>
+#include <string_view>
+
+namespace topay::channels {
+
+inline constexpr std::string_view BASE_POSE = "BASE_POSE";              // base_pose_t
+inline constexpr std::string_view BASE_VELOCITY = "BASE_VELOCITY";      // base_velocity_t
+inline constexpr std::string_view JOINT_STATE = "JOINT_STATE";          // joint_state_t
+inline constexpr std::string_view ROBOT_STATE = "ROBOT_STATE";          // robot_state_t
+inline constexpr std::string_view POINT_CLOUD = "POINT_CLOUD";          // point_cloud_t
+inline constexpr std::string_view MAP_UPDATE = "MAP_UPDATE";            // map_update_t
+inline constexpr std::string_view GOAL = "GOAL";                        // goal_t
+inline constexpr std::string_view TRAJECTORY = "TRAJECTORY";            // poly_trajectory_t
+inline constexpr std::string_view CONTROL_COMMAND = "CONTROL_COMMAND";  // control_command_t
+inline constexpr std::string_view PLANNER_STATUS = "PLANNER_STATUS";    // planner_status_t
+inline constexpr std::string_view HEARTBEAT = "HEARTBEAT";              // heartbeat_t
+
+// Every channel above, e.g. for a logger's or a bridge's channel list.
+inline constexpr std::array<std::string_view, 11> kAll = {
+    BASE_POSE,  BASE_VELOCITY, JOINT_STATE,     ROBOT_STATE,    POINT_CLOUD, MAP_UPDATE,
+    GOAL,       TRAJECTORY,    CONTROL_COMMAND, PLANNER_STATUS, HEARTBEAT};
+
+}  // namespace topay::channels

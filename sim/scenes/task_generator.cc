@@ -1,0 +1,177 @@
+#include "sim/scenes/task_generator.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <stdexcept>
+#include <string>
+
+#include "core/collision/scene_clearance.h"
+#include "core/common/random.h"
+#include "sim/scenes/benchmark_scene.h"
+#include "sim/scenes/quantize.h"
+
+namespace topay {
+namespace {
+
+// The rectangle base positions are drawn from.
+struct BaseRegion {
+  Eigen::Vector2d min_m;
+  Eigen::Vector2d max_m;
+};
+
+BaseRegion MakeBaseRegion(const Eigen::AlignedBox3d& bounds_W, DistanceRange range,
+                          const TaskGeneratorOptions& options) {
+  const Eigen::Vector2d margin = Eigen::Vector2d::Constant(options.wall_margin_m);
+  const BaseRegion region{bounds_W.min().head<2>() + margin, bounds_W.max().head<2>() - margin};
+  if (!(region.min_m.array() < region.max_m.array()).all()) {
+    throw std::invalid_argument("task generator: wall_margin_m leaves no room for the base");
+  }
+  const double diagonal = (region.max_m - region.min_m).norm();
+  if (DistanceRangeBounds(range).min_m > diagonal) {
+    throw std::invalid_argument("task generator: range \"" +
+                                std::string(DistanceRangeName(range)) +
+                                "\" needs base distances the room cannot hold");
+  }
+  return region;
+}
+
+WholeBodyState DrawBasePose(const BaseRegion& region, int num_joints, Rng& rng) {
+  WholeBodyState state;
+  state.x_m = QuantizeMicro(rng.Uniform(region.min_m.x(), region.max_m.x()));
+  state.y_m = QuantizeMicro(rng.Uniform(region.min_m.y(), region.max_m.y()));
+  state.yaw_rad = QuantizeMicro(rng.Uniform(-std::numbers::pi, std::numbers::pi));
+  state.q_rad = Eigen::VectorXd::Zero(num_joints);
+  return state;
+}
+
+double BaseDistance(const WholeBodyState& a, const WholeBodyState& b) {
+  return std::hypot(b.x_m - a.x_m, b.y_m - a.y_m);
+}
+
+// Draws (start, goal) base pose pairs until their distance is in range (the protocol's
+// "redrawn until the base distance is in range": both poses are redrawn).
+void DrawBasePairInRange(const BaseRegion& region, int num_joints, DistanceRange range,
+                         const TaskGeneratorOptions& options, Rng& rng, PlanningTask* task) {
+  const DistanceBounds bounds = DistanceRangeBounds(range);
+  for (int i = 0; i < options.max_base_pair_tries; ++i) {
+    task->start = DrawBasePose(region, num_joints, rng);
+    task->goal = DrawBasePose(region, num_joints, rng);
+    if (bounds.Contains(BaseDistance(task->start, task->goal))) return;
+  }
+  throw std::runtime_error("task generator: no base pose pair in range \"" +
+                           std::string(DistanceRangeName(range)) + "\" in " +
+                           std::to_string(options.max_base_pair_tries) + " draws");
+}
+
+// Draws arm configurations uniformly within the joint limits until the state is free (none
+// if the base itself is not clear).
+bool DrawFreeArm(const SceneClearanceChecker& checker, const JointLimits& limits,
+                 const TaskGeneratorOptions& options, Rng& rng,
+                 SceneClearanceWorkspace* workspace, WholeBodyState* state) {
+  const Eigen::Vector2d p_WB(state->x_m, state->y_m);
+  const double margin = options.obstacle_margin_m;
+  if (!(checker.BaseClearance(p_WB, margin) > margin)) return false;
+  for (int i = 0; i < options.max_arm_tries; ++i) {
+    for (int j = 0; j < state->num_joints(); ++j) {
+      const double q = QuantizeMicro(rng.Uniform(limits.q_min_rad(j), limits.q_max_rad(j)));
+      state->q_rad(j) = std::clamp(q, limits.q_min_rad(j), limits.q_max_rad(j));
+    }
+    if (checker.IsCollisionFree(*state, options.obstacle_margin_m, options.self_margin_m,
+                                workspace)) {
+      return true;
+    }
+  }
+  return false;
+}
+
+void FillGoal(const Kinematics& kinematics, PlanningTask* task) {
+  task->X_WE_goal = kinematics.EndEffectorPose(task->goal);
+  task->base_distance_m = BaseDistance(task->start, task->goal);
+}
+
+void CheckOptions(const TaskGeneratorOptions& options) {
+  if (options.max_base_pair_tries <= 0 || options.max_arm_tries <= 0 ||
+      options.max_base_pose_tries <= 0) {
+    throw std::invalid_argument("task generator: the max_*_tries options must be positive");
+  }
+}
+
+}  // namespace
+
+double ArmReachBound(const RobotModel& model) {
+  double reach = 0.0;
+  for (const CollisionSphere& sphere : model.spheres) {
+    double length = sphere.p_LS_m.norm() + sphere.radius_m;
+    for (int link = sphere.link; link >= 0; link = model.links[link].parent) {
+      length += model.links[link].X_PJ.translation().norm();
+    }
+    reach = std::max(reach, length);
+  }
+  return reach;
+}
+
+BenchmarkCase GenerateBenchmarkCase(SceneKind kind, DistanceRange range, std::uint64_t seed,
+                                    const Kinematics& kinematics,
+                                    const TaskGeneratorOptions& options) {
+  CheckOptions(options);
+  const RobotModel& model = kinematics.model();
+  const Scene room_shape;  // Default bounds: the benchmark room.
+  const BaseRegion region = MakeBaseRegion(room_shape.bounds_W_m, range, options);
+  BenchmarkCase out;
+  PlanningTask& task = out.task;
+  task.range = range;
+  task.seed = seed;
+  Rng pose_rng(seed);
+  DrawBasePairInRange(region, model.num_joints(), range, options, pose_rng, &task);
+
+  KeepOutRegions keep_out;
+  const double radius =
+      model.base_cylinder.radius_m + ArmReachBound(model) + options.keep_out_margin_m;
+  for (const WholeBodyState* state : {&task.start, &task.goal}) {
+    keep_out.cylinders.push_back(
+        {Eigen::Vector2d(state->x_m, state->y_m), radius, 0.0, room_shape.bounds_W_m.max().z()});
+  }
+  task.scene_seed = DeriveSeed(seed, 1);
+  out.scene = GenerateBenchmarkScene(kind, task.scene_seed, keep_out);
+
+  const SceneClearanceChecker checker(kinematics, out.scene.scene);
+  SceneClearanceWorkspace workspace = checker.MakeWorkspace();
+  Rng arm_rng(DeriveSeed(seed, 2));
+  for (WholeBodyState* state : {&task.start, &task.goal}) {
+    if (!DrawFreeArm(checker, model.joint_limits, options, arm_rng, &workspace, state)) {
+      throw std::runtime_error("GenerateBenchmarkCase: no collision-free arm configuration in " +
+                               std::to_string(options.max_arm_tries) + " draws (seed " +
+                               std::to_string(seed) + ")");
+    }
+  }
+  FillGoal(kinematics, &task);
+  return out;
+}
+
+PlanningTask GenerateTask(const Scene& scene, DistanceRange range, std::uint64_t seed,
+                          const Kinematics& kinematics, const TaskGeneratorOptions& options) {
+  CheckOptions(options);
+  const RobotModel& model = kinematics.model();
+  const BaseRegion region = MakeBaseRegion(scene.bounds_W_m, range, options);
+  const SceneClearanceChecker checker(kinematics, scene);
+  SceneClearanceWorkspace workspace = checker.MakeWorkspace();
+  Rng rng(seed);
+  PlanningTask task;
+  task.range = range;
+  task.seed = seed;
+  task.scene_seed = scene.seed;
+  for (int i = 0; i < options.max_base_pose_tries; ++i) {
+    DrawBasePairInRange(region, model.num_joints(), range, options, rng, &task);
+    if (DrawFreeArm(checker, model.joint_limits, options, rng, &workspace, &task.start) &&
+        DrawFreeArm(checker, model.joint_limits, options, rng, &workspace, &task.goal)) {
+      FillGoal(kinematics, &task);
+      return task;
+    }
+  }
+  throw std::runtime_error("GenerateTask: no collision-free start and goal states in range \"" +
+                           std::string(DistanceRangeName(range)) + "\" in " +
+                           std::to_string(options.max_base_pose_tries) + " base pose pairs");
+}
+
+}  // namespace topay

@@ -1,0 +1,66 @@
+#pragma once
+
+#include <cstdint>
+
+#include "core/geometry/scene.h"
+#include "core/robot/kinematics.h"
+#include "sim/scenes/distance_range.h"
+#include "sim/scenes/generated_scene.h"
+#include "sim/scenes/planning_task.h"
+#include "sim/scenes/scene_kind.h"
+
+namespace topay {
+
+struct TaskGeneratorOptions {
+  /// Base positions are uniform in the scene's bounds (xy) shrunk by this margin on every
+  /// side: the protocol's "2 m from walls", measured from the room's outer border, i.e.
+  /// x, y in [-8, 8] m for the 20 x 20 m room. Yaw uniform in [-pi, pi).
+  double wall_margin_m = 2.0;
+  /// A state counts as free if its exact obstacle clearance (base and arm spheres) exceeds
+  /// obstacle_margin_m and its self clearances (sphere pairs, arm above chassis) exceed
+  /// self_margin_m (SceneClearance::IsCollisionFree).
+  double obstacle_margin_m = 0.0;
+  double self_margin_m = 0.0;
+  /// Draws of a (start, goal) base pose pair until its distance is in range (both redrawn).
+  int max_base_pair_tries = 100000;
+  /// Draws of an arm configuration (uniform within the joint limits) for one base pose.
+  int max_arm_tries = 1000;
+  /// GenerateTask: in-range base pose pairs tried before giving up.
+  int max_base_pose_tries = 1000;
+  /// GenerateBenchmarkCase: keep-out cylinders of radius base radius + arm reach bound
+  /// (ArmReachBound) + this margin, around the start and goal base positions.
+  double keep_out_margin_m = 0.1;
+};
+
+/// A generated scene with a task in it.
+struct BenchmarkCase {
+  GeneratedScene scene;
+  PlanningTask task;
+};
+
+/// Upper bound (m) on the distance from the base frame's origin of any point of any arm
+/// sphere, over all joint values: for each sphere, the lengths of the fixed joint offsets
+/// |p_PJ| on the path from the root to its link, plus |p_LS| + r (triangle inequality).
+double ArmReachBound(const RobotModel& model);
+
+/// The benchmark protocol (facts sheet) for one task: from `seed`, draw the start and goal
+/// base poses (uniform, see TaskGeneratorOptions) until their straight-line distance is in
+/// `range`; then generate a fresh `kind` scene with seed DeriveSeed(seed, 1) and keep-out
+/// cylinders around both base positions; then draw the start and goal arm configurations
+/// (uniform within the joint limits, from DeriveSeed(seed, 2)) until each state is exactly
+/// collision free (SceneClearanceChecker, no distance field). Same seed, same case.
+/// Throws std::runtime_error if a bounded search fails (e.g. no free arm configuration in
+/// max_arm_tries), std::invalid_argument for an impossible range for the room.
+BenchmarkCase GenerateBenchmarkCase(SceneKind kind, DistanceRange range, std::uint64_t seed,
+                                    const Kinematics& kinematics,
+                                    const TaskGeneratorOptions& options = {});
+
+/// A task in an existing scene: from `seed`, base pose pairs are drawn as above (in range),
+/// and a pair is kept if both its poses have a collision-free arm configuration (each drawn up
+/// to max_arm_tries times; a pose whose base cylinder is not clear is rejected at once);
+/// at most max_base_pose_tries pairs. task.scene_seed = scene.seed. Throws std::runtime_error
+/// when the bounded search fails, std::invalid_argument for an impossible range.
+PlanningTask GenerateTask(const Scene& scene, DistanceRange range, std::uint64_t seed,
+                          const Kinematics& kinematics, const TaskGeneratorOptions& options = {});
+
+}  // namespace topay

@@ -1,0 +1,34 @@
+#pragma once
+
+#include <string>
+
+#include "sim/scenes/planning_task.h"
+
+namespace topay {
+
+// Task files: a JSON object
+//   {"range": "medium", "seed": 12, "scene_seed": 34, "base_distance_m": 9.5,
+//    "start": {"x_m": .., "y_m": .., "yaw_rad": .., "q_rad": [q1, .., qN]},
+//    "goal": {...same...},
+//    "goal_end_effector": {"position_m": [x, y, z], "quaternion_wxyz": [w, x, y, z]}}
+// goal_end_effector is X_WE_goal (position of E in W, rotation R_WE as a unit quaternion).
+// Numbers in shortest round-trip form, keys in this order: same task, same bytes.
+
+std::string TaskToJson(const PlanningTask& task);
+
+/// Writes TaskToJson to path; throws ConfigError(path, "", ...) if it cannot be written.
+void WriteTaskJson(const std::string& path, const PlanningTask& task);
+
+/// Reads and validates a task file. Every field above is required. Throws
+/// ConfigError("<path>", "<field>", "<message>") for a missing file, malformed JSON, a missing
+/// field, a wrong type, a non-finite number, an unknown range, start and goal with different
+/// joint counts (or, if expected_num_joints >= 0, a count other than that), a quaternion whose
+/// norm is not 1 within 1e-6, or a base_distance_m that disagrees with start and goal by more
+/// than 1e-6 m.
+PlanningTask ReadTaskJson(const std::string& path, int expected_num_joints = -1);
+
+/// As ReadTaskJson, from text; file_name is used in error messages.
+PlanningTask TaskFromJson(const std::string& text, const std::string& file_name,
+                          int expected_num_joints = -1);
+
+}  // namespace topay

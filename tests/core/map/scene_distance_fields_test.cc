@@ -1,0 +1,92 @@
+#include "core/map/scene_distance_fields.h"
+
+#include <stdexcept>
+#include <string>
+
+#include <gtest/gtest.h>
+
+namespace topay {
+namespace {
+
+OrientedBox MakeBox(Eigen::Vector3d center, Eigen::Vector3d size, double yaw = 0.0) {
+  OrientedBox box;
+  box.center_W_m = center;
+  box.size_m = size;
+  box.yaw_rad = yaw;
+  return box;
+}
+
+// A 1 x 1 m table, top [0.70, 0.75] m, four 0.05 m legs at the corners, in a 4 x 4 m room.
+Scene TableScene() {
+  Scene scene;
+  scene.kind = "table";
+  scene.bounds_W_m = Eigen::AlignedBox3d(Eigen::Vector3d(-2, -2, 0), Eigen::Vector3d(2, 2, 1.6));
+  scene.boxes.push_back(MakeBox({0, 0, 0.725}, {1.0, 1.0, 0.05}));
+  for (double x : {-0.475, 0.475}) {
+    for (double y : {-0.475, 0.475}) scene.boxes.push_back(MakeBox({x, y, 0.35}, {0.05, 0.05, 0.7}));
+  }
+  return scene;
+}
+
+TEST(SceneDistanceFieldsTest, BasePassesUnderTheTableTopWhichTheArmMustClear) {
+  const SceneDistanceFields fields = BuildSceneDistanceFields(TableScene());
+  // 3D: the top is an obstacle: at its middle, the field is about zero (within one cell), and
+  // 0.3 m above it about 0.3 m.
+  EXPECT_NEAR(fields.field_3d.Distance(Eigen::Vector3d(0, 0, 0.725)), 0.0, 0.1);
+  EXPECT_NEAR(fields.field_3d.Distance(Eigen::Vector3d(0, 0, 1.05)), 0.3, 0.1);
+  // 3D: the legs too.
+  EXPECT_NEAR(fields.field_3d.Distance(Eigen::Vector3d(0.475, 0.475, 0.3)), 0.0, 0.1);
+  // 2D: under the top's middle the base sees only the legs, 0.45 * sqrt(2) = 0.636 m away.
+  EXPECT_NEAR(fields.base_field_2d.Distance(Eigen::Vector2d(0, 0)), 0.45 * std::sqrt(2.0), 0.1);
+  EXPECT_NEAR(fields.base_field_2d.Distance(Eigen::Vector2d(0.475, 0.475)), 0.0, 0.1);
+  // Far from the table in 2D.
+  EXPECT_GT(fields.base_field_2d.Distance(Eigen::Vector2d(-1.5, 1.5)), 1.2);
+
+  const SceneDistanceFieldsSummary& summary = fields.summary;
+  EXPECT_EQ(summary.num_boxes_in_base_band, 4);
+  EXPECT_EQ(summary.num_cells_3d, 40 * 40 * 16);
+  EXPECT_EQ(summary.num_cells_2d, 40 * 40);
+  // Legs: 1 to 4 columns each, 2D and 7 layers in 3D; top: 10 x 10 to 11 x 11 cells, 1 layer.
+  EXPECT_GE(summary.num_occupied_2d, 4);
+  EXPECT_LE(summary.num_occupied_2d, 16);
+  EXPECT_GE(summary.num_occupied_3d, 100 + 4 * 7);
+  EXPECT_LE(summary.num_occupied_3d, 121 + 16 * 7);
+  EXPECT_GE(summary.rasterize_3d_s, 0.0);
+  EXPECT_GE(summary.total_s,
+            summary.rasterize_3d_s + summary.build_3d_s + summary.rasterize_2d_s +
+                summary.build_2d_s);
+}
+
+TEST(SceneDistanceFieldsTest, OptionsSetResolutionBandAndBounds) {
+  SceneDistanceFieldsOptions options;
+  options.resolution_m = 0.05;
+  options.base_band = HeightBand{0.0, 1.0};  // a band that reaches the table top
+  options.bounds_W_m = Eigen::AlignedBox3d(Eigen::Vector3d(-1, -1, 0), Eigen::Vector3d(1, 1, 1));
+  const SceneDistanceFields fields = BuildSceneDistanceFields(TableScene(), options);
+  EXPECT_EQ(fields.field_3d.geometry().dims, Eigen::Vector3i(40, 40, 20));
+  EXPECT_EQ(fields.summary.num_boxes_in_base_band, 5);
+  EXPECT_LT(fields.base_field_2d.Distance(Eigen::Vector2d(0, 0)), 0.0);  // under the top now
+}
+
+TEST(SceneDistanceFieldsTest, BadInputIsReportedClearly) {
+  SceneDistanceFieldsOptions options;
+  options.resolution_m = 0.0;
+  EXPECT_THROW(BuildSceneDistanceFields(TableScene(), options), std::invalid_argument);
+  options = {};
+  options.base_band = HeightBand{0.2, 0.1};
+  EXPECT_THROW(BuildSceneDistanceFields(TableScene(), options), std::invalid_argument);
+  options = {};
+  options.field.zero_level_inset_cells = -1.0;
+  EXPECT_THROW(BuildSceneDistanceFields(TableScene(), options), std::invalid_argument);
+  Scene bad = TableScene();
+  bad.boxes[2].size_m.y() = std::nan("");
+  try {
+    BuildSceneDistanceFields(bad);
+    FAIL() << "expected std::invalid_argument";
+  } catch (const std::invalid_argument& error) {
+    EXPECT_NE(std::string(error.what()).find("scene box 2"), std::string::npos) << error.what();
+  }
+}
+
+}  // namespace
+}  // namespace topay
