@@ -1,4 +1,5 @@
 #include "core/collision/scene_clearance.h"
+#include "tests/common/make_box.h"
 
 #include <algorithm>
 #include <cmath>
@@ -15,14 +16,6 @@ namespace topay {
 namespace {
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
-
-OrientedBox MakeBox(Eigen::Vector3d center, Eigen::Vector3d size, double yaw = 0.0) {
-  OrientedBox box;
-  box.center_W_m = center;
-  box.size_m = size;
-  box.yaw_rad = yaw;
-  return box;
-}
 
 // Boxes scattered around the origin, grounded and floating.
 Scene RandomScene(int count, Rng& rng) {

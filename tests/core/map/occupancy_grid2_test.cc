@@ -1,4 +1,5 @@
 #include "core/map/occupancy_grid2.h"
+#include "tests/common/make_box.h"
 
 #include <cmath>
 #include <numbers>
@@ -11,14 +12,6 @@
 
 namespace topay {
 namespace {
-
-OrientedBox MakeBox(Eigen::Vector3d center, Eigen::Vector3d size, double yaw = 0.0) {
-  OrientedBox box;
-  box.center_W_m = center;
-  box.size_m = size;
-  box.yaw_rad = yaw;
-  return box;
-}
 
 const GridGeometry2 kRoom2 = GridGeometry2::FromBounds(
     Eigen::AlignedBox2d(Eigen::Vector2d(-2, -2), Eigen::Vector2d(2, 2)), 0.1);

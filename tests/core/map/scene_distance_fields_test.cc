@@ -1,4 +1,5 @@
 #include "core/map/scene_distance_fields.h"
+#include "tests/common/make_box.h"
 
 #include <stdexcept>
 #include <string>
@@ -7,14 +8,6 @@
 
 namespace topay {
 namespace {
-
-OrientedBox MakeBox(Eigen::Vector3d center, Eigen::Vector3d size, double yaw = 0.0) {
-  OrientedBox box;
-  box.center_W_m = center;
-  box.size_m = size;
-  box.yaw_rad = yaw;
-  return box;
-}
 
 // A 1 x 1 m table, top [0.70, 0.75] m, four 0.05 m legs at the corners, in a 4 x 4 m room.
 Scene TableScene() {

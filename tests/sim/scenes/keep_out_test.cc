@@ -1,17 +1,10 @@
 #include "sim/scenes/keep_out.h"
+#include "tests/common/make_box.h"
 
 #include <gtest/gtest.h>
 
 namespace topay {
 namespace {
-
-OrientedBox MakeBox(Eigen::Vector3d center, Eigen::Vector3d size, double yaw = 0.0) {
-  OrientedBox box;
-  box.center_W_m = center;
-  box.size_m = size;
-  box.yaw_rad = yaw;
-  return box;
-}
 
 TEST(KeepOutTest, CylinderAndBoxRegions) {
   KeepOutRegions regions;
