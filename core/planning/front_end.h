@@ -1,0 +1,78 @@
+#pragma once
+
+#include <memory>
+#include <optional>
+#include <stop_token>
+
+#include <Eigen/Geometry>
+
+#include "core/map/signed_distance_field2.h"
+#include "core/map/signed_distance_field3.h"
+#include "core/planning/front_end_options.h"
+#include "core/planning/front_end_result.h"
+#include "core/planning/whole_body_validity.h"
+#include "core/robot/kinematics.h"
+#include "core/robot/whole_body_ik.h"
+#include "core/robot/whole_body_state.h"
+
+namespace topay {
+
+/// The planner's front end, hierarchical path acquisition (paper Sec. III-A, Algorithm 1):
+///  1. goal candidates: whole-body goal states for the end-effector target from the IK
+///     (hint first, ranked by base travel and field clearance; goal_candidates.h);
+///  2. for a goal candidate: topological base paths on the 2D field from the start base
+///     position to the goal's (visibility PRM, DFS, shortcut, UVD pruning) plus a JPS path,
+///     or JPS alone (topological_path_search.h);
+///  3. each base path discretised into SE(2) layers (DiscreteSE2, start and goal yaw
+///     included) and searched by the constrained bidirectional informed RRT* for the arm, one
+///     job per path in parallel on a TBB arena (parallel_acquisition.h);
+///  4. if no job succeeds, the next goal candidate (up to max_goal_attempts).
+/// Validity everywhere is WholeBodyValidity on the two fields (with its default margins a
+/// valid state is exactly clear of the scene the fields were built from).
+///
+/// Cancellation: Plan polls `stop` between stages and passes it (merged with its own
+/// deadlines) to the base path search and to every arm job, which poll it every iteration.
+///
+/// The kinematics (and its model) and both fields must outlive this object. Plan is const and
+/// may be called from several threads at once (each call has its own scratch; they share the
+/// arena's threads).
+class FrontEnd {
+ public:
+  /// Throws std::invalid_argument for options out of range (naming them).
+  FrontEnd(const Kinematics& kinematics, const SignedDistanceField2& base_field,
+           const SignedDistanceField3& arm_field, FrontEndOptions options = {});
+  ~FrontEnd();
+  FrontEnd(const FrontEnd&) = delete;
+  FrontEnd& operator=(const FrontEnd&) = delete;
+
+  /// Whole-body paths from `start` to a state whose end effector is at X_WE_target (within
+  /// the IK's tolerances, 1 mm / 0.01 rad by default). `hint`: a whole-body goal state tried
+  /// first. Never throws for bad input: an empty result whose status and failure_reason say
+  /// what was wrong (NaN, wrong joint count, start invalid, no goal, no base path, no arm
+  /// path, cancelled).
+  FrontEndResult Plan(const WholeBodyState& start, const Eigen::Isometry3d& X_WE_target,
+                      const std::optional<WholeBodyState>& hint = std::nullopt,
+                      std::stop_token stop = {}) const;
+
+  const FrontEndOptions& options() const { return options_; }
+  const WholeBodyValidity& validity() const { return validity_; }
+
+ private:
+  struct Arena;
+  struct PlanContext;
+
+  void PlanInArena(PlanContext* context) const;
+  bool FindGoals(PlanContext* context) const;
+  /// One goal attempt: base paths, layers, arm jobs. True if a path was found.
+  bool AttemptGoal(int attempt, PlanContext* context) const;
+
+  const Kinematics& kinematics_;
+  const SignedDistanceField2& base_field_;
+  const SignedDistanceField3& arm_field_;
+  FrontEndOptions options_;
+  WholeBodyValidity validity_;
+  WholeBodyIk ik_;
+  std::unique_ptr<Arena> arena_;
+};
+
+}  // namespace topay

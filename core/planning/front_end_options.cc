@@ -1,0 +1,22 @@
+#include "core/planning/front_end_options.h"
+
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+namespace topay {
+
+void CheckFrontEndOptions(const FrontEndOptions& o) {
+  auto require = [](bool ok, const char* field, const char* rule) {
+    if (!ok) {
+      throw std::invalid_argument(std::string("FrontEndOptions::") + field + " must be " + rule);
+    }
+  };
+  require(o.max_goal_attempts >= 1, "max_goal_attempts", ">= 1");
+  require(o.improvement_window_s >= 0.0, "improvement_window_s", ">= 0 (+infinity: no limit)");
+  require(o.acquisition_budget_s > 0.0, "acquisition_budget_s", "> 0 (+infinity: no limit)");
+  require(o.num_threads >= 0, "num_threads", ">= 0 (0: all cores)");
+  CheckGoalCandidatesOptions(o.goal);
+}
+
+}  // namespace topay

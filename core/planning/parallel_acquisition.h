@@ -1,0 +1,70 @@
+#pragma once
+
+#include <chrono>
+#include <cstdint>
+#include <stop_token>
+#include <string>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "core/planning/arm_rrt_star.h"
+#include "core/planning/base_path.h"
+#include "core/planning/discrete_se2.h"
+#include "core/planning/front_end_result.h"
+#include "core/planning/whole_body_validity.h"
+
+namespace topay {
+
+/// One arm search to run: a base path, its SE(2) layers and the RRT* seed.
+struct ArmJob {
+  BasePath base_path;
+  int base_path_index = 0;
+  DiscreteSE2Path base_sequence;
+  std::uint64_t seed = 1;
+  /// Non-empty if the job could not be set up (e.g. DiscreteSE2 rejected the path): it is
+  /// reported as failed with this message and not run.
+  std::string setup_error;
+};
+
+struct ParallelAcquisitionOptions {
+  /// Options of every job's PlanArmRrtStar (the seed is the job's).
+  ArmRrtStarOptions rrt;
+  /// Jobs still running this long (s) after the first success are cancelled (+inf: never).
+  double improvement_window_s = 0.02;
+  /// Jobs still running (or queued) this long (s) after the stage starts are cancelled.
+  double budget_s = 0.5;
+  /// Concurrent jobs (>= 1); the caller's TBB arena should have at least this many threads.
+  int num_workers = 1;
+  /// ArmJobReport::goal_attempt of the reports.
+  int goal_attempt = 0;
+};
+
+struct ParallelAcquisitionResult {
+  /// One per job, in job order.
+  std::vector<ArmJobReport> jobs;
+  /// Successful jobs' paths (base_path_index, homotopy_class filled), in job order.
+  std::vector<FrontEndPath> paths;
+  /// Since `t0`: when the first job returned a solution (+infinity if none).
+  double first_success_ms = std::numeric_limits<double>::infinity();
+  double wall_ms = 0.0;
+  bool cancelled_by_caller = false;
+};
+
+/// The parallel stage of Algorithm 1 ("#pragma parallel for each P_r in P_b"): runs one
+/// constrained bidirectional RRT* per job on the current TBB arena, num_workers at a time,
+/// jobs taken in order (shortest base path first when the caller sorts them so). Cooperative
+/// cancellation: every job polls one internal stop token, which fires when the caller's
+/// `stop` fires (at once, through a std::stop_callback), at first success +
+/// improvement_window_s, or at the budget (a watcher thread, see StopDeadline). Jobs not yet
+/// started when it fires are reported as not started. `t0` is the time origin of the
+/// reported times. Never throws for a failing job (its report says why).
+ParallelAcquisitionResult AcquireWholeBodyPaths(const std::vector<ArmJob>& jobs,
+                                                const Eigen::VectorXd& q_start_rad,
+                                                const Eigen::VectorXd& q_goal_rad,
+                                                const WholeBodyValidity& validity,
+                                                const ParallelAcquisitionOptions& options,
+                                                std::chrono::steady_clock::time_point t0,
+                                                std::stop_token stop = {});
+
+}  // namespace topay

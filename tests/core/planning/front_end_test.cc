@@ -1,0 +1,393 @@
+#include "core/planning/front_end.h"
+
+#include <algorithm>
+#include <array>
+#include <chrono>
+#include <cmath>
+#include <cstdint>
+#include <cstdlib>
+#include <iostream>
+#include <limits>
+#include <memory>
+#include <stop_token>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "core/collision/scene_clearance.h"
+#include "core/common/random.h"
+#include "core/io/robot_loader.h"
+#include "core/map/scene_distance_fields.h"
+#include "core/planning/base_band.h"
+#include "core/planning/path_verification.h"
+#include "core/robot/kinematics.h"
+#include "sim/scenes/task_generator.h"
+#include "tests/common/make_box.h"
+
+namespace topay {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+// Options without wall-clock limits, so a result depends only on the inputs and seeds (not on
+// the machine's load): PRM by sample count, RRT* by iteration count, every job to its end.
+FrontEndOptions DeterministicOptions() {
+  FrontEndOptions options;
+  options.ik.time_budget_s = std::numeric_limits<double>::infinity();
+  options.topology.prm.max_time_s = 0.0;
+  options.topology.prm.max_samples = 2000;
+  options.rrt.time_budget_s = std::numeric_limits<double>::infinity();
+  options.rrt.max_iterations = 3000;
+  options.improvement_window_s = std::numeric_limits<double>::infinity();
+  options.acquisition_budget_s = std::numeric_limits<double>::infinity();
+  return options;
+}
+
+class FrontEndTest : public ::testing::Test {
+ protected:
+  FrontEndTest()
+      : model_(LoadRobotModel(std::string(TOPAY_SOURCE_DIR) + "/config/robot/topay_mm.urdf",
+                              std::string(TOPAY_SOURCE_DIR) + "/config/robot/topay_mm.yaml")),
+        kinematics_(model_) {}
+
+  // Fields at 0.1 m with the front end's base band (core/planning/base_band.h).
+  SceneDistanceFields Fields(const Scene& scene) const {
+    SceneDistanceFieldsOptions options;
+    options.resolution_m = 0.1;
+    options.base_band = FrontEndBaseBand(kinematics_, std::sqrt(3.0) * options.resolution_m);
+    return BuildSceneDistanceFields(scene, options);
+  }
+
+  // Asserts every path of a successful result with the exact checker.
+  void ExpectPathsExactlyValid(const FrontEndResult& result, const Scene& scene,
+                               const WholeBodyState& start, const Eigen::Isometry3d& X_WE,
+                               const std::string& where) const {
+    const SceneClearanceChecker checker(kinematics_, scene);
+    for (std::size_t p = 0; p < result.paths.size(); ++p) {
+      const FrontEndPath& path = result.paths[p];
+      const PathVerification check = VerifyWholeBodyPath(path.path, start, X_WE, checker,
+                                                          kinematics_, &path.base_sequence);
+      EXPECT_TRUE(check.ok) << where << ", path " << p << ": " << check.message;
+      ASSERT_GE(path.path.base_path_index, 0);
+      ASSERT_LT(path.path.base_path_index, static_cast<int>(result.base_paths.size()));
+      EXPECT_EQ(path.path.homotopy_class,
+                result.base_paths[path.path.base_path_index].homotopy_class);
+      EXPECT_EQ(path.base_sequence.num_layers(), static_cast<int>(path.path.states.size()));
+      if (p > 0) {
+        EXPECT_LE(result.paths[p - 1].duration_s(), path.duration_s());
+      }
+    }
+  }
+
+  // A simple scene: walls of a 10 x 10 m room and nothing else.
+  static Scene EmptyRoom() {
+    Scene scene;
+    scene.bounds_W_m =
+        Eigen::AlignedBox3d(Eigen::Vector3d(-5, -5, 0), Eigen::Vector3d(5, 5, 1.6));
+    scene.kind = "front end test";
+    return scene;
+  }
+
+  WholeBodyState State(double x, double y, double yaw) const {
+    WholeBodyState state;
+    state.x_m = x;
+    state.y_m = y;
+    state.yaw_rad = yaw;
+    state.q_rad.resize(model_.num_joints());
+    state.q_rad << 0.3, 0.8, 0.1, 1.2, 0.2, 0.6, 0.1;
+    return state;
+  }
+
+  // Success rate of the front end on `num_tasks` random small-range tasks of `kind`, every
+  // returned path checked exactly.
+  double RandomTaskSuccessRate(SceneKind kind, int num_tasks, std::uint64_t seed) const {
+    int successes = 0;
+    for (int i = 0; i < num_tasks; ++i) {
+      const BenchmarkCase bench_case = GenerateBenchmarkCase(
+          kind, DistanceRange::kSmall, DeriveSeed(seed, static_cast<std::uint64_t>(i)),
+          kinematics_);
+      const SceneDistanceFields fields = Fields(bench_case.scene.scene);
+      FrontEndOptions options = DeterministicOptions();
+      options.seed = DeriveSeed(seed, 1'000'000 + static_cast<std::uint64_t>(i));
+      const FrontEnd front_end(kinematics_, fields.base_field_2d, fields.field_3d, options);
+      const PlanningTask& task = bench_case.task;
+      const FrontEndResult result = front_end.Plan(task.start, task.X_WE_goal, task.goal);
+      const std::string where = std::string(SceneKindName(kind)) + " task " + std::to_string(i);
+      if (result.success()) {
+        ++successes;
+        EXPECT_EQ(result.status, FrontEndStatus::kSuccess);
+        EXPECT_TRUE(result.failure_reason.empty());
+        EXPECT_GT(result.stats.num_base_paths, 0) << where;
+        EXPECT_GE(result.stats.num_jobs, static_cast<int>(result.paths.size()));
+        ExpectPathsExactlyValid(result, bench_case.scene.scene, task.start, task.X_WE_goal, where);
+      } else {
+        EXPECT_FALSE(result.failure_reason.empty()) << where;
+        std::cout << where << ": " << ToString(result.status) << ": " << result.failure_reason
+                  << "\n";
+      }
+    }
+    return static_cast<double>(successes) / num_tasks;
+  }
+
+  RobotModel model_;
+  Kinematics kinematics_;
+};
+
+int NumTasks() {
+  const char* env = std::getenv("TOPAY_FRONT_END_TEST_TASKS");
+  return env != nullptr ? std::atoi(env) : 100;
+}
+
+// 100 small-range tasks per scene type (seeds DeriveSeed(20240611, i)); every path passes the
+// exact whole-body check at 1 cm / 0.01 rad, consecutive states lie on adjacent base layers,
+// the first state is the start and the last reaches the target within 1 mm / 0.01 rad.
+// Measured with DeterministicOptions (no wall-clock limit, so the rate does not depend on the
+// machine): Cuboids 96 / 100, Tables 79 / 100. Below the benchmark goals (99 % and
+// 97 %): every Tables failure and 3 of the 4 Cuboids failures are "no base path" (the start
+// and the goal candidates are not connected on the 2D field inflated to base radius + the
+// exactness margin sqrt(2) x 0.1 m), the other an arm search that hit its iteration cap.
+// The measured rates are asserted (a drop is a regression); the goals are not met here.
+constexpr double kMeasuredCuboidsRate = 0.96;
+constexpr double kMeasuredTablesRate = 0.79;
+
+TEST_F(FrontEndTest, RandomCuboidsTasksGiveExactlyValidPaths) {
+  const double rate = RandomTaskSuccessRate(SceneKind::kCuboids, NumTasks(), 20240611);
+  std::cout << "cuboids small success rate: " << rate << "\n";
+  EXPECT_GE(rate, kMeasuredCuboidsRate);
+}
+
+TEST_F(FrontEndTest, RandomTablesTasksGiveExactlyValidPaths) {
+  const double rate = RandomTaskSuccessRate(SceneKind::kTables, NumTasks(), 20240611);
+  std::cout << "tables small success rate: " << rate << "\n";
+  EXPECT_GE(rate, kMeasuredTablesRate);
+}
+
+TEST_F(FrontEndTest, PillarBetweenStartAndGoalGivesPathsInTwoClasses) {
+  Scene scene = EmptyRoom();
+  scene.boxes.push_back(MakeBox(Eigen::Vector3d(0, 0, 0.75), Eigen::Vector3d(1.0, 1.0, 1.5)));
+  const SceneDistanceFields fields = Fields(scene);
+  const FrontEnd front_end(kinematics_, fields.base_field_2d, fields.field_3d,
+                           DeterministicOptions());
+  const WholeBodyState start = State(-3.0, 0.0, 0.0);
+  const WholeBodyState goal = State(3.0, 0.0, 0.0);
+  const Eigen::Isometry3d X_WE = kinematics_.EndEffectorPose(goal);
+  const FrontEndResult result = front_end.Plan(start, X_WE, goal);
+  ASSERT_TRUE(result.success()) << result.failure_reason;
+  EXPECT_TRUE(result.stats.goal_from_hint);
+  EXPECT_GE(result.stats.num_classes_kept, 2);
+  EXPECT_GT(result.stats.num_prm_nodes, 2);
+  EXPECT_GT(result.stats.rrt_iterations, 0);
+  EXPECT_TRUE(std::isfinite(result.stats.time_to_first_solution_ms));
+  int classes_with_a_path[8] = {};
+  for (const FrontEndPath& path : result.paths) {
+    ASSERT_LT(path.path.homotopy_class, 8);
+    classes_with_a_path[path.path.homotopy_class] = 1;
+  }
+  EXPECT_GE(classes_with_a_path[0] + classes_with_a_path[1], 2);
+  ExpectPathsExactlyValid(result, scene, start, X_WE, "pillar");
+}
+
+TEST_F(FrontEndTest, EmptyMapWorks) {
+  Scene scene = EmptyRoom();  // no box at all
+  const SceneDistanceFields fields = Fields(scene);
+  const FrontEnd front_end(kinematics_, fields.base_field_2d, fields.field_3d,
+                           DeterministicOptions());
+  const WholeBodyState start = State(-2.0, -1.0, 0.5);
+  const Eigen::Isometry3d X_WE = kinematics_.EndEffectorPose(State(2.0, 1.5, -1.0));
+  const FrontEndResult result = front_end.Plan(start, X_WE);  // no hint
+  ASSERT_TRUE(result.success()) << result.failure_reason;
+  EXPECT_FALSE(result.stats.goal_from_hint);
+  ExpectPathsExactlyValid(result, scene, start, X_WE, "empty map");
+}
+
+TEST_F(FrontEndTest, BadInputGivesAnEmptyResultWithAReason) {
+  Scene scene = EmptyRoom();
+  scene.boxes.push_back(MakeBox(Eigen::Vector3d(0, 0, 0.75), Eigen::Vector3d(1.0, 1.0, 1.5)));
+  const SceneDistanceFields fields = Fields(scene);
+  const FrontEnd front_end(kinematics_, fields.base_field_2d, fields.field_3d,
+                           DeterministicOptions());
+  const WholeBodyState start = State(-3.0, 0.0, 0.0);
+  const WholeBodyState goal = State(3.0, 0.0, 0.0);
+  const Eigen::Isometry3d X_WE = kinematics_.EndEffectorPose(goal);
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  auto expect_failure = [&](const FrontEndResult& result, FrontEndStatus status,
+                            const std::string& words, const std::string& what) {
+    EXPECT_FALSE(result.success()) << what;
+    EXPECT_TRUE(result.paths.empty()) << what;
+    EXPECT_EQ(result.status, status) << what << ": " << ToString(result.status);
+    EXPECT_NE(result.failure_reason.find(words), std::string::npos)
+        << what << ": " << result.failure_reason;
+  };
+
+  WholeBodyState bad = start;
+  bad.x_m = nan;
+  expect_failure(front_end.Plan(bad, X_WE, goal), FrontEndStatus::kInvalidInput, "start state",
+                 "NaN start");
+  bad = start;
+  bad.q_rad.resize(3);
+  expect_failure(front_end.Plan(bad, X_WE, goal), FrontEndStatus::kInvalidInput, "joints",
+                 "short start");
+  Eigen::Isometry3d X_WE_nan = X_WE;
+  X_WE_nan.linear()(1, 1) = nan;
+  expect_failure(front_end.Plan(start, X_WE_nan, goal), FrontEndStatus::kInvalidInput, "NaN",
+                 "NaN target");
+  bad = goal;
+  bad.q_rad(2) = nan;
+  expect_failure(front_end.Plan(start, X_WE, bad), FrontEndStatus::kInvalidInput, "goal hint",
+                 "NaN hint");
+
+  // Start with the base inside the pillar.
+  expect_failure(front_end.Plan(State(0.0, 0.0, 0.0), X_WE, goal), FrontEndStatus::kStartInvalid,
+                 "start state", "start in collision");
+  // Start with the arm folded into the chassis (self collision).
+  bad = start;
+  bad.q_rad << 0.0, 2.2, 0.0, 2.3, 0.0, 2.2, 0.0;
+  expect_failure(front_end.Plan(bad, X_WE, goal), FrontEndStatus::kStartInvalid, "start state",
+                 "start in self collision");
+  // Goal: the end effector inside the pillar; the hint there too.
+  Eigen::Isometry3d X_WE_inside = X_WE;
+  X_WE_inside.translation() << 0.0, 0.0, 0.8;
+  expect_failure(front_end.Plan(start, X_WE_inside), FrontEndStatus::kNoGoal, "goal",
+                 "goal in collision");
+  // Unreachable: 3 m above the floor.
+  Eigen::Isometry3d X_WE_high = X_WE;
+  X_WE_high.translation().z() = 3.0;
+  expect_failure(front_end.Plan(start, X_WE_high, goal), FrontEndStatus::kNoGoal, "reach",
+                 "unreachable target");
+  // A goal enclosed by walls: reachable by the arm over a low wall ring, but no base path.
+  Scene ring = EmptyRoom();
+  for (const auto& [cx, cy, sx, sy] : {std::array<double, 4>{3.0, 1.6, 3.4, 0.2},
+                                       std::array<double, 4>{3.0, -1.6, 3.4, 0.2},
+                                       std::array<double, 4>{1.4, 0.0, 0.2, 3.4},
+                                       std::array<double, 4>{4.6, 0.0, 0.2, 3.4}}) {
+    ring.boxes.push_back(MakeBox(Eigen::Vector3d(cx, cy, 0.1), Eigen::Vector3d(sx, sy, 0.2)));
+  }
+  const SceneDistanceFields ring_fields = Fields(ring);
+  const FrontEnd ring_front_end(kinematics_, ring_fields.base_field_2d, ring_fields.field_3d,
+                                DeterministicOptions());
+  const FrontEndResult enclosed = ring_front_end.Plan(start, X_WE, goal);
+  EXPECT_FALSE(enclosed.success());
+  EXPECT_TRUE(enclosed.status == FrontEndStatus::kNoBasePath ||
+              enclosed.status == FrontEndStatus::kNoGoal)
+      << ToString(enclosed.status) << ": " << enclosed.failure_reason;
+  EXPECT_FALSE(enclosed.failure_reason.empty());
+}
+
+TEST_F(FrontEndTest, RejectsBadOptionsByName) {
+  const SceneDistanceFields fields = Fields(EmptyRoom());
+  FrontEndOptions options;
+  options.max_goal_attempts = 0;
+  try {
+    FrontEnd front_end(kinematics_, fields.base_field_2d, fields.field_3d, options);
+    FAIL() << "no exception";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("max_goal_attempts"), std::string::npos) << e.what();
+  }
+  options = FrontEndOptions();
+  options.improvement_window_s = std::numeric_limits<double>::quiet_NaN();
+  EXPECT_THROW(FrontEnd(kinematics_, fields.base_field_2d, fields.field_3d, options),
+               std::invalid_argument);
+}
+
+// A caller's stop ends Plan within a few ms at any stage. The arm search is made to run for
+// seconds (anytime RRT* with a 10 s budget, no improvement window, no stage budget; start and
+// goal joints differ, so the cost cannot reach its lower bound 0 early); stop is requested
+// 1, 3, 10, 30 and 100 ms after Plan starts (goal, base paths, arm search). Latency = Plan's
+// return - the stop request.
+TEST_F(FrontEndTest, CancellationReturnsWithinAFewMilliseconds) {
+  Scene scene = EmptyRoom();
+  scene.boxes.push_back(MakeBox(Eigen::Vector3d(0, 0, 0.75), Eigen::Vector3d(1.0, 1.0, 1.5)));
+  const SceneDistanceFields fields = Fields(scene);
+  FrontEndOptions options;
+  options.rrt.stop_at_first_solution = false;
+  options.rrt.time_budget_s = 10.0;
+  options.improvement_window_s = std::numeric_limits<double>::infinity();
+  options.acquisition_budget_s = std::numeric_limits<double>::infinity();
+  const FrontEnd front_end(kinematics_, fields.base_field_2d, fields.field_3d, options);
+  const WholeBodyState start = State(-3.0, 0.0, 0.0);
+  WholeBodyState goal = State(3.0, 0.0, 0.0);
+  goal.q_rad << -0.5, 0.6, 0.4, 1.0, -0.3, 0.9, 0.5;
+  const Eigen::Isometry3d X_WE = kinematics_.EndEffectorPose(goal);
+  std::vector<double> latencies_ms;
+  for (int delay_ms : {5, 1, 3, 10, 30, 100}) {  // the first run warms the arena up, not counted
+    std::stop_source stop;
+    Clock::time_point requested;
+    std::thread canceller([&] {
+      std::this_thread::sleep_for(std::chrono::milliseconds(delay_ms));
+      requested = Clock::now();
+      stop.request_stop();
+    });
+    const FrontEndResult result = front_end.Plan(start, X_WE, goal, stop.get_token());
+    const Clock::time_point returned = Clock::now();
+    canceller.join();
+    const double latency_ms =
+        std::chrono::duration<double, std::milli>(returned - requested).count();
+    latencies_ms.push_back(latency_ms);
+    std::cout << "stop after " << delay_ms << " ms: returned " << latency_ms << " ms later, "
+              << ToString(result.status) << ", " << result.paths.size() << " paths; stages ms: goal "
+              << result.stats.goal_ms << ", topology " << result.stats.topology_ms << ", arm "
+              << result.stats.acquisition_ms << "\n";
+    // Either cancelled with nothing, or the best paths found so far (still valid).
+    if (result.success()) {
+      ExpectPathsExactlyValid(result, scene, start, X_WE, "cancelled");
+    } else {
+      EXPECT_EQ(result.status, FrontEndStatus::kCancelled) << result.failure_reason;
+    }
+  }
+  latencies_ms.erase(latencies_ms.begin());  // warm-up
+  std::sort(latencies_ms.begin(), latencies_ms.end());
+  // Without cancellation Plan runs >= 10 s. Measured on an idle 2-core machine: 0.1-2 ms once
+  // the arm jobs run, 0.3-8 ms during the base path search; with both cores busy, up to
+  // ~12 ms. The bounds leave room for a loaded machine (scheduling, not the planner).
+  EXPECT_LT(latencies_ms[latencies_ms.size() / 2], 20.0);  // median
+  EXPECT_LT(latencies_ms.back(), 100.0);                   // worst
+}
+
+TEST_F(FrontEndTest, ExactVerificationCatchesBadPaths) {
+  // The verifier itself: a path through the pillar, a skipped layer, a wrong start and a
+  // missed target are all rejected.
+  Scene scene = EmptyRoom();
+  scene.boxes.push_back(MakeBox(Eigen::Vector3d(0, 0, 0.75), Eigen::Vector3d(1.0, 1.0, 1.5)));
+  const SceneClearanceChecker checker(kinematics_, scene);
+  const WholeBodyState start = State(-3.0, 0.0, 0.0);
+  const WholeBodyState end = State(3.0, 0.0, 0.0);
+  const Eigen::Isometry3d X_WE = kinematics_.EndEffectorPose(end);
+  const DiscreteSE2Path layers =
+      DiscreteSE2({Eigen::Vector2d(-3, 0), Eigen::Vector2d(3, 0)}, 0.0, 0.0, model_.base_limits);
+  WholeBodyPath path;
+  for (const Se2Layer& layer : layers.layers) {
+    path.states.push_back(layers.State(static_cast<int>(path.states.size()), start.q_rad));
+    path.times_s.push_back(layer.time_s);
+  }
+  PathVerification check = VerifyWholeBodyPath(path, start, X_WE, checker, kinematics_, &layers);
+  EXPECT_FALSE(check.ok);
+  EXPECT_NE(check.message.find("collision"), std::string::npos) << check.message;
+
+  const Scene empty = EmptyRoom();
+  const SceneClearanceChecker free_checker(kinematics_, empty);
+  check = VerifyWholeBodyPath(path, start, X_WE, free_checker, kinematics_, &layers);
+  EXPECT_TRUE(check.ok) << check.message;  // straight through free space, same arm
+  EXPECT_GT(check.num_states_checked, 600);  // 6 m at 1 cm
+
+  WholeBodyPath skipped = path;
+  skipped.states.erase(skipped.states.begin() + 1);
+  skipped.times_s.erase(skipped.times_s.begin() + 1);
+  check = VerifyWholeBodyPath(skipped, start, X_WE, free_checker, kinematics_, &layers);
+  EXPECT_FALSE(check.ok);
+  EXPECT_NE(check.message.find("layer"), std::string::npos) << check.message;
+
+  check = VerifyWholeBodyPath(path, State(-3.0, 0.1, 0.0), X_WE, free_checker, kinematics_);
+  EXPECT_FALSE(check.ok);
+  EXPECT_NE(check.message.find("start"), std::string::npos) << check.message;
+
+  Eigen::Isometry3d X_WE_off = X_WE;
+  X_WE_off.translation().x() += 0.002;
+  check = VerifyWholeBodyPath(path, start, X_WE_off, free_checker, kinematics_);
+  EXPECT_FALSE(check.ok);
+  EXPECT_NE(check.message.find("misses"), std::string::npos) << check.message;
+}
+
+}  // namespace
+}  // namespace topay

@@ -1,0 +1,259 @@
+// topay-frontend-bench: runs the planner's front end (core/planning/front_end.h) on N generated
+// benchmark tasks and prints a Markdown table of its stage timings and success rates.
+// Task i uses GenerateBenchmarkCase(scene, range, DeriveSeed(seed, i)) (scene and task from
+// that seed); the distance fields (0.1 m) are built before the clock starts. Every returned
+// path is checked independently against the exact scene (core/planning/path_verification.h).
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <cstdlib>
+#include <exception>
+#include <iomanip>
+#include <iostream>
+#include <map>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include <CLI/CLI.hpp>
+
+#include "core/collision/scene_clearance.h"
+#include "core/common/random.h"
+#include "core/io/robot_loader.h"
+#include "core/map/scene_distance_fields.h"
+#include "core/planning/base_band.h"
+#include "core/planning/front_end.h"
+#include "core/planning/path_verification.h"
+#include "core/robot/kinematics.h"
+#include "sim/scenes/task_generator.h"
+
+namespace {
+
+struct BenchOptions {
+  std::string scene = "cuboids";
+  std::string range = "medium";
+  int tasks = 20;
+  std::uint64_t seed = 1;
+  int threads = 0;
+  bool jps_only = false;
+  double omega_max_radps = 1.25;  // the paper's simulation benchmark (facts sheet)
+  std::string robot_urdf;
+  std::string robot_yaml;
+  bool verbose = false;
+  // Front-end knobs (defaults: FrontEndOptions').
+  double rrt_budget_s = topay::FrontEndOptions::DefaultRrtOptions().time_budget_s;
+  double window_s = topay::FrontEndOptions().improvement_window_s;
+  bool anytime = false;
+  bool chassis_band_only = false;
+  double base_resolution_m = 0.0;
+};
+
+// Samples of one metric.
+struct Samples {
+  std::vector<double> values;
+  void Add(double v) { values.push_back(v); }
+  double Quantile(double q) const {
+    if (values.empty()) return std::nan("");
+    std::vector<double> v = values;
+    std::sort(v.begin(), v.end());
+    // Nearest-rank quantile: the smallest value with at least q of the samples <= it.
+    const std::size_t rank = static_cast<std::size_t>(std::ceil(q * v.size()));
+    return v[std::clamp<std::size_t>(rank, 1, v.size()) - 1];
+  }
+  double Mean() const {
+    if (values.empty()) return std::nan("");
+    double sum = 0.0;
+    for (double v : values) sum += v;
+    return sum / values.size();
+  }
+};
+
+struct Tally {
+  int tasks = 0;
+  int tasks_ok = 0;
+  int paths = 0;
+  int paths_failing_exact_check = 0;
+  int jobs_finished = 0;  // ran to their own end (not cancelled by the window or budget)
+  int jobs_succeeded = 0;
+  int jobs_cancelled = 0;
+  Samples topology_ms, classes, base_paths, rrt_first_ms, total_ms, goal_ms;
+  std::map<std::string, int> statuses;
+  std::vector<std::string> exact_failures;
+};
+
+std::string ConfigDir() {
+  const char* from_env = std::getenv("TOPAY_CONFIG_DIR");
+  return from_env != nullptr && *from_env != '\0' ? from_env : TOPAY_CONFIG_DIR;
+}
+
+void RunTask(const BenchOptions& o, topay::SceneKind kind, topay::DistanceRange range, int i,
+             const topay::Kinematics& kinematics, Tally* tally) {
+  using namespace topay;
+  const BenchmarkCase bench_case =
+      GenerateBenchmarkCase(kind, range, DeriveSeed(o.seed, static_cast<std::uint64_t>(i)),
+                            kinematics);
+  SceneDistanceFieldsOptions field_options;  // 0.1 m cells
+  field_options.base_band = o.chassis_band_only
+                                ? HeightBand{}
+                                : FrontEndBaseBand(kinematics, std::sqrt(3.0) * field_options.resolution_m);
+  SceneDistanceFields fields = BuildSceneDistanceFields(bench_case.scene.scene, field_options);
+  if (o.base_resolution_m > 0.0) {  // a finer 2D base field (its 3D field is dropped)
+    SceneDistanceFieldsOptions fine = field_options;
+    fine.resolution_m = o.base_resolution_m;
+    fields.base_field_2d = BuildSceneDistanceFields(bench_case.scene.scene, fine).base_field_2d;
+  }
+  FrontEndOptions options;
+  options.num_threads = o.threads;
+  options.seed = DeriveSeed(o.seed, 1'000'000 + static_cast<std::uint64_t>(i));
+  if (o.jps_only) options.topology.mode = BasePathMode::kJpsOnly;
+  options.rrt.time_budget_s = o.rrt_budget_s;
+  options.rrt.stop_at_first_solution = !o.anytime;
+  options.improvement_window_s = o.window_s;
+  BaseLimits limits = kinematics.model().base_limits;
+  limits.omega_max_radps = o.omega_max_radps;
+  options.base_limits = limits;
+  const FrontEnd front_end(kinematics, fields.base_field_2d, fields.field_3d, options);
+  const PlanningTask& task = bench_case.task;
+
+  const FrontEndResult result = front_end.Plan(task.start, task.X_WE_goal, task.goal);
+
+  ++tally->tasks;
+  ++tally->statuses[std::string(ToString(result.status))];
+  tally->total_ms.Add(result.stats.total_ms);
+  tally->goal_ms.Add(result.stats.goal_ms);
+  if (result.stats.num_goal_attempts > 0) {
+    tally->topology_ms.Add(result.stats.topology_ms);
+    tally->classes.Add(result.stats.num_classes_kept);
+    tally->base_paths.Add(result.stats.num_base_paths);
+  }
+  for (const ArmJobReport& job : result.jobs) {
+    if (job.status == ArmRrtStarStatus::kCancelled || job.stats.cancelled || !job.started) {
+      ++tally->jobs_cancelled;
+    }
+    if (job.status == ArmRrtStarStatus::kSuccess) {
+      ++tally->jobs_succeeded;
+      tally->rrt_first_ms.Add(1e3 * job.stats.time_to_first_solution_s);
+    }
+    if (job.status != ArmRrtStarStatus::kCancelled && job.started) ++tally->jobs_finished;
+  }
+  const SceneClearanceChecker checker(kinematics, bench_case.scene.scene);
+  bool all_exact = true;
+  for (const FrontEndPath& path : result.paths) {
+    ++tally->paths;
+    const PathVerification check = VerifyWholeBodyPath(path.path, task.start, task.X_WE_goal,
+                                                        checker, kinematics, &path.base_sequence);
+    if (!check.ok) {
+      all_exact = false;
+      ++tally->paths_failing_exact_check;
+      tally->exact_failures.push_back("task " + std::to_string(i) + ": " + check.message);
+    }
+  }
+  if (result.success() && all_exact) ++tally->tasks_ok;
+  if (o.verbose) {
+    std::cerr << "task " << i << ": " << ToString(result.status) << " " << std::fixed
+              << std::setprecision(1) << result.stats.total_ms << " ms, " << result.paths.size()
+              << " paths, classes " << result.stats.num_classes_kept << ", base band to "
+              << field_options.base_band.z_max_m << " m: " << fields.summary.num_boxes_in_base_band
+              << " boxes"
+              << (result.success() ? "" : " -- " + result.failure_reason) << "\n";
+    for (const ArmJobReport& job : result.jobs) {
+      std::cerr << "  job goal " << job.goal_attempt << " path " << job.base_path_index << ": "
+                << ToString(job.status) << ", " << job.stats.iterations << " iterations, nodes "
+                << job.stats.nodes_start_tree << " + " << job.stats.nodes_goal_tree << ", "
+                << job.wall_ms << " ms\n";
+    }
+  }
+}
+
+std::string Fmt(double v, int digits = 1) {
+  std::ostringstream out;
+  out << std::fixed << std::setprecision(digits) << v;
+  return out.str();
+}
+
+void PrintTable(const BenchOptions& o, const Tally& t) {
+  const double share = t.tasks > 0 ? 100.0 * t.tasks_ok / t.tasks : 0.0;
+  const double per_path =
+      t.jobs_finished > 0 ? 100.0 * t.jobs_succeeded / t.jobs_finished : std::nan("");
+  std::cout << "| scene | range | tasks | topo search ms (median / p95) | classes (mean) | "
+               "base paths incl. JPS (mean) | RRT* first solution ms (median / p95) | "
+               "RRT* success per path | front end ms (median / p95) | tasks with a path |\n"
+            << "|---|---|---|---|---|---|---|---|---|---|\n"
+            << "| " << o.scene << (o.jps_only ? " (JPS only)" : "") << " | " << o.range << " | "
+            << t.tasks << " | " << Fmt(t.topology_ms.Quantile(0.5)) << " / "
+            << Fmt(t.topology_ms.Quantile(0.95)) << " | " << Fmt(t.classes.Mean(), 2) << " | "
+            << Fmt(t.base_paths.Mean(), 2) << " | " << Fmt(t.rrt_first_ms.Quantile(0.5)) << " / "
+            << Fmt(t.rrt_first_ms.Quantile(0.95)) << " | " << Fmt(per_path) << " % ("
+            << t.jobs_succeeded << "/" << t.jobs_finished << ") | "
+            << Fmt(t.total_ms.Quantile(0.5)) << " / " << Fmt(t.total_ms.Quantile(0.95)) << " | "
+            << Fmt(share) << " % (" << t.tasks_ok << "/" << t.tasks << ") |\n\n";
+  std::cout << "Goal stage ms (median / p95): " << Fmt(t.goal_ms.Quantile(0.5)) << " / "
+            << Fmt(t.goal_ms.Quantile(0.95)) << ". Jobs cancelled by the improvement window or "
+            << "budget (not counted in the per-path rate): " << t.jobs_cancelled
+            << ". Paths: " << t.paths << ", failing the exact check: "
+            << t.paths_failing_exact_check << ". Status counts:";
+  for (const auto& [status, count] : t.statuses) std::cout << " " << status << " " << count;
+  std::cout << ".\n";
+  for (const std::string& failure : t.exact_failures) std::cout << "  exact check: " << failure << "\n";
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  CLI::App app{"Benchmark the TopAY front end on generated tasks (Markdown table on stdout)."};
+  BenchOptions o;
+  app.add_option("--scene", o.scene, "cuboids | tables")->capture_default_str();
+  app.add_option("--range", o.range, "small | medium | large")->capture_default_str();
+  app.add_option("--tasks", o.tasks, "Number of tasks")->capture_default_str()->check(
+      CLI::PositiveNumber);
+  app.add_option("--seed", o.seed, "Base seed S: task i uses DeriveSeed(S, i)")
+      ->capture_default_str();
+  app.add_option("--threads", o.threads, "Front-end threads (0: all cores)")
+      ->capture_default_str()->check(CLI::NonNegativeNumber);
+  app.add_flag("--jps-only", o.jps_only, "The JPS-only ablation (no topological PRM paths)");
+  app.add_option("--omega-max", o.omega_max_radps,
+                 "Base yaw rate limit (rad/s) for the layer times (paper benchmark: 1.25)")
+      ->capture_default_str();
+  const std::string config = ConfigDir();
+  o.robot_urdf = config + "/robot/topay_mm.urdf";
+  o.robot_yaml = config + "/robot/topay_mm.yaml";
+  app.add_option("--robot", o.robot_urdf, "Robot URDF")->capture_default_str();
+  app.add_option("--robot-config", o.robot_yaml, "Robot YAML")->capture_default_str();
+  app.add_option("--rrt-budget", o.rrt_budget_s, "t_smax of each arm RRT* job (s)")
+      ->capture_default_str();
+  app.add_option("--window", o.window_s, "Improvement window after the first success (s)")
+      ->capture_default_str();
+  app.add_flag("--anytime", o.anytime, "Arm RRT* improves until t_smax (no first-solution exit)");
+  app.add_flag("--chassis-band", o.chassis_band_only,
+               "Base field from obstacles below the chassis top only (the reference harness)");
+  app.add_option("--base-resolution", o.base_resolution_m,
+                 "Cell size (m) of the 2D base field if finer than the 3D field's 0.1 m (0: same)")
+      ->capture_default_str();
+  app.add_flag("-v,--verbose", o.verbose, "One line per task on stderr");
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::CallForHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::ParseError& e) {
+    std::cerr << "topay-frontend-bench: " << e.what() << "\n(run with --help for usage)\n";
+    return 2;
+  }
+  const auto kind = topay::ParseSceneKind(o.scene);
+  const auto range = topay::ParseDistanceRange(o.range);
+  if (!kind || !range) {
+    std::cerr << "topay-frontend-bench: --scene must be cuboids|tables and --range "
+                 "small|medium|large\n";
+    return 2;
+  }
+  try {
+    const topay::RobotModel model = topay::LoadRobotModel(o.robot_urdf, o.robot_yaml);
+    const topay::Kinematics kinematics(model);
+    Tally tally;
+    for (int i = 0; i < o.tasks; ++i) RunTask(o, *kind, *range, i, kinematics, &tally);
+    PrintTable(o, tally);
+  } catch (const std::exception& e) {
+    std::cerr << "topay-frontend-bench: error: " << e.what() << "\n";
+    return 1;
+  }
+  return 0;
+}
