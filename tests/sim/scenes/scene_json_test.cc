@@ -1,4 +1,5 @@
 #include "sim/scenes/scene_json.h"
+#include "tests/common/temp_path.h"
 
 #include <cstdio>
 #include <fstream>
@@ -13,10 +14,6 @@
 namespace topay {
 namespace {
 
-std::string TempPath(const std::string& name) {
-  return ::testing::TempDir() + "scene_json_test_" + name;
-}
-
 void WriteText(const std::string& path, const std::string& text) {
   std::ofstream(path, std::ios::binary) << text;
 }
@@ -27,7 +24,7 @@ std::string OneBox(const std::string& box) { return "{\"boxes\": [" + box + "]}"
 // Reads the text as a file and expects a ConfigError naming the file and the field.
 void ExpectConfigError(const std::string& text, const std::string& field,
                        const std::string& message_part) {
-  const std::string path = TempPath("bad.json");
+  const std::string path = UniqueTempPath("bad.json");
   WriteText(path, text);
   try {
     ReadSceneJson(path);
@@ -43,7 +40,7 @@ void ExpectConfigError(const std::string& text, const std::string& field,
 TEST(SceneJsonTest, RoundTripIsExactForGeneratedScenes) {
   for (const SceneKind kind : {SceneKind::kCuboids, SceneKind::kTables}) {
     const GeneratedScene generated = GenerateBenchmarkScene(kind, 77);
-    const std::string path = TempPath("round_trip.json");
+    const std::string path = UniqueTempPath("round_trip.json");
     WriteSceneJson(path, generated.scene, &generated.roles);
     std::vector<BoxRole> roles;
     const Scene read = ReadSceneJson(path, &roles);
@@ -90,7 +87,7 @@ TEST(SceneJsonTest, OptionalKeysMayBeAbsent) {
 }
 
 TEST(SceneJsonTest, MissingFile) {
-  const std::string path = TempPath("does_not_exist.json");
+  const std::string path = UniqueTempPath("does_not_exist.json");
   std::remove(path.c_str());
   try {
     ReadSceneJson(path);

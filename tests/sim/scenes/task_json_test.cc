@@ -1,4 +1,5 @@
 #include "sim/scenes/task_json.h"
+#include "tests/common/temp_path.h"
 
 #include <cstdio>
 #include <fstream>
@@ -10,10 +11,6 @@
 
 namespace topay {
 namespace {
-
-std::string TempPath(const std::string& name) {
-  return ::testing::TempDir() + "task_json_test_" + name;
-}
 
 PlanningTask MakeTask() {
   PlanningTask task;
@@ -38,7 +35,7 @@ PlanningTask MakeTask() {
 
 TEST(TaskJsonTest, RoundTrip) {
   const PlanningTask task = MakeTask();
-  const std::string path = TempPath("round_trip.json");
+  const std::string path = UniqueTempPath("round_trip.json");
   WriteTaskJson(path, task);
   const PlanningTask read = ReadTaskJson(path, 7);
   EXPECT_EQ(read.start.ToVector(), task.start.ToVector());
@@ -65,7 +62,7 @@ class TaskJsonErrorTest : public ::testing::Test {
 
   static void ExpectError(const std::string& text, const std::string& field,
                           const std::string& message_part, int expected_joints = -1) {
-    const std::string path = TempPath("bad.json");
+    const std::string path = UniqueTempPath("bad.json");
     std::ofstream(path, std::ios::binary) << text;
     try {
       ReadTaskJson(path, expected_joints);
@@ -80,7 +77,7 @@ class TaskJsonErrorTest : public ::testing::Test {
 };
 
 TEST_F(TaskJsonErrorTest, MissingFileAndMalformedJson) {
-  const std::string path = TempPath("missing.json");
+  const std::string path = UniqueTempPath("missing.json");
   std::remove(path.c_str());
   EXPECT_THROW(ReadTaskJson(path), ConfigError);
   ExpectError("{\"range\": ", "", "malformed JSON");
