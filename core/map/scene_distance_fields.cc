@@ -1,6 +1,7 @@
 #include "core/map/scene_distance_fields.h"
 
 #include <chrono>
+#include <cmath>
 #include <stdexcept>
 #include <string>
 
@@ -11,6 +12,20 @@ double SecondsSince(std::chrono::steady_clock::time_point start) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
+// The 2D base grid: the 3D grid's footprint, or its own cell size over the same xy bounds.
+GridGeometry2 BaseGeometry(const GridGeometry3& geometry_3d, const Eigen::AlignedBox3d& bounds_W_m,
+                           double base_resolution_m) {
+  if (!(std::isfinite(base_resolution_m) && base_resolution_m >= 0.0)) {
+    throw std::invalid_argument(
+        "SceneDistanceFieldsOptions: base_resolution_m must be finite and >= 0 (0: the 3D "
+        "field's), got " + std::to_string(base_resolution_m));
+  }
+  if (base_resolution_m == 0.0) return GridGeometry2::FootprintOf(geometry_3d);
+  return GridGeometry2::FromBounds(
+      Eigen::AlignedBox2d(bounds_W_m.min().head<2>(), bounds_W_m.max().head<2>()),
+      base_resolution_m);
+}
+
 }  // namespace
 
 SceneDistanceFields BuildSceneDistanceFields(const Scene& scene,
@@ -19,13 +34,15 @@ SceneDistanceFields BuildSceneDistanceFields(const Scene& scene,
   const Clock::time_point start = Clock::now();
   ValidateBand(options.base_band, "SceneDistanceFieldsOptions: base_band");
   ValidateSignedDistanceFieldOptions(options.field);
-  const GridGeometry3 geometry = GridGeometry3::FromBounds(
-      options.bounds_W_m.value_or(scene.bounds_W_m), options.resolution_m);
+  const Eigen::AlignedBox3d bounds_W_m = options.bounds_W_m.value_or(scene.bounds_W_m);
+  const GridGeometry3 geometry = GridGeometry3::FromBounds(bounds_W_m, options.resolution_m);
+  const GridGeometry2 base_geometry =
+      BaseGeometry(geometry, bounds_W_m, options.base_resolution_m);
   SceneDistanceFieldsSummary summary;
 
   Clock::time_point phase = Clock::now();
   OccupancyGrid3 occupancy_3d(geometry);
-  OccupancyGrid2 occupancy_2d(GridGeometry2::FootprintOf(geometry));
+  OccupancyGrid2 occupancy_2d(base_geometry);
   for (std::size_t i = 0; i < scene.boxes.size(); ++i) {
     try {
       occupancy_3d.AddBox(scene.boxes[i]);

@@ -14,8 +14,15 @@ namespace topay {
 
 /// How BuildSceneDistanceFields maps a scene.
 struct SceneDistanceFieldsOptions {
-  /// Cell size (m) of both fields: the benchmark maps use 0.1 m.
+  /// Cell size (m) of the 3D field (and of the 2D field unless base_resolution_m is set): the
+  /// benchmark maps use 0.1 m.
   double resolution_m = 0.1;
+  /// Cell size (m) of the 2D base field; 0 (default): resolution_m, the grid then being the 3D
+  /// grid's xy footprint. A finer base field lets the base pass closer to obstacles, since its
+  /// exactness margin (sqrt(2) x the 2D cell size, WholeBodyValidityOptions) shrinks with it;
+  /// the grid then covers the same xy bounds (GridGeometry2::FromBounds). Must be finite and
+  /// >= 0.
+  double base_resolution_m = 0.0;
   /// Obstacles whose z extent overlaps this band's interior block the base (2D field); the
   /// default is the floor up to the chassis top, so the base may pass under table tops and
   /// floating boxes, which the arm must clear in the 3D field.

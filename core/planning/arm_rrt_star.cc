@@ -118,6 +118,7 @@ ArmRrtStarResult PlanArmRrtStar(const DiscreteSE2Path& base_sequence,
     result.path.times_s.push_back(0.0);
     result.stats.final_cost = result.stats.first_cost = 0.0;
     result.stats.time_to_first_solution_s = 0.0;
+    if (options.on_first_solution) options.on_first_solution(0.0);
     return result;
   }
   const Eigen::VectorXd weights =

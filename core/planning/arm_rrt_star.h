@@ -2,6 +2,7 @@
 
 #include <Eigen/Core>
 #include <cstdint>
+#include <functional>
 #include <limits>
 #include <stop_token>
 #include <string>
@@ -37,6 +38,14 @@ struct ArmRrtStarOptions {
   /// Node cap over both trees; growth stops there (the search continues to rewire/connect).
   int max_nodes = 50000;
   std::uint64_t seed = 1;
+  /// Called once per run, with the solution's cost (weighted joint-space length, rad), when
+  /// c_max first becomes finite: the moment a first solution exists, before the anytime
+  /// improvement goes on. Empty: not called. Thread-safety: it runs synchronously on the
+  /// thread that called PlanArmRrtStar, inside the search loop, so it must be quick and must
+  /// not throw; when several searches run in parallel and share state through it, that
+  /// state must be synchronised by the callback (a mutex or atomics). A run that ends before
+  /// a solution exists never calls it.
+  std::function<void(double cost)> on_first_solution;
 };
 
 /// Why PlanArmRrtStar stopped / failed.

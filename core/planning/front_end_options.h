@@ -40,17 +40,19 @@ struct FrontEndOptions {
   std::optional<BaseLimits> base_limits;
 
   // ---- Arm search (one job per base path) ------------------------------------------------
-  /// Facts sheet: t_smax 0.2 s, goal bias 0.4. stop_at_first_solution defaults to true in
-  /// the front end (DefaultRrtOptions): PlanArmRrtStar reports a solution only when it
-  /// returns, so with anytime improvement every job would run its full t_smax and the front
-  /// end could not stop early after the first success. Set it to false for the anytime
-  /// search (then the front end takes about t_smax).
+  /// Facts sheet: t_smax 0.2 s, goal bias 0.4. Anytime search (stop_at_first_solution =
+  /// false, the paper's Algorithm 1): every job keeps improving its path until the
+  /// improvement window below closes (it starts at the first solution of any job, reported
+  /// through on_first_solution, which the front end sets itself and chains to a caller's),
+  /// its t_smax, or its cost lower bound. stop_at_first_solution = true is the reference
+  /// code's first-solution exit.
   ArmRrtStarOptions rrt = DefaultRrtOptions();
   /// Field-based whole-body validity (default margins make field-valid states exactly clear).
   WholeBodyValidityOptions validity;
-  /// After the first job succeeds, the others get at most this long (s) to finish before they
-  /// are cancelled (facts sheet: ~100 ms in the reference code, not a bound there; here it is,
-  /// and smaller, for the 40 ms median goal). +infinity: wait for all jobs.
+  /// After the first solution of any job, all jobs (that one included) get at most this long
+  /// (s) to improve or finish before they are cancelled; cancelled jobs that have a solution
+  /// keep their best one (facts sheet: ~100 ms in the reference code, not a bound there; here
+  /// it is, and smaller, for the 40 ms median goal). +infinity: wait for all jobs.
   double improvement_window_s = 0.02;
   /// Bound (s) on the whole arm-search stage of one goal attempt, from its start: jobs still
   /// running then are cancelled. Jobs queue when there are more paths than threads.
@@ -72,7 +74,7 @@ struct FrontEndOptions {
   }
   static ArmRrtStarOptions DefaultRrtOptions() {
     ArmRrtStarOptions o;
-    o.stop_at_first_solution = true;
+    o.stop_at_first_solution = false;  // anytime, as the paper's Algorithm 1
     return o;
   }
 };

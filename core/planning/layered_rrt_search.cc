@@ -189,7 +189,8 @@ void LayeredRrtSearch::TryUpdateCost(int tree, int node_in_tree, int other_node)
   const double cost = BridgeCost(bridge);
   if (!(cost < c_max_)) return;
   bridges_.push_back(bridge);
-  if (!std::isfinite(c_max_)) {
+  const bool first = !std::isfinite(c_max_);
+  if (first) {
     stats_.time_to_first_solution_s =
         std::chrono::duration<double>(Clock::now() - start_time_).count();
     stats_.first_cost = cost;
@@ -197,6 +198,7 @@ void LayeredRrtSearch::TryUpdateCost(int tree, int node_in_tree, int other_node)
   c_max_ = cost;
   stats_.final_cost = cost;
   ++stats_.num_solutions;
+  if (first && options_.on_first_solution) options_.on_first_solution(cost);
 }
 
 int LayeredRrtSearch::ExtendOnce(int t, int from, const RrtTarget& target, bool* connected) {

@@ -22,7 +22,8 @@
 //  * IsInvalid(n_s): the edge n_n -> n_s fails WholeBodyValidity::CheckEdge (arm parts; the
 //    base path is checked once up front).
 //  * "n_s in T_b": Steer reached a node of T_b exactly. TryUpdateCost then records the bridge
-//    (n_n, n_s) with cost Cost(n_n) + Heu(n_n, n_s) + Cost(n_s) and lowers c_max.
+//    (n_n, n_s) with cost Cost(n_n) + Heu(n_n, n_s) + Cost(n_s) and lowers c_max; the first
+//    time c_max becomes finite it calls options.on_first_solution.
 //  * JustExpand(n_s): n_s is a new state (samples are never nodes of T_a, so the paper's
 //    second branch, a cheaper route to an existing node, is what Rewire does). Link picks the
 //    cheapest valid parent among T_a's nodes within rewire_radius_rad on the layer behind

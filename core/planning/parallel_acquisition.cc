@@ -54,10 +54,19 @@ struct Shared {
   StopDeadline& deadline;
   std::atomic<int> next_job{0};
   std::mutex first_success_mutex;
-  double first_success_ms = std::numeric_limits<double>::infinity();
+  double first_success_ms = std::numeric_limits<double>::infinity();  // guarded by the mutex
   std::vector<ArmJobReport> reports;
   std::vector<ArmRrtStarResult> results;
 };
+
+// A job found a solution at `when`: the first one starts the improvement window (the shared
+// stop fires at when + improvement_window_s). Called from the job's search thread.
+void NoteSuccess(Clock::time_point when, Shared* shared) {
+  std::lock_guard<std::mutex> lock(shared->first_success_mutex);
+  if (std::isfinite(shared->first_success_ms)) return;
+  shared->first_success_ms = MsBetween(shared->t0, when);
+  shared->deadline.Tighten(After(when, shared->options.improvement_window_s));
+}
 
 void RunJob(int index, Shared* shared) {
   const ArmJob& job = shared->jobs[index];
@@ -76,6 +85,11 @@ void RunJob(int index, Shared* shared) {
   const Clock::time_point job_start = Clock::now();
   ArmRrtStarOptions rrt = shared->options.rrt;
   rrt.seed = job.seed;
+  // Anytime search: the window starts when any job first has a solution, not when it returns.
+  rrt.on_first_solution = [shared, caller = shared->options.rrt.on_first_solution](double cost) {
+    NoteSuccess(Clock::now(), shared);
+    if (caller) caller(cost);
+  };
   ArmRrtStarResult result = PlanArmRrtStar(job.base_sequence, shared->q_start, shared->q_goal,
                                            shared->validity, rrt, shared->stop);
   const Clock::time_point job_end = Clock::now();
@@ -84,13 +98,7 @@ void RunJob(int index, Shared* shared) {
   report.stats = result.stats;
   report.wall_ms = MsBetween(job_start, job_end);
   report.finished_at_ms = MsBetween(shared->t0, job_end);
-  if (result.success()) {
-    std::lock_guard<std::mutex> lock(shared->first_success_mutex);
-    if (!std::isfinite(shared->first_success_ms)) {
-      shared->first_success_ms = report.finished_at_ms;
-      shared->deadline.Tighten(After(job_end, shared->options.improvement_window_s));
-    }
-  }
+  if (result.success()) NoteSuccess(job_end, shared);  // no-op: the callback came first
   shared->results[index] = std::move(result);
 }
 

@@ -2,6 +2,7 @@
 
 #include <chrono>
 #include <cstdint>
+#include <limits>
 #include <stop_token>
 #include <string>
 #include <vector>
@@ -28,9 +29,14 @@ struct ArmJob {
 };
 
 struct ParallelAcquisitionOptions {
-  /// Options of every job's PlanArmRrtStar (the seed is the job's).
+  /// Options of every job's PlanArmRrtStar (the seed is the job's). With
+  /// stop_at_first_solution = false (the default) each job runs the anytime search until the
+  /// window below closes, its t_smax, or its cost bound. rrt.on_first_solution, if set, is
+  /// still called (from the job's thread, concurrently with other jobs: it must be
+  /// thread-safe).
   ArmRrtStarOptions rrt;
-  /// Jobs still running this long (s) after the first success are cancelled (+inf: never).
+  /// Jobs still running this long (s) after the first solution found by any job are
+  /// cancelled (+inf: never); a cancelled job that has a solution returns its best one.
   double improvement_window_s = 0.02;
   /// Jobs still running (or queued) this long (s) after the stage starts are cancelled.
   double budget_s = 0.5;
@@ -45,7 +51,8 @@ struct ParallelAcquisitionResult {
   std::vector<ArmJobReport> jobs;
   /// Successful jobs' paths (base_path_index, homotopy_class filled), in job order.
   std::vector<FrontEndPath> paths;
-  /// Since `t0`: when the first job returned a solution (+infinity if none).
+  /// Since `t0`: when the first solution was found by any job (its on_first_solution call;
+  /// +infinity if none).
   double first_success_ms = std::numeric_limits<double>::infinity();
   double wall_ms = 0.0;
   bool cancelled_by_caller = false;
@@ -55,8 +62,9 @@ struct ParallelAcquisitionResult {
 /// constrained bidirectional RRT* per job on the current TBB arena, num_workers at a time,
 /// jobs taken in order (shortest base path first when the caller sorts them so). Cooperative
 /// cancellation: every job polls one internal stop token, which fires when the caller's
-/// `stop` fires (at once, through a std::stop_callback), at first success +
-/// improvement_window_s, or at the budget (a watcher thread, see StopDeadline). Jobs not yet
+/// `stop` fires (at once, through a std::stop_callback), at first solution of any job +
+/// improvement_window_s (the jobs' ArmRrtStarOptions::on_first_solution moves the deadline),
+/// or at the budget (a watcher thread, see StopDeadline). Jobs not yet
 /// started when it fires are reported as not started. `t0` is the time origin of the
 /// reported times. Never throws for a failing job (its report says why).
 ParallelAcquisitionResult AcquireWholeBodyPaths(const std::vector<ArmJob>& jobs,

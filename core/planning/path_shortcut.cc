@@ -27,26 +27,31 @@ std::vector<Eigen::Vector2d> Densify(const std::vector<Eigen::Vector2d>& path, d
 }
 
 // One greedy pass: anchor, walk forward while visible, take the last visible
-// point.
-std::vector<Eigen::Vector2d> GreedyPass(const BaseFreeSpace& free_space,
-                                        const std::vector<Eigen::Vector2d>& points) {
-  std::vector<Eigen::Vector2d> out{points.front()};
+// point. False (output incomplete) if `stop` fired during the pass.
+bool GreedyPass(const BaseFreeSpace& free_space, const std::vector<Eigen::Vector2d>& points,
+                const std::stop_token& stop, std::vector<Eigen::Vector2d>* out) {
+  out->assign(1, points.front());
   std::size_t anchor = 0;
   const std::size_t last = points.size() - 1;
   while (anchor < last) {
     std::size_t next = anchor + 1;  // kept even if not free: guarantees progress
-    while (next < last && free_space.IsSegmentFree(points[anchor], points[next + 1])) ++next;
-    out.push_back(points[next]);
+    while (next < last) {
+      if (stop.stop_requested()) return false;
+      if (!free_space.IsSegmentFree(points[anchor], points[next + 1])) break;
+      ++next;
+    }
+    out->push_back(points[next]);
     anchor = next;
   }
-  return out;
+  return true;
 }
 
 }  // namespace
 
 std::vector<Eigen::Vector2d> ShortcutPath(const BaseFreeSpace& free_space,
                                           const std::vector<Eigen::Vector2d>& path_W_m,
-                                          const PathShortcutOptions& options) {
+                                          const PathShortcutOptions& options,
+                                          const std::stop_token& stop) {
   if (path_W_m.size() <= 2) return path_W_m;
   const double step = options.resample_step_m > 0.0 ? options.resample_step_m
                                                     : free_space.field().geometry().resolution_m;
@@ -58,7 +63,8 @@ std::vector<Eigen::Vector2d> ShortcutPath(const BaseFreeSpace& free_space,
     // longer (triangle inequality).
     std::vector<Eigen::Vector2d> dense = Densify(path, step);
     if (pass % 2 == 1) std::reverse(dense.begin(), dense.end());
-    std::vector<Eigen::Vector2d> shorter = GreedyPass(free_space, dense);
+    std::vector<Eigen::Vector2d> shorter;
+    if (!GreedyPass(free_space, dense, stop, &shorter)) break;  // keep the last full pass
     if (pass % 2 == 1) std::reverse(shorter.begin(), shorter.end());
     const bool improved = PolylineLength(shorter) < PolylineLength(path) - 1e-9;
     path = std::move(shorter);
@@ -69,10 +75,11 @@ std::vector<Eigen::Vector2d> ShortcutPath(const BaseFreeSpace& free_space,
 
 std::vector<std::vector<Eigen::Vector2d>> ShortcutPaths(
     const BaseFreeSpace& free_space, const std::vector<std::vector<Eigen::Vector2d>>& paths_W_m,
-    const PathShortcutOptions& options) {
+    const PathShortcutOptions& options, const std::stop_token& stop) {
   std::vector<std::vector<Eigen::Vector2d>> out(paths_W_m.size());
   tbb::parallel_for(std::size_t{0}, paths_W_m.size(), [&](std::size_t i) {
-    out[i] = ShortcutPath(free_space, paths_W_m[i], options);
+    out[i] = stop.stop_requested() ? paths_W_m[i]
+                                   : ShortcutPath(free_space, paths_W_m[i], options, stop);
   });
   return out;
 }

@@ -40,6 +40,16 @@ std::string CheckOptions(const TopologicalPathSearchOptions& o) {
   return "";
 }
 
+// {index of the shortest path}, or {} if there is none.
+std::vector<int> ShortestPathIndex(const std::vector<std::vector<Eigen::Vector2d>>& paths) {
+  if (paths.empty()) return {};
+  int best = 0;
+  for (int i = 1; i < static_cast<int>(paths.size()); ++i) {
+    if (PolylineLength(paths[i]) < PolylineLength(paths[best])) best = i;
+  }
+  return {best};
+}
+
 // PRM, DFS, shortcut, pruning: appends the kept paths (homotopy classes
 // 0..k-1).
 void RunTopologicalStages(const BaseFreeSpace& free_space, const Eigen::Vector2d& start,
@@ -62,12 +72,16 @@ void RunTopologicalStages(const BaseFreeSpace& free_space, const Eigen::Vector2d
 
   t = Clock::now();
   const std::vector<std::vector<Eigen::Vector2d>> shortcut =
-      ShortcutPaths(free_space, raw.paths_W_m, o.shortcut);
+      ShortcutPaths(free_space, raw.paths_W_m, o.shortcut, stop);
   stats.num_after_shortcut = static_cast<int>(shortcut.size());
   stats.shortcut_ms = MsSince(t);
 
   t = Clock::now();
-  const std::vector<int> kept = PruneEquivalentPaths(free_space, shortcut, o.pruning);
+  // Stopped: no UVD pruning (its pairwise tests would delay the return); the shortest path
+  // (free, shortcut or not) is what the search had, as one class.
+  const std::vector<int> kept = stop.stop_requested()
+                                    ? ShortestPathIndex(shortcut)
+                                    : PruneEquivalentPaths(free_space, shortcut, o.pruning);
   for (int index : kept) {
     BasePath path;
     path.waypoints_W_m = shortcut[index];

@@ -83,8 +83,10 @@ struct TopologicalPathSearchResult {
 /// start-goal box, DFS enumeration of raw paths, parallel shortcutting, UVD
 /// pruning, sorting and filtering by length, and the extra JPS candidate, as
 /// selected by options.mode. Never throws for bad positions (status + reason
-/// instead); the stop token is polled in every stage's loop, and a cancelled
-/// search returns what it had (status kCancelled if nothing).
+/// instead); the stop token is polled in every stage's loop (shortcutting
+/// included), and a cancelled search returns what it had (status kCancelled if
+/// nothing): when stopped before the UVD pruning, the pruning is skipped and the
+/// shortest raw/partly shortcut path is returned as the only class.
 TopologicalPathSearchResult SearchTopologicalBasePaths(
     const SignedDistanceField2& field, const Eigen::Vector2d& start_W_m,
     const Eigen::Vector2d& goal_W_m, const TopologicalPathSearchOptions& options = {},

@@ -1,8 +1,9 @@
 // topay-frontend-bench: runs the planner's front end (core/planning/front_end.h) on N generated
 // benchmark tasks and prints a Markdown table of its stage timings and success rates.
 // Task i uses GenerateBenchmarkCase(scene, range, DeriveSeed(seed, i)) (scene and task from
-// that seed); the distance fields (0.1 m) are built before the clock starts. Every returned
-// path is checked independently against the exact scene (core/planning/path_verification.h).
+// that seed); the distance fields (3D 0.1 m, 2D base 0.05 m by default) are built before the
+// clock starts. Every returned path is checked independently against the exact scene
+// (core/planning/path_verification.h).
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
@@ -45,7 +46,7 @@ struct BenchOptions {
   double window_s = topay::FrontEndOptions().improvement_window_s;
   bool anytime = false;
   bool chassis_band_only = false;
-  double base_resolution_m = 0.0;
+  double base_resolution_m = 0.05;  // 2D base field; the 3D field stays at 0.1 m
 };
 
 // Samples of one metric.
@@ -92,16 +93,13 @@ void RunTask(const BenchOptions& o, topay::SceneKind kind, topay::DistanceRange 
   const BenchmarkCase bench_case =
       GenerateBenchmarkCase(kind, range, DeriveSeed(o.seed, static_cast<std::uint64_t>(i)),
                             kinematics);
-  SceneDistanceFieldsOptions field_options;  // 0.1 m cells
+  SceneDistanceFieldsOptions field_options;  // 3D: 0.1 m cells
+  field_options.base_resolution_m = o.base_resolution_m;
   field_options.base_band = o.chassis_band_only
                                 ? HeightBand{}
                                 : FrontEndBaseBand(kinematics, std::sqrt(3.0) * field_options.resolution_m);
-  SceneDistanceFields fields = BuildSceneDistanceFields(bench_case.scene.scene, field_options);
-  if (o.base_resolution_m > 0.0) {  // a finer 2D base field (its 3D field is dropped)
-    SceneDistanceFieldsOptions fine = field_options;
-    fine.resolution_m = o.base_resolution_m;
-    fields.base_field_2d = BuildSceneDistanceFields(bench_case.scene.scene, fine).base_field_2d;
-  }
+  const SceneDistanceFields fields =
+      BuildSceneDistanceFields(bench_case.scene.scene, field_options);
   FrontEndOptions options;
   options.num_threads = o.threads;
   options.seed = DeriveSeed(o.seed, 1'000'000 + static_cast<std::uint64_t>(i));
@@ -227,7 +225,7 @@ int main(int argc, char** argv) {
   app.add_flag("--chassis-band", o.chassis_band_only,
                "Base field from obstacles below the chassis top only (the reference harness)");
   app.add_option("--base-resolution", o.base_resolution_m,
-                 "Cell size (m) of the 2D base field if finer than the 3D field's 0.1 m (0: same)")
+                 "Cell size (m) of the 2D base field (the 3D field's is 0.1 m; 0: same as 3D)")
       ->capture_default_str();
   app.add_flag("-v,--verbose", o.verbose, "One line per task on stderr");
   try {

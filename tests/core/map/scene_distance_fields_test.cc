@@ -1,8 +1,15 @@
 #include "core/map/scene_distance_fields.h"
 #include "tests/common/make_box.h"
 
+#include <algorithm>
+#include <cmath>
+#include <iostream>
 #include <stdexcept>
 #include <string>
+#include <vector>
+
+#include "core/common/random.h"
+#include "tests/core/map/random_room.h"
 
 #include <gtest/gtest.h>
 
@@ -61,6 +68,61 @@ TEST(SceneDistanceFieldsTest, OptionsSetResolutionBandAndBounds) {
   EXPECT_LT(fields.base_field_2d.Distance(Eigen::Vector2d(0, 0)), 0.0);  // under the top now
 }
 
+TEST(SceneDistanceFieldsTest, BaseFieldHasItsOwnResolution) {
+  SceneDistanceFieldsOptions options;
+  options.resolution_m = 0.1;
+  options.base_resolution_m = 0.05;
+  const SceneDistanceFields fields = BuildSceneDistanceFields(TableScene(), options);
+  // 3D field unchanged; the 2D grid covers the same 4 x 4 m at 0.05 m.
+  EXPECT_EQ(fields.field_3d.geometry().resolution_m, 0.1);
+  EXPECT_EQ(fields.field_3d.geometry().dims, Eigen::Vector3i(40, 40, 16));
+  const GridGeometry2& base = fields.base_field_2d.geometry();
+  EXPECT_EQ(base.resolution_m, 0.05);
+  EXPECT_EQ(base.dims, Eigen::Vector2i(80, 80));
+  EXPECT_TRUE(base.origin_W_m.isApprox(Eigen::Vector2d(-2, -2)));
+  EXPECT_EQ(fields.summary.num_cells_2d, 80 * 80);
+  EXPECT_EQ(fields.summary.num_cells_3d, 40 * 40 * 16);
+  // Legs (0.05 m, centred on x, y = +-0.475 m): 1 to 4 cells each at 0.05 m.
+  EXPECT_GE(fields.summary.num_occupied_2d, 4);
+  EXPECT_LE(fields.summary.num_occupied_2d, 16);
+
+  // Default (0): the 2D grid is the 3D grid's footprint.
+  const SceneDistanceFields same = BuildSceneDistanceFields(TableScene());
+  EXPECT_EQ(same.base_field_2d.geometry().resolution_m, 0.1);
+  EXPECT_EQ(same.base_field_2d.geometry().dims, Eigen::Vector2i(40, 40));
+}
+
+// The finer base field against exact 2D distances to the footprints of the boxes in the base
+// band, on 5,000 random points of a 10 x 10 m room: within one of its (0.05 m) cells.
+TEST(SceneDistanceFieldsTest, FinerBaseFieldIsWithinOneOfItsCellsOfExactFootprintDistance) {
+  const Scene scene = testing::RandomDisjointRoom(7, 10.0, 60, 0.15);
+  SceneDistanceFieldsOptions options;
+  options.base_resolution_m = 0.05;
+  std::vector<OrientedBox> in_band;
+  for (const OrientedBox& box : scene.boxes) {
+    const double half = 0.5 * box.size_m.z();
+    if (box.center_W_m.z() - half < options.base_band.z_max_m &&
+        box.center_W_m.z() + half > options.base_band.z_min_m) {
+      in_band.push_back(box);
+    }
+  }
+  ASSERT_GT(in_band.size(), 10u);
+  ASSERT_LT(in_band.size(), scene.boxes.size());  // floating boxes and slabs are left out
+  const SceneDistanceFields fields = BuildSceneDistanceFields(scene, options);
+  ASSERT_EQ(fields.base_field_2d.geometry().resolution_m, 0.05);
+  EXPECT_EQ(fields.summary.num_boxes_in_base_band, static_cast<int>(in_band.size()));
+  Rng rng(11);
+  double max_error_m = 0.0;
+  for (int i = 0; i < 5000; ++i) {
+    const Eigen::Vector2d p(rng.Uniform(-5, 5), rng.Uniform(-5, 5));
+    const double error_m =
+        std::abs(fields.base_field_2d.Distance(p) - testing::ExactSignedDistance2d(in_band, p));
+    max_error_m = std::max(max_error_m, error_m);
+  }
+  std::cout << "2D base field at 0.05 m: max error " << max_error_m << " m\n";
+  EXPECT_LE(max_error_m, 0.05);
+}
+
 TEST(SceneDistanceFieldsTest, BadInputIsReportedClearly) {
   SceneDistanceFieldsOptions options;
   options.resolution_m = 0.0;
@@ -71,6 +133,17 @@ TEST(SceneDistanceFieldsTest, BadInputIsReportedClearly) {
   options = {};
   options.field.zero_level_inset_cells = -1.0;
   EXPECT_THROW(BuildSceneDistanceFields(TableScene(), options), std::invalid_argument);
+  for (double bad_resolution : {-0.05, std::nan(""), HUGE_VAL}) {
+    options = {};
+    options.base_resolution_m = bad_resolution;
+    try {
+      BuildSceneDistanceFields(TableScene(), options);
+      FAIL() << "expected std::invalid_argument for base_resolution_m " << bad_resolution;
+    } catch (const std::invalid_argument& error) {
+      EXPECT_NE(std::string(error.what()).find("base_resolution_m"), std::string::npos)
+          << error.what();
+    }
+  }
   Scene bad = TableScene();
   bad.boxes[2].size_m.y() = std::nan("");
   try {

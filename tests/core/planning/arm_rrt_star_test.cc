@@ -141,6 +141,59 @@ TEST(ArmRrtStarTest, AnytimeImprovementDoesNotRaiseTheCost) {
   EXPECT_NEAR(improved.stats.final_cost, improved.stats.cost_lower_bound, 1e-9);
 }
 
+TEST(ArmRrtStarTest, FirstSolutionCallbackFiresOnceOnTheSearchThread) {
+  const Corridor c(0.85);
+  ArmRrtStarOptions options = CappedOptions(3000, 5);
+  int calls = 0;
+  double reported_cost = std::numeric_limits<double>::quiet_NaN();
+  std::thread::id caller_thread;
+  options.on_first_solution = [&](double cost) {
+    ++calls;
+    reported_cost = cost;
+    caller_thread = std::this_thread::get_id();
+  };
+  const ArmRrtStarResult result = PlanArmRrtStar(c.base, c.q_start, c.q_goal, c.validity, options);
+  ExpectLayeredAndExactlyValid(c, result);
+  EXPECT_EQ(calls, 1);
+  EXPECT_EQ(caller_thread, std::this_thread::get_id());
+  EXPECT_EQ(reported_cost, result.stats.first_cost);
+  // The search went on improving after the call (anytime): never above the first cost.
+  EXPECT_LE(result.stats.final_cost, reported_cost + 1e-12);
+
+  // No solution exists under a 0.45 m slab: never called.
+  const Corridor blocked(0.45);
+  calls = 0;
+  const ArmRrtStarResult none = PlanArmRrtStar(blocked.base, blocked.q_start, blocked.q_goal,
+                                               blocked.validity, CappedOptions(300, 5));
+  ArmRrtStarOptions counted = CappedOptions(300, 5);
+  counted.on_first_solution = [&](double) { ++calls; };
+  const ArmRrtStarResult none_counted = PlanArmRrtStar(blocked.base, blocked.q_start,
+                                                       blocked.q_goal, blocked.validity, counted);
+  EXPECT_EQ(none.status, ArmRrtStarStatus::kNoSolution);
+  EXPECT_EQ(none_counted.status, ArmRrtStarStatus::kNoSolution);
+  EXPECT_EQ(calls, 0);
+}
+
+TEST(ArmRrtStarTest, StopFromTheFirstSolutionCallbackReturnsThatSolution) {
+  // The front end's use: a stop requested at the first solution ends the anytime search,
+  // which still returns its (first) solution.
+  const Corridor c(0.85);
+  ArmRrtStarOptions options = CappedOptions(100000, 7);
+  std::stop_source source;
+  double reported_cost = std::numeric_limits<double>::quiet_NaN();
+  options.on_first_solution = [&](double cost) {
+    reported_cost = cost;
+    source.request_stop();
+  };
+  const ArmRrtStarResult result =
+      PlanArmRrtStar(c.base, c.q_start, c.q_goal, c.validity, options, source.get_token());
+  ExpectLayeredAndExactlyValid(c, result);
+  EXPECT_TRUE(result.stats.cancelled);
+  EXPECT_EQ(result.stats.num_solutions, 1);
+  EXPECT_NEAR(result.path.cost, reported_cost, 1e-9);
+  EXPECT_LT(result.stats.iterations, options.max_iterations);
+}
+
 TEST(ArmRrtStarTest, DeterministicWithAnIterationCap) {
   const Corridor c(0.85);
   const ArmRrtStarResult a =

@@ -2,7 +2,15 @@
 
 #include <gtest/gtest.h>
 
+#include <chrono>
+#include <iostream>
+#include <stop_token>
+#include <thread>
+
+#include <tbb/task_arena.h>
+
 #include "core/planning/base_path.h"
+#include "tests/core/planning/stop_latency.h"
 #include "tests/core/planning/topo_test_scenes.h"
 
 namespace topay {
@@ -68,6 +76,73 @@ TEST(PathShortcutTest, ParallelVersionMatchesSerial) {
     const auto serial = ShortcutPath(space, raws[k]);
     ASSERT_EQ(parallel[k].size(), serial.size());
     for (std::size_t i = 0; i < serial.size(); ++i) EXPECT_EQ(parallel[k][i], serial[i]);
+  }
+}
+
+// Zigzag detours above the pillar (free at kRequired), n of them at growing heights.
+std::vector<std::vector<Eigen::Vector2d>> Detours(int n) {
+  std::vector<std::vector<Eigen::Vector2d>> raws;
+  for (int k = 0; k < n; ++k) {
+    const double h = 1.5 + 1.5 * k / n;
+    raws.push_back({{-5, 0}, {-4, h + 1.5}, {-2, h}, {0, h + 2}, {2, h}, {4, h + 1.5}, {5, 0}});
+  }
+  return raws;
+}
+
+TEST(PathShortcutTest, StoppedBeforeStartReturnsTheInputs) {
+  const SignedDistanceField2 field = BaseField(Room({Pillar(0, 0)}));
+  const BaseFreeSpace space(field, kRequired);
+  const std::vector<std::vector<Eigen::Vector2d>> raws = Detours(4);
+  std::stop_source source;
+  source.request_stop();
+  EXPECT_EQ(ShortcutPath(space, raws[0], {}, source.get_token()), raws[0]);
+  EXPECT_EQ(ShortcutPaths(space, raws, {}, source.get_token()), raws);
+  // Not stopped: the same call does shorten them (so the equality above is the stop's doing).
+  const auto shortened = ShortcutPaths(space, raws, {}, std::stop_source().get_token());
+  for (std::size_t k = 0; k < raws.size(); ++k) {
+    EXPECT_LT(PolylineLength(shortened[k]), PolylineLength(raws[k]) - 1.0) << k;
+  }
+}
+
+// A stop while shortcutting ends the work within a millisecond of CPU time: measured on the
+// calling thread with all work on it (1-thread TBB arena). With the default arena the wall
+// latency also depends on the scheduler (printed; loosely bounded for a loaded machine).
+TEST(PathShortcutTest, StopDuringShortcuttingReturnsWithinAMillisecond) {
+  const Scene scene = Room({Pillar(0, 0)});
+  const SignedDistanceField2 field = BaseField(scene);
+  const BaseFreeSpace space(field, kRequired);
+  // A fine resampling step makes every pass slow: 400 paths take seconds unstopped.
+  PathShortcutOptions options;
+  options.resample_step_m = 0.002;
+  const std::vector<std::vector<Eigen::Vector2d>> raws = Detours(400);
+  for (const int threads : {1, 0}) {
+    tbb::task_arena arena(threads > 0 ? threads : tbb::task_arena::automatic);
+    std::vector<std::vector<Eigen::Vector2d>> out;
+    const testing::StopLatency latency = testing::MeasureStopLatency(30, [&](std::stop_token stop) {
+      arena.execute([&] { out = ShortcutPaths(space, raws, options, stop); });
+    });
+    std::cout << (threads == 1 ? "1 thread" : "all threads") << ": shortcut stop latency "
+              << latency.wall_ms << " ms wall, " << latency.cpu_ms << " ms CPU\n";
+    if (threads == 1) {
+      EXPECT_LT(latency.cpu_ms, 1.0);
+    } else {
+      EXPECT_LT(latency.wall_ms, 50.0);  // scheduling on a loaded 2-core machine
+    }
+    // Whatever was returned is still a free path between the same end points, never longer;
+    // some paths were left as they came (the stop cut the work short).
+    ASSERT_EQ(out.size(), raws.size());
+    int unchanged = 0;
+    for (std::size_t k = 0; k < raws.size(); ++k) {
+      EXPECT_EQ(out[k].front(), raws[k].front());
+      EXPECT_EQ(out[k].back(), raws[k].back());
+      EXPECT_LE(PolylineLength(out[k]), PolylineLength(raws[k]) + 1e-9);
+      if (out[k] == raws[k]) {
+        ++unchanged;
+      } else {
+        ExpectPathCollisionFree(scene, field, out[k]);
+      }
+    }
+    EXPECT_GT(unchanged, 0);
   }
 }
 

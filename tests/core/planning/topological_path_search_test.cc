@@ -3,10 +3,14 @@
 #include <gtest/gtest.h>
 
 #include <chrono>
+#include <iostream>
 #include <limits>
 #include <stop_token>
 #include <thread>
 
+#include <tbb/task_arena.h>
+
+#include "tests/core/planning/stop_latency.h"
 #include "tests/core/planning/topo_test_scenes.h"
 
 namespace topay {
@@ -225,6 +229,46 @@ TEST(TopologicalPathSearchTest, CancellationStopsPromptly) {
   const auto result = SearchTopologicalBasePaths(field, {-5, 0}, {5, 0}, huge, later.get_token());
   EXPECT_LT(result.stats.num_samples, 100'000'000);
   EXPECT_GT(result.stats.num_samples, 0);
+}
+
+// A stop in any stage, the shortcutting included, ends the search within a millisecond of
+// CPU time (all work on the calling thread: 1-thread TBB arena; wall latency printed, it
+// adds the scheduler's delays). The shortcut stage is made long (0.5 mm resampling of 300
+// raw paths) and stops are requested at several delays, landing in different stages.
+TEST(TopologicalPathSearchTest, StopInAnyStageLandsWithinAMillisecond) {
+  const Scene scene = Room({Pillar(0, 1.5), Pillar(0, -1.5), Pillar(-2.5, -3), Pillar(3, 3)});
+  const SignedDistanceField2 field = BaseField(scene);
+  TopologicalPathSearchOptions slow = Deterministic(3);
+  slow.shortcut.resample_step_m = 0.0005;
+  slow.enumeration.keep_fewest_hops = 300;
+  tbb::task_arena serial(1);
+  serial.execute([] {});  // initialised outside the measurements
+  int stopped_while_shortcutting = 0;
+  for (int delay_ms : {2, 10, 25, 60, 100, 150}) {
+    TopologicalPathSearchResult result;
+    const testing::StopLatency latency =
+        testing::MeasureStopLatency(delay_ms, [&](std::stop_token stop) {
+          serial.execute([&] {
+            result = SearchTopologicalBasePaths(field, {-6, 0}, {6, 1}, slow, stop);
+          });
+        });
+    const TopologicalPathSearchStats& s = result.stats;
+    std::cout << "stop at " << delay_ms << " ms: returned " << latency.wall_ms << " ms later ("
+              << latency.cpu_ms << " ms CPU); prm " << s.prm_ms << ", dfs " << s.dfs_ms
+              << ", shortcut " << s.shortcut_ms << " ms; " << ToString(result.status) << ", "
+              << result.paths.size() << " paths\n";
+    EXPECT_LT(latency.cpu_ms, 1.0) << "stop at " << delay_ms << " ms";
+    // Unstopped, the shortcut stage takes seconds: a search that got to it was stopped in it.
+    if (s.num_after_shortcut > 0) {
+      ++stopped_while_shortcutting;
+      // What it had: the shortest path, free, as the only PRM class (no UVD pruning).
+      ASSERT_TRUE(result.ok()) << result.reason;
+      EXPECT_EQ(CountPrmPaths(result), 1);
+      EXPECT_EQ(s.num_classes_kept, 1);
+      ExpectPathCollisionFree(scene, field, result.paths[0].waypoints_W_m);
+    }
+  }
+  EXPECT_GT(stopped_while_shortcutting, 0);
 }
 
 }  // namespace
