@@ -244,7 +244,8 @@ TEST(TopologicalPathSearchTest, StopInAnyStageLandsWithinAMillisecond) {
   tbb::task_arena serial(1);
   serial.execute([] {});  // initialised outside the measurements
   int stopped_while_shortcutting = 0;
-  for (int delay_ms : {2, 10, 25, 60, 100, 150}) {
+  // The later delays make sure some stop lands in the shortcut stage on a loaded machine too.
+  for (int delay_ms : {2, 10, 25, 60, 100, 150, 300}) {
     TopologicalPathSearchResult result;
     const testing::StopLatency latency =
         testing::MeasureStopLatency(delay_ms, [&](std::stop_token stop) {
@@ -257,6 +258,7 @@ TEST(TopologicalPathSearchTest, StopInAnyStageLandsWithinAMillisecond) {
               << latency.cpu_ms << " ms CPU); prm " << s.prm_ms << ", dfs " << s.dfs_ms
               << ", shortcut " << s.shortcut_ms << " ms; " << ToString(result.status) << ", "
               << result.paths.size() << " paths\n";
+    if (latency.wall_ms < 0.0) continue;  // finished before the stop: nothing to measure
     EXPECT_LT(latency.cpu_ms, 1.0) << "stop at " << delay_ms << " ms";
     // Unstopped, the shortcut stage takes seconds: a search that got to it was stopped in it.
     if (s.num_after_shortcut > 0) {
