@@ -195,27 +195,7 @@ TEST_F(ArcYawTrajectoryTest, SampleGradientsThroughMincoMatchCentralDifferences)
     return cost(probe);
   };
   constexpr double kStep = 1e-6, kTol = 1e-6;
-  for (int d = 0; d < D; ++d) {
-    for (int i = 0; i + 1 < kPieces; ++i) {
-      EXPECT_LT(RelativeError(gradient.waypoints(d, i),
-                              CentralDifference(&in_.waypoints(d, i), kStep, value)),
-                kTol)
-          << "dC/dP(" << d << ", " << i << ")";
-    }
-    for (int k = 0; k < 3; ++k) {
-      EXPECT_LT(RelativeError(gradient.tail(d, k), CentralDifference(&in_.tail(d, k), kStep, value)),
-                kTol)
-          << "dC/dtail(" << d << ", " << k << ")";
-      EXPECT_LT(RelativeError(gradient.head(d, k), CentralDifference(&in_.head(d, k), kStep, value)),
-                kTol)
-          << "dC/dhead(" << d << ", " << k << ")";
-    }
-  }
-  for (int j = 0; j < kPieces; ++j) {
-    EXPECT_LT(RelativeError(gradient.durations(j), CentralDifference(&in_.durations(j), kStep, value)),
-              kTol)
-        << "dC/dT(" << j << ")";
-  }
+  ExpectMincoGradientMatchesFiniteDifferences(gradient, &in_, value, kStep, kTol);
   for (int i = 0; i < 2; ++i) {
     EXPECT_LT(RelativeError(dC_dp0(i), CentralDifference(&p0_(i), kStep, value)), kTol);
   }

@@ -206,28 +206,7 @@ TEST(MincoS3Test, GradientsMatchCentralDifferences) {
       probe.Solve(in.head, in.tail, in.waypoints, in.durations);
       return cost.Value(probe);
     };
-    for (int d = 0; d < D; ++d) {
-      for (int i = 0; i + 1 < M; ++i) {
-        EXPECT_LT(RelativeError(gradient.waypoints(d, i),
-                                CentralDifference(&in.waypoints(d, i), kStep, value)),
-                  kTol)
-            << "dJ/dP(" << d << ", " << i << ")";
-      }
-      for (int k = 0; k < 3; ++k) {
-        EXPECT_LT(RelativeError(gradient.head(d, k), CentralDifference(&in.head(d, k), kStep, value)),
-                  kTol)
-            << "dJ/dhead(" << d << ", " << k << ")";
-        EXPECT_LT(RelativeError(gradient.tail(d, k), CentralDifference(&in.tail(d, k), kStep, value)),
-                  kTol)
-            << "dJ/dtail(" << d << ", " << k << ")";
-      }
-    }
-    for (int j = 0; j < M; ++j) {
-      EXPECT_LT(RelativeError(gradient.durations(j),
-                              CentralDifference(&in.durations(j), kStep, value)),
-                kTol)
-          << "dJ/dT(" << j << ")";
-    }
+    ExpectMincoGradientMatchesFiniteDifferences(gradient, &in, value, kStep, kTol);
   }
 }
 

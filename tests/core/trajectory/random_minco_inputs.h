@@ -7,8 +7,10 @@
 #include <functional>
 
 #include <Eigen/Core>
+#include <gtest/gtest.h>
 
 #include "core/common/random.h"
+#include "core/trajectory/minco_s3.h"
 
 namespace topay::testing {
 
@@ -57,6 +59,38 @@ inline double CentralDifference(double* value, double step, const std::function<
 /// |a - b| / max(1, |b|).
 inline double RelativeError(double analytic, double numeric) {
   return std::abs(analytic - numeric) / std::max(1.0, std::abs(numeric));
+}
+
+/// Expects every entry of `gradient` (waypoints, head, tail, durations) to match the central
+/// difference of `value` with respect to the same entry of `in` (relative error < tolerance).
+inline void ExpectMincoGradientMatchesFiniteDifferences(const MincoGradient& gradient,
+                                                        MincoInputs* in,
+                                                        const std::function<double()>& value,
+                                                        double step, double tolerance) {
+  const int num_dims = static_cast<int>(in->head.rows());
+  const int num_pieces = static_cast<int>(in->durations.size());
+  for (int d = 0; d < num_dims; ++d) {
+    for (int i = 0; i + 1 < num_pieces; ++i) {
+      EXPECT_LT(RelativeError(gradient.waypoints(d, i),
+                              CentralDifference(&in->waypoints(d, i), step, value)),
+                tolerance)
+          << "d/dP(" << d << ", " << i << ")";
+    }
+    for (int k = 0; k < 3; ++k) {
+      EXPECT_LT(RelativeError(gradient.head(d, k), CentralDifference(&in->head(d, k), step, value)),
+                tolerance)
+          << "d/dhead(" << d << ", " << k << ")";
+      EXPECT_LT(RelativeError(gradient.tail(d, k), CentralDifference(&in->tail(d, k), step, value)),
+                tolerance)
+          << "d/dtail(" << d << ", " << k << ")";
+    }
+  }
+  for (int j = 0; j < num_pieces; ++j) {
+    EXPECT_LT(RelativeError(gradient.durations(j),
+                            CentralDifference(&in->durations(j), step, value)),
+              tolerance)
+        << "d/dT(" << j << ")";
+  }
 }
 
 }  // namespace topay::testing
