@@ -15,19 +15,14 @@ SignedDistanceField3 SignedDistanceField3::Build(const OccupancyGrid3& occupancy
 void SignedDistanceField3::Rebuild(const OccupancyGrid3& occupancy,
                                    const SignedDistanceFieldOptions& options,
                                    EdtWorkspace* workspace) {
-  ValidateSignedDistanceFieldOptions(options);
-  EdtWorkspace local;
-  EdtWorkspace* ws = workspace ? workspace : &local;
-  geometry_ = occupancy.geometry();
-  inv_resolution_ = 1.0 / geometry_.resolution_m;
-  max_distance_m_ = geometry_.Bounds().diagonal().norm();
-  const std::size_t n = static_cast<std::size_t>(geometry_.NumCells());
-  values_.resize(n);
-  const std::uint8_t* cells = occupancy.cells().data();
-  SquaredDistanceToOtherPhase(cells, geometry_.dims, values_.data(), ws);
-  SignedValuesFromSquaredDistances(cells, geometry_.dims, 3,
-                                   geometry_.resolution_m, max_distance_m_, options,
-                                   values_.data());
+  // Validates first, so a bad option leaves this field as it was.
+  const GridGeometry3& g = occupancy.geometry();
+  const double max_distance_m = g.Bounds().diagonal().norm();
+  BuildSignedDistanceValues(occupancy.cells().data(), g.dims, 3, g.resolution_m,
+                            max_distance_m, options, workspace, &values_);
+  geometry_ = g;
+  inv_resolution_ = 1.0 / g.resolution_m;
+  max_distance_m_ = max_distance_m;
 }
 
 }  // namespace topay

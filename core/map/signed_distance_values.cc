@@ -53,4 +53,17 @@ void SignedValuesFromSquaredDistances(const std::uint8_t* cells, const Eigen::Ve
   }
 }
 
+void BuildSignedDistanceValues(const std::uint8_t* cells, const Eigen::Vector3i& dims,
+                               int num_axes, double resolution_m, double max_distance_m,
+                               const SignedDistanceFieldOptions& options,
+                               EdtWorkspace* workspace, std::vector<float>* values) {
+  ValidateSignedDistanceFieldOptions(options);
+  EdtWorkspace local;
+  EdtWorkspace* ws = workspace ? workspace : &local;
+  values->resize(static_cast<std::size_t>(dims.x()) * dims.y() * dims.z());
+  SquaredDistanceToOtherPhase(cells, dims, values->data(), ws);
+  SignedValuesFromSquaredDistances(cells, dims, num_axes, resolution_m, max_distance_m, options,
+                                   values->data());
+}
+
 }  // namespace topay

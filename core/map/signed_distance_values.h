@@ -2,8 +2,11 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <vector>
 
 #include <Eigen/Core>
+
+#include "core/map/distance_transform.h"
 
 namespace topay {
 
@@ -37,5 +40,13 @@ void SignedValuesFromSquaredDistances(const std::uint8_t* cells, const Eigen::Ve
                                       double max_distance_m,
                                       const SignedDistanceFieldOptions& options,
                                       float* squared_to_signed);
+
+/// The whole signed-field build shared by SignedDistanceField2 and SignedDistanceField3:
+/// validates `options`, sizes `values` to the grid, runs the distance transform (scratch from
+/// `workspace`, or a local one if null) and converts to signed distances (m).
+void BuildSignedDistanceValues(const std::uint8_t* cells, const Eigen::Vector3i& dims,
+                               int num_axes, double resolution_m, double max_distance_m,
+                               const SignedDistanceFieldOptions& options,
+                               EdtWorkspace* workspace, std::vector<float>* values);
 
 }  // namespace topay
