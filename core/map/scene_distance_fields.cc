@@ -33,6 +33,15 @@ SceneDistanceFields BuildSceneDistanceFields(const Scene& scene,
   using Clock = std::chrono::steady_clock;
   const Clock::time_point start = Clock::now();
   ValidateBand(options.base_band, "SceneDistanceFieldsOptions: base_band");
+  if (options.base_upper_band) {
+    ValidateBand(*options.base_upper_band, "SceneDistanceFieldsOptions: base_upper_band");
+    if (!(std::isfinite(options.base_upper_band_offset_m) &&
+          options.base_upper_band_offset_m >= 0.0)) {
+      throw std::invalid_argument(
+          "SceneDistanceFieldsOptions: base_upper_band_offset_m must be finite and >= 0, got " +
+          std::to_string(options.base_upper_band_offset_m));
+    }
+  }
   ValidateSignedDistanceFieldOptions(options.field);
   const Eigen::AlignedBox3d bounds_W_m = options.bounds_W_m.value_or(scene.bounds_W_m);
   const GridGeometry3 geometry = GridGeometry3::FromBounds(bounds_W_m, options.resolution_m);
@@ -66,6 +75,19 @@ SceneDistanceFields BuildSceneDistanceFields(const Scene& scene,
   phase = Clock::now();
   SignedDistanceField2 field_2d = SignedDistanceField2::Build(occupancy_2d, options.field, &workspace);
   summary.build_2d_s = SecondsSince(phase);
+  if (options.base_upper_band) {
+    phase = Clock::now();
+    OccupancyGrid2 occupancy_upper(base_geometry);
+    for (const OrientedBox& box : scene.boxes) {
+      summary.num_boxes_in_upper_band +=
+          occupancy_upper.AddBoxInBand(box, *options.base_upper_band) ? 1 : 0;
+    }
+    summary.rasterize_2d_s += SecondsSince(phase);
+    phase = Clock::now();
+    field_2d.LowerTo(SignedDistanceField2::Build(occupancy_upper, options.field, &workspace),
+                     options.base_upper_band_offset_m);
+    summary.build_2d_s += SecondsSince(phase);
+  }
 
   summary.num_cells_3d = geometry.NumCells();
   summary.num_occupied_3d = occupancy_3d.CountOccupied();

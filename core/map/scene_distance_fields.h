@@ -27,6 +27,14 @@ struct SceneDistanceFieldsOptions {
   /// default is the floor up to the chassis top, so the base may pass under table tops and
   /// floating boxes, which the arm must clear in the 3D field.
   HeightBand base_band{0.0, 0.155};
+  /// Optional second band for the 2D field, for a robot whose parts above base_band reach
+  /// less far from its axis than the base: obstacles in this band count with
+  /// base_upper_band_offset_m added to their distance, the 2D field being
+  /// min(d_base_band(p), d_upper_band(p) + offset) cell by cell (SignedDistanceField2::LowerTo).
+  /// E.g. a base of radius R whose rigid parts in the upper band lie within R - offset of its
+  /// axis. Unset (default): base_band alone. Must be a valid band; offset finite and >= 0.
+  std::optional<HeightBand> base_upper_band;
+  double base_upper_band_offset_m = 0.0;
   /// Placement of the zero level, for both fields.
   SignedDistanceFieldOptions field;
   /// Volume the 3D field covers (and, in xy, the 2D one); unset: the scene's bounds_W_m.
@@ -39,7 +47,8 @@ struct SceneDistanceFieldsSummary {
   std::int64_t num_occupied_3d = 0;
   std::int64_t num_cells_2d = 0;
   std::int64_t num_occupied_2d = 0;
-  int num_boxes_in_base_band = 0;  ///< Boxes that count for the 2D base field.
+  int num_boxes_in_base_band = 0;  ///< Boxes that count for the 2D base field (base_band).
+  int num_boxes_in_upper_band = 0;  ///< Boxes in base_upper_band (if set).
   double rasterize_3d_s = 0.0;     ///< OccupancyGrid3::AddBox over all boxes.
   double build_3d_s = 0.0;         ///< SignedDistanceField3::Build.
   double rasterize_2d_s = 0.0;     ///< OccupancyGrid2::AddBoxInBand over all boxes.

@@ -1,5 +1,9 @@
 #include "core/map/signed_distance_field2.h"
 
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
 #include "core/map/signed_distance_values.h"
 
 namespace topay {
@@ -23,6 +27,21 @@ void SignedDistanceField2::Rebuild(const OccupancyGrid2& occupancy,
   geometry_ = g;
   inv_resolution_ = 1.0 / g.resolution_m;
   max_distance_m_ = max_distance_m;
+}
+
+void SignedDistanceField2::LowerTo(const SignedDistanceField2& other, double offset_m) {
+  const GridGeometry2& g = other.geometry();
+  if (g.dims != geometry_.dims || g.resolution_m != geometry_.resolution_m ||
+      g.origin_W_m != geometry_.origin_W_m) {
+    throw std::invalid_argument("SignedDistanceField2::LowerTo: the fields' grids differ");
+  }
+  if (!std::isfinite(offset_m)) {
+    throw std::invalid_argument("SignedDistanceField2::LowerTo: offset_m must be finite");
+  }
+  for (std::size_t i = 0; i < values_.size(); ++i) {
+    values_[i] = std::min(values_[i], static_cast<float>(other.values_[i] + offset_m));
+  }
+  max_distance_m_ = std::max(max_distance_m_, other.max_distance_m_ + offset_m);
 }
 
 }  // namespace topay

@@ -29,6 +29,13 @@ class SignedDistanceField2 {
   void Rebuild(const OccupancyGrid2& occupancy, const SignedDistanceFieldOptions& options = {},
                EdtWorkspace* workspace = nullptr);
 
+  /// Cell by cell: value <- min(value, other's value + offset_m). Both fields must share one
+  /// geometry (std::invalid_argument otherwise, also for a non-finite offset). The result is
+  /// still 1-Lipschitz between neighbouring cells, and its interpolant is at most the minimum
+  /// of the two interpolants (interpolation is a convex combination), so a point that clears a
+  /// requirement on the result clears it on both fields.
+  void LowerTo(const SignedDistanceField2& other, double offset_m);
+
   const GridGeometry2& geometry() const { return geometry_; }
   double max_distance_m() const { return max_distance_m_; }
   float CellValue(int ix, int iy) const { return values_[geometry_.Index(ix, iy)]; }

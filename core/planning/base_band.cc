@@ -8,15 +8,16 @@
 
 namespace topay {
 
-HeightBand FrontEndBaseBand(const Kinematics& kinematics, double arm_margin_m) {
+RigidLowerBody RigidLowerBodyOf(const Kinematics& kinematics) {
   const RobotModel& model = kinematics.model();
   const int num_spheres = static_cast<int>(model.spheres.size());
   KinematicsCache cache = kinematics.MakeCache();
   WholeBodyState state;
   state.q_rad = Eigen::VectorXd::Zero(model.num_joints());
   kinematics.Update(state, &cache);
-  std::vector<double> z0(num_spheres), variation(num_spheres, 0.0);
-  for (int s = 0; s < num_spheres; ++s) z0[s] = cache.p_WS[s].z();
+  std::vector<Eigen::Vector3d> p0(num_spheres);
+  std::vector<double> variation(num_spheres, 0.0);
+  for (int s = 0; s < num_spheres; ++s) p0[s] = cache.p_WS[s];
   Rng rng(1);
   constexpr int kSamples = 64;
   for (int k = 0; k < kSamples; ++k) {
@@ -25,14 +26,23 @@ HeightBand FrontEndBaseBand(const Kinematics& kinematics, double arm_margin_m) {
     }
     kinematics.Update(state, &cache);
     for (int s = 0; s < num_spheres; ++s) {
-      variation[s] = std::max(variation[s], std::abs(cache.p_WS[s].z() - z0[s]));
+      variation[s] = std::max(variation[s], (cache.p_WS[s] - p0[s]).norm());
     }
   }
-  double top_m = model.base_cylinder.height_m;
+  RigidLowerBody body;
+  body.chassis_top_m = model.base_cylinder.height_m;
+  body.top_m = body.chassis_top_m;
   for (int s = 0; s < num_spheres; ++s) {
-    if (variation[s] < 1e-6) top_m = std::max(top_m, z0[s] + model.spheres[s].radius_m);
+    if (variation[s] >= 1e-6) continue;
+    const double radius = model.spheres[s].radius_m;
+    body.top_m = std::max(body.top_m, p0[s].z() + radius);
+    body.sphere_reach_m = std::max(body.sphere_reach_m, p0[s].head<2>().norm() + radius);
   }
-  return HeightBand{0.0, top_m + std::max(arm_margin_m, 0.0)};
+  return body;
+}
+
+HeightBand FrontEndBaseBand(const Kinematics& kinematics, double arm_margin_m) {
+  return HeightBand{0.0, RigidLowerBodyOf(kinematics).top_m + std::max(arm_margin_m, 0.0)};
 }
 
 }  // namespace topay

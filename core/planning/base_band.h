@@ -15,8 +15,19 @@ namespace topay {
 /// tops where no arm configuration is valid (the facts sheet's "weak point" of the reference
 /// harness), and the arm search on them is bound to fail.
 /// arm_margin_m: the margin of the arm spheres on the 3D field (WholeBodyValidity's default is
-/// sqrt(3) x the 3D field's resolution). A sphere is rigid when its height varies by less
+/// sqrt(3) x the 3D field's resolution). A sphere is rigid when its position varies by less
 /// than 1 um over q = 0 and 64 seeded random joint vectors within the limits.
 HeightBand FrontEndBaseBand(const Kinematics& kinematics, double arm_margin_m);
+
+/// The part of the robot that no joint motion moves relative to the base: the base cylinder
+/// and the rigid collision spheres (same test as FrontEndBaseBand).
+struct RigidLowerBody {
+  double chassis_top_m = 0.0;  ///< Top of the base cylinder.
+  double top_m = 0.0;          ///< Highest point of the chassis and the rigid spheres.
+  /// Largest horizontal distance (m) from the base axis of any rigid sphere's surface (over
+  /// every yaw): 0.115 + 0.08 = 0.195 m on the TopAY arm, well inside the 0.40 m cylinder.
+  double sphere_reach_m = 0.0;
+};
+RigidLowerBody RigidLowerBodyOf(const Kinematics& kinematics);
 
 }  // namespace topay

@@ -177,9 +177,20 @@ bool FrontEnd::AttemptGoal(int attempt, PlanContext* context) const {
   topology.clearance_m = std::max(topology.clearance_m, validity_.base_margin_m());
   topology.prm.seed = DeriveSeed(options_.seed, 2 * static_cast<std::uint64_t>(attempt));
   Clock::time_point t = Clock::now();
-  TopologicalPathSearchResult search = SearchTopologicalBasePaths(
-      base_field_, Eigen::Vector2d(start.x_m, start.y_m),
-      Eigen::Vector2d(goal.state.x_m, goal.state.y_m), topology, context->stop);
+  const Eigen::Vector2d start_W(start.x_m, start.y_m), goal_W(goal.state.x_m, goal.state.y_m);
+  TopologicalPathSearchResult search =
+      SearchTopologicalBasePaths(base_field_, start_W, goal_W, topology, context->stop);
+  // Narrow passages, or a start or goal near an obstacle: search again at the smallest
+  // clearance the validity allows.
+  const double fallback_clearance_m =
+      std::max(options_.fallback_base_clearance_m, validity_.base_margin_m());
+  if (!search.ok() && search.status != TopologicalPathSearchResult::Status::kCancelled &&
+      search.status != TopologicalPathSearchResult::Status::kInvalidInput &&
+      fallback_clearance_m < topology.clearance_m) {
+    topology.clearance_m = fallback_clearance_m;
+    search = SearchTopologicalBasePaths(base_field_, start_W, goal_W, topology, context->stop);
+    stats.used_fallback_base_clearance = true;
+  }
   stats.topology_ms += MsSince(t);
   result.topology = search.stats;
   result.base_paths = search.paths;

@@ -15,6 +15,8 @@ void CheckFrontEndOptions(const FrontEndOptions& o) {
   require(o.max_goal_attempts >= 1, "max_goal_attempts", ">= 1");
   require(o.improvement_window_s >= 0.0, "improvement_window_s", ">= 0 (+infinity: no limit)");
   require(o.acquisition_budget_s > 0.0, "acquisition_budget_s", "> 0 (+infinity: no limit)");
+  require(std::isfinite(o.fallback_base_clearance_m) && o.fallback_base_clearance_m >= 0.0,
+          "fallback_base_clearance_m", "finite and >= 0");
   require(o.num_threads >= 0, "num_threads", ">= 0 (0: all cores)");
   CheckGoalCandidatesOptions(o.goal);
 }

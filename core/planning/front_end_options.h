@@ -33,6 +33,12 @@ struct FrontEndOptions {
   /// clearance_m is raised to the validity's base margin if smaller, so that every base path
   /// passes the arm search's base check.
   TopologicalPathSearchOptions topology;
+  /// Clearance (m) beyond the base radius for a second base path search, run when the first
+  /// one (at topology.clearance_m, the facts sheet's 0.1 m) finds no path or finds the start
+  /// or goal closer than that to an obstacle: narrow passages and cluttered corners. It is
+  /// raised to the validity's base margin if smaller (so 0 means "as close as the validity
+  /// allows"). No second search when it is not below topology.clearance_m.
+  double fallback_base_clearance_m = 0.0;
   /// Delta l = 1.414 m, turns in place at the vertices.
   DiscreteSE2Options discretisation;
   /// Base limits for the layers' arrival times (they bound the joint steps). Unset: the

@@ -51,6 +51,7 @@ struct FrontEndStats {
   int num_prm_nodes = 0;           ///< Guards + connectors.
   int num_raw_paths = 0;           ///< DFS.
   int num_classes_kept = 0;        ///< Topological PRM paths after UVD pruning.
+  bool used_fallback_base_clearance = false;  ///< The second, narrower base search ran.
   int num_base_paths = 0;          ///< Including JPS.
   bool jps_ok = false;
   // Arm search, summed over the jobs of every attempt.

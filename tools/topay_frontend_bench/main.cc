@@ -1,7 +1,7 @@
 // topay-frontend-bench: runs the planner's front end (core/planning/front_end.h) on N generated
 // benchmark tasks and prints a Markdown table of its stage timings and success rates.
 // Task i uses GenerateBenchmarkCase(scene, range, DeriveSeed(seed, i)) (scene and task from
-// that seed); the distance fields (3D 0.1 m, 2D base 0.05 m by default) are built before the
+// that seed); the distance fields (PlannerFieldOptions by default) are built before the
 // clock starts. Every returned path is checked independently against the exact scene
 // (core/planning/path_verification.h).
 #include <algorithm>
@@ -25,6 +25,7 @@
 #include "core/planning/base_band.h"
 #include "core/planning/front_end.h"
 #include "core/planning/path_verification.h"
+#include "core/planning/planner_fields.h"
 #include "core/robot/kinematics.h"
 #include "sim/scenes/task_generator.h"
 
@@ -44,9 +45,14 @@ struct BenchOptions {
   // Front-end knobs (defaults: FrontEndOptions').
   double rrt_budget_s = topay::FrontEndOptions::DefaultRrtOptions().time_budget_s;
   double window_s = topay::FrontEndOptions().improvement_window_s;
-  bool anytime = false;
+  bool first_solution = topay::FrontEndOptions().rrt.stop_at_first_solution;
   bool chassis_band_only = false;
-  double base_resolution_m = 0.05;  // 2D base field; the 3D field stays at 0.1 m
+  // Field settings; < 0: PlannerFieldOptions' (3D 0.05 m, 2D 0.02 m, rigid-body band).
+  double base_resolution_m = -1.0;
+  double resolution_m = -1.0;
+  double band_margin_m = -1.0;
+  double clearance_m = topay::TopologicalPathSearchOptions().clearance_m;
+  double fallback_clearance_m = topay::FrontEndOptions().fallback_base_clearance_m;
 };
 
 // Samples of one metric.
@@ -93,11 +99,17 @@ void RunTask(const BenchOptions& o, topay::SceneKind kind, topay::DistanceRange 
   const BenchmarkCase bench_case =
       GenerateBenchmarkCase(kind, range, DeriveSeed(o.seed, static_cast<std::uint64_t>(i)),
                             kinematics);
-  SceneDistanceFieldsOptions field_options;  // 3D: 0.1 m cells
-  field_options.base_resolution_m = o.base_resolution_m;
-  field_options.base_band = o.chassis_band_only
-                                ? HeightBand{}
-                                : FrontEndBaseBand(kinematics, std::sqrt(3.0) * field_options.resolution_m);
+  SceneDistanceFieldsOptions field_options = PlannerFieldOptions(kinematics);
+  if (o.resolution_m >= 0.0) field_options.resolution_m = o.resolution_m;
+  if (o.base_resolution_m >= 0.0) field_options.base_resolution_m = o.base_resolution_m;
+  if (o.band_margin_m >= 0.0) {  // one band, as before the two-band field
+    field_options.base_band = FrontEndBaseBand(kinematics, o.band_margin_m);
+    field_options.base_upper_band.reset();
+  }
+  if (o.chassis_band_only) {
+    field_options.base_band = HeightBand{};
+    field_options.base_upper_band.reset();
+  }
   const SceneDistanceFields fields =
       BuildSceneDistanceFields(bench_case.scene.scene, field_options);
   FrontEndOptions options;
@@ -105,7 +117,9 @@ void RunTask(const BenchOptions& o, topay::SceneKind kind, topay::DistanceRange 
   options.seed = DeriveSeed(o.seed, 1'000'000 + static_cast<std::uint64_t>(i));
   if (o.jps_only) options.topology.mode = BasePathMode::kJpsOnly;
   options.rrt.time_budget_s = o.rrt_budget_s;
-  options.rrt.stop_at_first_solution = !o.anytime;
+  options.topology.clearance_m = o.clearance_m;
+  options.fallback_base_clearance_m = o.fallback_clearance_m;
+  options.rrt.stop_at_first_solution = o.first_solution;
   options.improvement_window_s = o.window_s;
   BaseLimits limits = kinematics.model().base_limits;
   limits.omega_max_radps = o.omega_max_radps;
@@ -221,11 +235,24 @@ int main(int argc, char** argv) {
       ->capture_default_str();
   app.add_option("--window", o.window_s, "Improvement window after the first success (s)")
       ->capture_default_str();
-  app.add_flag("--anytime", o.anytime, "Arm RRT* improves until t_smax (no first-solution exit)");
+  app.add_flag("--first-solution", o.first_solution,
+               "Arm RRT* stops at its first solution (the reference code), instead of the "
+               "paper's anytime improvement");
   app.add_flag("--chassis-band", o.chassis_band_only,
                "Base field from obstacles below the chassis top only (the reference harness)");
   app.add_option("--base-resolution", o.base_resolution_m,
-                 "Cell size (m) of the 2D base field (the 3D field's is 0.1 m; 0: same as 3D)")
+                 "Cell size (m) of the 2D base field (< 0: the planner's 0.02; 0: same as 3D)")
+      ->capture_default_str();
+  app.add_option("--resolution", o.resolution_m, "Cell size (m) of the 3D field (< 0: the planner's 0.05)")
+      ->capture_default_str();
+  app.add_option("--band-margin", o.band_margin_m,
+                 "One base band up to the rigid lower body's top plus this margin (m), instead of "
+                 "the planner's two bands (< 0: two bands)")
+      ->capture_default_str();
+  app.add_option("--clearance", o.clearance_m, "Preferred base clearance (m) of the path search")
+      ->capture_default_str();
+  app.add_option("--fallback-clearance", o.fallback_clearance_m,
+                 "Base clearance (m) of the second search when the first finds nothing")
       ->capture_default_str();
   app.add_flag("-v,--verbose", o.verbose, "One line per task on stderr");
   try {

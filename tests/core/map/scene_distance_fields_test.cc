@@ -154,5 +154,45 @@ TEST(SceneDistanceFieldsTest, BadInputIsReportedClearly) {
   }
 }
 
+TEST(SceneDistanceFieldsTest, UpperBandCountsWithItsOffset) {
+  // The table of TableScene, top at [0.70, 0.75] m: with an upper band up to 0.8 m and an
+  // offset of 0.2 m, the base field under the top's middle drops from the legs' 0.636 m to
+  // about -0.5 + 0.2 = -0.3 m (0.5 m deep inside the top's footprint).
+  SceneDistanceFieldsOptions options;
+  options.base_upper_band = HeightBand{0.0, 0.8};
+  options.base_upper_band_offset_m = 0.2;
+  const SceneDistanceFields fields = BuildSceneDistanceFields(TableScene(), options);
+  EXPECT_NEAR(fields.base_field_2d.Distance(Eigen::Vector2d(0, 0)), -0.3, 0.1);
+  // 1 m from the top's edge: min(1.0 + 0.2 upper, legs farther) = 1.2 m.
+  EXPECT_NEAR(fields.base_field_2d.Distance(Eigen::Vector2d(-1.5, 0)), 1.0 + 0.2, 0.1);
+  EXPECT_EQ(fields.summary.num_boxes_in_base_band, 4);
+  EXPECT_EQ(fields.summary.num_boxes_in_upper_band, 5);
+  // An upper band below the top changes nothing but the count.
+  options.base_upper_band = HeightBand{0.0, 0.6};
+  const SceneDistanceFields low = BuildSceneDistanceFields(TableScene(), options);
+  EXPECT_NEAR(low.base_field_2d.Distance(Eigen::Vector2d(0, 0)), 0.45 * std::sqrt(2.0), 0.1);
+  EXPECT_EQ(low.summary.num_boxes_in_upper_band, 4);
+}
+
+TEST(SceneDistanceFieldsTest, BadUpperBandIsReportedClearly) {
+  SceneDistanceFieldsOptions options;
+  options.base_upper_band = HeightBand{0.5, 0.2};
+  try {
+    BuildSceneDistanceFields(TableScene(), options);
+    FAIL() << "expected std::invalid_argument";
+  } catch (const std::invalid_argument& error) {
+    EXPECT_NE(std::string(error.what()).find("base_upper_band"), std::string::npos) << error.what();
+  }
+  options.base_upper_band = HeightBand{0.0, 0.8};
+  options.base_upper_band_offset_m = -0.1;
+  try {
+    BuildSceneDistanceFields(TableScene(), options);
+    FAIL() << "expected std::invalid_argument";
+  } catch (const std::invalid_argument& error) {
+    EXPECT_NE(std::string(error.what()).find("base_upper_band_offset_m"), std::string::npos)
+        << error.what();
+  }
+}
+
 }  // namespace
 }  // namespace topay

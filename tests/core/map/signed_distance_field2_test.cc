@@ -3,11 +3,13 @@
 #include <algorithm>
 #include <cmath>
 #include <iostream>
+#include <stdexcept>
 #include <vector>
 
 #include <gtest/gtest.h>
 
 #include "core/common/random.h"
+#include "tests/common/make_box.h"
 #include "tests/core/map/random_room.h"
 
 namespace topay {
@@ -118,6 +120,44 @@ TEST(SignedDistanceField2Test, OutsideEmptyAndNan) {
   EXPECT_NEAR(empty.DistanceAndGradient(Eigen::Vector2d(0.3, -1.2), &gradient),
               empty.max_distance_m(), 1e-6);
   EXPECT_TRUE(gradient.isZero(1e-12));
+}
+
+TEST(SignedDistanceField2Test, LowerToTakesTheCellwiseMinimumWithAnOffset) {
+  const GridGeometry2 geometry =
+      GridGeometry2::FromBounds(Eigen::AlignedBox2d(Eigen::Vector2d(0, 0), Eigen::Vector2d(4, 4)), 0.1);
+  OccupancyGrid2 left(geometry), right(geometry);
+  left.AddBoxInBand(MakeBox({0.5, 2.0, 0.05}, {0.4, 0.4, 0.1}), kBaseBand);
+  right.AddBoxInBand(MakeBox({3.5, 2.0, 0.05}, {0.4, 0.4, 0.1}), kBaseBand);
+  SignedDistanceField2 field = SignedDistanceField2::Build(left);
+  const SignedDistanceField2 other = SignedDistanceField2::Build(right);
+  const SignedDistanceField2 original = field;
+  const double offset_m = 0.25;
+  field.LowerTo(other, offset_m);
+  for (int ix = 0; ix < geometry.dims.x(); ++ix) {
+    for (int iy = 0; iy < geometry.dims.y(); ++iy) {
+      const float expected = std::min(original.CellValue(ix, iy),
+                                      static_cast<float>(other.CellValue(ix, iy) + offset_m));
+      ASSERT_EQ(field.CellValue(ix, iy), expected) << ix << ", " << iy;
+    }
+  }
+  // Near the right box the offset one wins: about 0.25 m at its face.
+  EXPECT_NEAR(field.Distance(Eigen::Vector2d(3.3, 2.0)), offset_m, 0.1);
+  // The interpolant never exceeds either field's.
+  Rng rng(3);
+  for (int i = 0; i < 1000; ++i) {
+    const Eigen::Vector2d p(rng.Uniform(0, 4), rng.Uniform(0, 4));
+    EXPECT_LE(field.Distance(p), original.Distance(p) + 1e-6);
+    EXPECT_LE(field.Distance(p), other.Distance(p) + offset_m + 1e-6);
+  }
+}
+
+TEST(SignedDistanceField2Test, LowerToRejectsOtherGridsAndNanOffsets) {
+  const auto box = Eigen::AlignedBox2d(Eigen::Vector2d(0, 0), Eigen::Vector2d(2, 2));
+  SignedDistanceField2 field = SignedDistanceField2::Build(OccupancyGrid2(GridGeometry2::FromBounds(box, 0.1)));
+  const SignedDistanceField2 coarser =
+      SignedDistanceField2::Build(OccupancyGrid2(GridGeometry2::FromBounds(box, 0.2)));
+  EXPECT_THROW(field.LowerTo(coarser, 0.0), std::invalid_argument);
+  EXPECT_THROW(field.LowerTo(field, std::nan("")), std::invalid_argument);
 }
 
 }  // namespace

@@ -1,0 +1,25 @@
+#include "core/planning/planner_fields.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "core/planning/base_band.h"
+
+namespace topay {
+
+SceneDistanceFieldsOptions PlannerFieldOptions(const Kinematics& kinematics) {
+  SceneDistanceFieldsOptions options;
+  options.resolution_m = 0.05;
+  options.base_resolution_m = 0.02;
+  const RigidLowerBody body = RigidLowerBodyOf(kinematics);
+  const double arm_margin_m = std::sqrt(3.0) * options.resolution_m;  // WholeBodyValidity's
+  options.base_band = HeightBand{0.0, body.chassis_top_m};
+  if (body.top_m > body.chassis_top_m) {
+    options.base_upper_band = HeightBand{0.0, body.top_m + arm_margin_m};
+    options.base_upper_band_offset_m = std::max(
+        0.0, kinematics.model().base_cylinder.radius_m - (body.sphere_reach_m + arm_margin_m));
+  }
+  return options;
+}
+
+}  // namespace topay
