@@ -32,7 +32,10 @@ struct FrontEndOptions {
   /// ablation. base_radius_m is overwritten by the model's base cylinder radius, and
   /// clearance_m is raised to the validity's base margin if smaller, so that every base path
   /// passes the arm search's base check.
-  TopologicalPathSearchOptions topology;
+  /// Front-end departures from the search's own defaults (which follow the 2D field's cell
+  /// size): shortcut resampling every 0.05 m and UVD at 0.1 m (the facts sheet's map
+  /// resolution), so that the 0.02 m base field does not make them 2.5-5x slower.
+  TopologicalPathSearchOptions topology = DefaultTopologyOptions();
   /// Clearance (m) beyond the base radius for a second base path search, run when the first
   /// one (at topology.clearance_m, the facts sheet's 0.1 m) finds no path or finds the start
   /// or goal closer than that to an obstacle: narrow passages and cluttered corners. It is
@@ -72,6 +75,12 @@ struct FrontEndOptions {
   /// wall-clock limit cuts a stage short.
   std::uint64_t seed = 1;
 
+  static TopologicalPathSearchOptions DefaultTopologyOptions() {
+    TopologicalPathSearchOptions o;
+    o.shortcut.resample_step_m = 0.05;
+    o.pruning.resolution_m = 0.1;
+    return o;
+  }
   static WholeBodyIkOptions DefaultIkOptions() {
     WholeBodyIkOptions o;
     o.max_solutions = 3;

@@ -12,6 +12,7 @@
 #include <iomanip>
 #include <iostream>
 #include <map>
+#include <optional>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -20,6 +21,7 @@
 
 #include "core/collision/scene_clearance.h"
 #include "core/common/random.h"
+#include "core/io/planner_config.h"
 #include "core/io/robot_loader.h"
 #include "core/map/scene_distance_fields.h"
 #include "core/planning/base_band.h"
@@ -41,18 +43,19 @@ struct BenchOptions {
   double omega_max_radps = 1.25;  // the paper's simulation benchmark (facts sheet)
   std::string robot_urdf;
   std::string robot_yaml;
+  std::string planner_config;  // planner YAML: its front_end section sets the options
   bool verbose = false;
-  // Front-end knobs (defaults: FrontEndOptions').
-  double rrt_budget_s = topay::FrontEndOptions::DefaultRrtOptions().time_budget_s;
-  double window_s = topay::FrontEndOptions().improvement_window_s;
-  bool first_solution = topay::FrontEndOptions().rrt.stop_at_first_solution;
+  // Front-end knobs: unset = the planner YAML's value.
+  std::optional<double> rrt_budget_s;
+  std::optional<double> window_s;
+  bool first_solution = false;
   bool chassis_band_only = false;
   // Field settings; < 0: PlannerFieldOptions' (3D 0.05 m, 2D 0.02 m, rigid-body band).
   double base_resolution_m = -1.0;
   double resolution_m = -1.0;
   double band_margin_m = -1.0;
-  double clearance_m = topay::TopologicalPathSearchOptions().clearance_m;
-  double fallback_clearance_m = topay::FrontEndOptions().fallback_base_clearance_m;
+  std::optional<double> clearance_m;
+  std::optional<double> fallback_clearance_m;
 };
 
 // Samples of one metric.
@@ -84,6 +87,8 @@ struct Tally {
   int jobs_succeeded = 0;
   int jobs_cancelled = 0;
   Samples topology_ms, classes, base_paths, rrt_first_ms, total_ms, goal_ms;
+  Samples prm_ms, dfs_ms, shortcut_ms, pruning_ms, jps_ms, acquisition_ms;
+  int fallback_searches = 0;
   std::map<std::string, int> statuses;
   std::vector<std::string> exact_failures;
 };
@@ -93,7 +98,8 @@ std::string ConfigDir() {
   return from_env != nullptr && *from_env != '\0' ? from_env : TOPAY_CONFIG_DIR;
 }
 
-void RunTask(const BenchOptions& o, topay::SceneKind kind, topay::DistanceRange range, int i,
+void RunTask(const BenchOptions& o, const topay::FrontEndOptions& configured,
+             topay::SceneKind kind, topay::DistanceRange range, int i,
              const topay::Kinematics& kinematics, Tally* tally) {
   using namespace topay;
   const BenchmarkCase bench_case =
@@ -112,15 +118,15 @@ void RunTask(const BenchOptions& o, topay::SceneKind kind, topay::DistanceRange 
   }
   const SceneDistanceFields fields =
       BuildSceneDistanceFields(bench_case.scene.scene, field_options);
-  FrontEndOptions options;
+  FrontEndOptions options = configured;
   options.num_threads = o.threads;
   options.seed = DeriveSeed(o.seed, 1'000'000 + static_cast<std::uint64_t>(i));
   if (o.jps_only) options.topology.mode = BasePathMode::kJpsOnly;
-  options.rrt.time_budget_s = o.rrt_budget_s;
-  options.topology.clearance_m = o.clearance_m;
-  options.fallback_base_clearance_m = o.fallback_clearance_m;
-  options.rrt.stop_at_first_solution = o.first_solution;
-  options.improvement_window_s = o.window_s;
+  if (o.rrt_budget_s) options.rrt.time_budget_s = *o.rrt_budget_s;
+  if (o.clearance_m) options.topology.clearance_m = *o.clearance_m;
+  if (o.fallback_clearance_m) options.fallback_base_clearance_m = *o.fallback_clearance_m;
+  if (o.first_solution) options.rrt.stop_at_first_solution = true;
+  if (o.window_s) options.improvement_window_s = *o.window_s;
   BaseLimits limits = kinematics.model().base_limits;
   limits.omega_max_radps = o.omega_max_radps;
   options.base_limits = limits;
@@ -137,6 +143,13 @@ void RunTask(const BenchOptions& o, topay::SceneKind kind, topay::DistanceRange 
     tally->topology_ms.Add(result.stats.topology_ms);
     tally->classes.Add(result.stats.num_classes_kept);
     tally->base_paths.Add(result.stats.num_base_paths);
+    tally->prm_ms.Add(result.topology.prm_ms);
+    tally->dfs_ms.Add(result.topology.dfs_ms);
+    tally->shortcut_ms.Add(result.topology.shortcut_ms);
+    tally->pruning_ms.Add(result.topology.pruning_ms);
+    tally->jps_ms.Add(result.topology.jps_ms);
+    tally->acquisition_ms.Add(result.stats.acquisition_ms);
+    tally->fallback_searches += result.stats.used_fallback_base_clearance ? 1 : 0;
   }
   for (const ArmJobReport& job : result.jobs) {
     if (job.status == ArmRrtStarStatus::kCancelled || job.stats.cancelled || !job.started) {
@@ -206,6 +219,12 @@ void PrintTable(const BenchOptions& o, const Tally& t) {
             << t.paths_failing_exact_check << ". Status counts:";
   for (const auto& [status, count] : t.statuses) std::cout << " " << status << " " << count;
   std::cout << ".\n";
+  std::cout << "Stage medians (ms), last search of each task: PRM " << Fmt(t.prm_ms.Quantile(0.5))
+            << ", DFS " << Fmt(t.dfs_ms.Quantile(0.5)) << ", shortcut "
+            << Fmt(t.shortcut_ms.Quantile(0.5)) << ", UVD " << Fmt(t.pruning_ms.Quantile(0.5))
+            << ", JPS " << Fmt(t.jps_ms.Quantile(0.5)) << "; arm stage "
+            << Fmt(t.acquisition_ms.Quantile(0.5)) << " (p95 " << Fmt(t.acquisition_ms.Quantile(0.95))
+            << "). Tasks needing the fallback base search: " << t.fallback_searches << ".\n";
   for (const std::string& failure : t.exact_failures) std::cout << "  exact check: " << failure << "\n";
 }
 
@@ -231,9 +250,13 @@ int main(int argc, char** argv) {
   o.robot_yaml = config + "/robot/topay_mm.yaml";
   app.add_option("--robot", o.robot_urdf, "Robot URDF")->capture_default_str();
   app.add_option("--robot-config", o.robot_yaml, "Robot YAML")->capture_default_str();
-  app.add_option("--rrt-budget", o.rrt_budget_s, "t_smax of each arm RRT* job (s)")
+  o.planner_config = config + "/planner/topay.yaml";
+  app.add_option("--config", o.planner_config,
+                 "Planner YAML (its front_end section); the flags below override it")
       ->capture_default_str();
-  app.add_option("--window", o.window_s, "Improvement window after the first success (s)")
+  app.add_option("--rrt-budget", o.rrt_budget_s, "t_smax of each arm RRT* job (s; default: the YAML's)")
+      ->capture_default_str();
+  app.add_option("--window", o.window_s, "Improvement window after the first success (s; default: the YAML's)")
       ->capture_default_str();
   app.add_flag("--first-solution", o.first_solution,
                "Arm RRT* stops at its first solution (the reference code), instead of the "
@@ -273,8 +296,9 @@ int main(int argc, char** argv) {
   try {
     const topay::RobotModel model = topay::LoadRobotModel(o.robot_urdf, o.robot_yaml);
     const topay::Kinematics kinematics(model);
+    const topay::FrontEndOptions configured = topay::LoadPlannerOptions(o.planner_config).front_end;
     Tally tally;
-    for (int i = 0; i < o.tasks; ++i) RunTask(o, *kind, *range, i, kinematics, &tally);
+    for (int i = 0; i < o.tasks; ++i) RunTask(o, configured, *kind, *range, i, kinematics, &tally);
     PrintTable(o, tally);
   } catch (const std::exception& e) {
     std::cerr << "topay-frontend-bench: error: " << e.what() << "\n";

@@ -1,0 +1,394 @@
+#include "core/optimization/trajectory_objective.h"
+
+#include <algorithm>
+#include <cmath>
+#include <exception>
+#include <stdexcept>
+#include <string>
+
+#include "core/optimization/joint_map.h"
+#include "core/optimization/time_map.h"
+#include "core/trajectory/quintic_basis.h"
+
+namespace topay {
+namespace {
+
+constexpr int kBlock = kQuinticCoefficients;
+
+ArcYawTrajectory::Options TrajectoryOptions(int panels) {
+  ArcYawTrajectory::Options options;
+  options.integrator.panels_per_piece = panels;
+  return options;
+}
+
+void Require(bool condition, const std::string& message) {
+  if (!condition) throw std::invalid_argument("TrajectoryObjective: " + message);
+}
+
+}  // namespace
+
+TrajectoryObjective::TrajectoryObjective(const Kinematics& kinematics,
+                                         const SignedDistanceField2& base_field,
+                                         const SignedDistanceField3& arm_field,
+                                         const BaseLimits& base_limits,
+                                         const WholeBodyState& start,
+                                         const Eigen::Isometry3d& X_WE_goal, int num_pieces,
+                                         const TrajectoryObjectiveOptions& options)
+    : kinematics_(kinematics),
+      options_(options),
+      num_pieces_(num_pieces),
+      num_joints_(kinematics.num_joints()),
+      penalties_(kinematics, base_field, arm_field, base_limits, options.penalties),
+      X_WE_goal_(X_WE_goal),
+      trajectory_(kinematics.num_joints(), std::max(num_pieces, 1),
+                  TrajectoryOptions(std::max(options.panels_per_piece, 1))) {
+  Require(num_pieces >= 1, "num_pieces = " + std::to_string(num_pieces) + " must be >= 1");
+  Require(options.panels_per_piece >= 1, "panels_per_piece must be >= 1");
+  Require(std::isfinite(options.time_weight) && options.time_weight >= 0.0,
+          "time_weight must be finite and >= 0");
+  Require(options.path_fit_position_weight >= 0.0 && options.path_fit_angle_weight >= 0.0,
+          "path fit weights must be >= 0");
+  Require(start.num_joints() == num_joints_,
+          "start state has " + std::to_string(start.num_joints()) + " joints, the robot " +
+              std::to_string(num_joints_));
+  Require(start.IsFinite(), "start state is not finite");
+  Require(X_WE_goal.matrix().allFinite(), "goal pose X_WE_goal is not finite");
+  const int D = num_dims(), M = num_pieces_, K = options.panels_per_piece;
+  jerk_weights_ = options.jerk_weights.Weights(num_joints_);
+  // The joint map's range: the limits less the penalty's joint margin, so waypoints and q_f
+  // keep it (SamplePenalties checked that the margin leaves a range).
+  const double margin = options.penalties.joint_position_margin_rad;
+  joint_min_rad_ = kinematics.model().joint_limits.q_min_rad.array() + margin;
+  joint_max_rad_ = kinematics.model().joint_limits.q_max_rad.array() - margin;
+  p0_W_ = Eigen::Vector2d(start.x_m, start.y_m);
+  // Conditions (15)-(17): the start at rest, s(0) = 0.
+  head_.setZero(D, 3);
+  head_(1, 0) = start.yaw_rad;
+  head_.col(0).tail(num_joints_) = start.q_rad;
+  tail_.setZero(D, 3);
+  waypoints_.setZero(D, M - 1);
+  durations_s_.setOnes(M);
+  dT_dtau_.setOnes(M);
+  dq_dxi_.setOnes(num_joints_, M);
+  dC_dc_.setZero(kBlock * M, D);
+  dC_dT_.setZero(M);
+  dC_dp_.setZero(2, M * K + 1);
+  dC_dend_direct_.setZero(D);
+  minco_gradient_.Resize(D, M);
+  sample_ = penalties_.MakeQuantities();
+  sample_gradient_ = penalties_.MakeQuantities();
+  values_.setZero(D, 4);
+  weights_.setZero(D, 3);
+  end_state_.q_rad.setZero(num_joints_);
+  cache_ = kinematics.MakeCache();
+  J_WE_.setZero(6, kinematics.num_states());
+  dr_dz_.setZero(6, kinematics.num_states());
+  dL_dz_.setZero(kinematics.num_states());
+}
+
+void TrajectoryObjective::set_terms(const ObjectiveTerms& terms) {
+  terms_ = terms;
+  penalties_.set_enabled(terms.penalties);
+}
+
+void TrajectoryObjective::set_penalty_scales(const PenaltyValues& scales) {
+  for (double scale : scales) {
+    Require(std::isfinite(scale) && scale > 0.0, "penalty scales must be finite and > 0");
+  }
+  penalties_.set_weight_scales(scales);
+}
+
+void TrajectoryObjective::set_extra_clearances(double base_m, double arm_m) {
+  Require(std::isfinite(base_m) && base_m >= 0.0 && std::isfinite(arm_m) && arm_m >= 0.0,
+          "extra clearances must be finite and >= 0");
+  penalties_.set_extra_clearances(base_m, arm_m);
+}
+
+void TrajectoryObjective::set_multiplier(const Vector6d& lambda, double rho) {
+  Require(lambda.allFinite(), "multiplier lambda is not finite");
+  Require(std::isfinite(rho) && rho > 0.0, "rho = " + std::to_string(rho) + " must be > 0");
+  lambda_ = lambda;
+  rho_ = rho;
+}
+
+void TrajectoryObjective::set_path_reference(const PathReference& reference) {
+  const int samples = num_pieces_ * (panels_per_piece() + 1);
+  Require(reference.p_W.cols() == samples && reference.yaw_rad.size() == samples &&
+              reference.q_rad.rows() == num_joints_ && reference.q_rad.cols() == samples,
+          "path reference must have " + std::to_string(samples) + " samples of " +
+              std::to_string(num_joints_) + " joints");
+  Require(reference.p_W.allFinite() && reference.yaw_rad.allFinite() &&
+              reference.q_rad.allFinite(),
+          "path reference is not finite");
+  reference_ = reference;
+  has_reference_ = true;
+}
+
+Eigen::VectorXd TrajectoryObjective::Pack(const Eigen::VectorXd& durations_s,
+                                          const Eigen::MatrixXd& waypoints,
+                                          const Eigen::VectorXd& end) const {
+  const int D = num_dims(), M = num_pieces_;
+  Require(durations_s.size() == M && waypoints.rows() == D && waypoints.cols() == M - 1 &&
+              end.size() == D,
+          "Pack: expected " + std::to_string(M) + " durations, " + std::to_string(D) + " x " +
+              std::to_string(M - 1) + " waypoints and " + std::to_string(D) + " end values");
+  Require(waypoints.allFinite() && end.allFinite(), "Pack: waypoints or end not finite");
+  Eigen::VectorXd x(num_parameters());
+  for (int j = 0; j < M; ++j) x(j) = TauFromDuration(durations_s(j));  // throws if <= 0
+  const auto pack_state = [&](const Eigen::VectorXd& state, int offset) {
+    x(offset) = state(0);
+    x(offset + 1) = state(1);
+    for (int k = 0; k < num_joints_; ++k) {
+      x(offset + 2 + k) = XiFromJoint(state(2 + k), joint_min_rad_(k), joint_max_rad_(k));
+    }
+  };
+  for (int i = 0; i + 1 < M; ++i) pack_state(waypoints.col(i), M + i * D);
+  pack_state(end, M + (M - 1) * D);
+  return x;
+}
+
+void TrajectoryObjective::Unpack(const double* x, Eigen::VectorXd* durations_s,
+                                 Eigen::MatrixXd* waypoints, Eigen::VectorXd* end) const {
+  const int D = num_dims(), M = num_pieces_;
+  durations_s->resize(M);
+  waypoints->resize(D, M - 1);
+  end->resize(D);
+  for (int j = 0; j < M; ++j) (*durations_s)(j) = DurationFromTau(x[j]);
+  const auto unpack_state = [&](int offset, auto&& out) {
+    out(0) = x[offset];
+    out(1) = x[offset + 1];
+    for (int k = 0; k < num_joints_; ++k) {
+      out(2 + k) = JointFromXi(x[offset + 2 + k], joint_min_rad_(k), joint_max_rad_(k));
+    }
+  };
+  for (int i = 0; i + 1 < M; ++i) unpack_state(M + i * D, waypoints->col(i));
+  unpack_state(M + (M - 1) * D, *end);
+}
+
+bool TrajectoryObjective::Decode(const double* x) {
+  const int D = num_dims(), M = num_pieces_;
+  for (int p = 0; p < num_parameters(); ++p) {
+    if (!std::isfinite(x[p])) return false;
+  }
+  for (int j = 0; j < M; ++j) durations_s_(j) = DurationFromTau(x[j], &dT_dtau_(j));
+  // Eq. (22) inverted for every joint value; s and yaw as they are.
+  const auto decode_state = [&](int offset, int column, auto&& out) {
+    out(0) = x[offset];
+    out(1) = x[offset + 1];
+    for (int k = 0; k < num_joints_; ++k) {
+      out(2 + k) = JointFromXi(x[offset + 2 + k], joint_min_rad_(k), joint_max_rad_(k),
+                               &dq_dxi_(k, column));
+    }
+  };
+  for (int i = 0; i + 1 < M; ++i) decode_state(M + i * D, i, waypoints_.col(i));
+  decode_state(M + (M - 1) * D, M - 1, tail_.col(0));
+  return true;
+}
+
+bool TrajectoryObjective::Evaluate(const double* x, double* cost, double* gradient) {
+  ++num_evaluations_;
+  if (stop_.stop_requested()) {
+    stopped_ = true;
+    return false;
+  }
+  if (!Decode(x)) return false;
+  const bool with_gradient = gradient != nullptr;
+  try {
+    trajectory_.Update(p0_W_, head_, tail_, waypoints_, durations_s_);
+    breakdown_ = ObjectiveBreakdown();
+    if (with_gradient) {
+      dC_dc_.setZero();
+      dC_dT_.setZero();
+      dC_dp_.setZero();
+      dC_dend_direct_.setZero();
+    }
+    const MincoS3& minco = trajectory_.minco();
+    if (terms_.jerk) {
+      // Eq. (6), first term.
+      breakdown_.jerk = JerkEnergy(minco.coefficients(), durations_s_, jerk_weights_);
+      if (with_gradient) {
+        AddJerkEnergyGradient(minco.coefficients(), durations_s_, jerk_weights_, dC_dc_, dC_dT_);
+      }
+    }
+    if (terms_.time) {
+      // Eq. (6), rho ||T||_1.
+      breakdown_.time = options_.time_weight * durations_s_.sum();
+      if (with_gradient) dC_dT_.array() += options_.time_weight;
+    }
+    AddSamples(with_gradient);
+    if (stopped_) return false;
+    AddEndEffector(with_gradient);
+    double total = breakdown_.jerk + breakdown_.time + breakdown_.end_effector +
+                   breakdown_.path_fit;
+    for (double term : breakdown_.penalties) total += term;
+    breakdown_.total = total;
+    if (!std::isfinite(total)) return false;
+    *cost = total;
+    if (with_gradient) {
+      trajectory_.PropagateGradient(dC_dp_, dC_dc_, dC_dT_, &minco_gradient_);
+      WriteGradient(gradient);
+      for (int p = 0; p < num_parameters(); ++p) {
+        if (!std::isfinite(gradient[p])) return false;
+      }
+    }
+    return true;
+  } catch (const std::exception&) {
+    // MINCO reports a numerically singular system for extreme durations; kinematics rejects
+    // non-finite states. Either way this x is not usable: the line search backs off.
+    return false;
+  }
+}
+
+bool TrajectoryObjective::AnyPenalty() const {
+  for (bool on : terms_.penalties) {
+    if (on) return true;
+  }
+  return false;
+}
+
+void TrajectoryObjective::AddSamples(bool with_gradient) {
+  if (!AnyPenalty() && !(terms_.path_fit && has_reference_)) return;
+  for (int j = 0; j < num_pieces_; ++j) {
+    if (stop_.stop_requested()) {
+      stopped_ = true;
+      return;
+    }
+    AddPieceSamples(j, with_gradient);
+  }
+}
+
+// Eq. (23) for piece j: sum_l w_l T_j / K P(t_l), t_l = l T_j / K, plus the path fit.
+// With V the D x 4 values (position and derivatives 1-3 of every dimension) and G the D x 3
+// weighted dCost/d(position, 1st, 2nd derivative) of the sample:
+//   dCost/dc_j += [beta0 beta1 beta2] G^T,
+//   dCost/dT_j += w_l / K P + (l / K) sum_d (G_d0 V_d1 + G_d1 V_d2 + G_d2 V_d3)   (t moves with T),
+//   dCost/dp_g += the weighted dP/d(x, y) (the Simpson sample g = jK + l; its own dependence
+//   on c and T is ArcYawTrajectory::PropagateGradient's).
+void TrajectoryObjective::AddPieceSamples(int piece, bool with_gradient) {
+  const int K = panels_per_piece();
+  const int N = num_joints_;
+  const double T = durations_s_(piece);
+  const auto c = trajectory_.minco().coefficients().middleRows(kBlock * piece, kBlock);
+  const Eigen::Matrix2Xd& positions = trajectory_.positions().positions();
+  const bool penalties_on = AnyPenalty();
+  const bool fit = terms_.path_fit && has_reference_;
+  Eigen::Matrix<double, kBlock, 4> basis;
+  for (int l = 0; l <= K; ++l) {
+    const double t = T * l / K;
+    for (int order = 0; order < 4; ++order) basis.col(order) = QuinticBasis(t, order);
+    values_.noalias() = c.transpose() * basis;
+    const int g = piece * K + l;
+    sample_.x_m = positions(0, g);
+    sample_.y_m = positions(1, g);
+    sample_.yaw_rad = values_(1, 0);
+    sample_.v_mps = values_(0, 1);
+    sample_.a_mps2 = values_(0, 2);
+    sample_.omega_radps = values_(1, 1);
+    sample_.beta_radps2 = values_(1, 2);
+    sample_.q_rad = values_.col(0).tail(N);
+    sample_.qd_radps = values_.col(1).tail(N);
+    sample_.qdd_radps2 = values_.col(2).tail(N);
+    const double trapezoid = (l == 0 || l == K) ? 0.5 : 1.0;
+    const double w_time = trapezoid * T / K;  // eq. (23): T_j / K, trapezoid weights
+    double penalty = 0.0;
+    if (penalties_on) {
+      PenaltyValues costs{};
+      penalty = penalties_.Evaluate(sample_, with_gradient ? &sample_gradient_ : nullptr, &costs);
+      for (int term = 0; term < kNumPenaltyTerms; ++term) {
+        breakdown_.penalties[term] += w_time * costs[term];
+      }
+    }
+    if (!with_gradient && !fit) continue;
+    if (with_gradient) {
+      weights_.setZero();
+      if (penalties_on) {
+        const SampleQuantities& d = sample_gradient_;
+        weights_(0, 1) = w_time * d.v_mps;
+        weights_(0, 2) = w_time * d.a_mps2;
+        weights_(1, 0) = w_time * d.yaw_rad;
+        weights_(1, 1) = w_time * d.omega_radps;
+        weights_(1, 2) = w_time * d.beta_radps2;
+        weights_.col(0).tail(N) = w_time * d.q_rad;
+        weights_.col(1).tail(N) = w_time * d.qd_radps;
+        weights_.col(2).tail(N) = w_time * d.qdd_radps2;
+        dC_dp_(0, g) += w_time * d.x_m;
+        dC_dp_(1, g) += w_time * d.y_m;
+      }
+    }
+    if (fit) {
+      // Stage 1: w_fit (|p - p_ref|^2 + w_angle ((yaw - yaw_ref)^2 + |q - q_ref|^2)) with the
+      // trapezoid weight / K.
+      const int r = piece * (K + 1) + l;
+      const double w_fit = trapezoid / K;
+      const Eigen::Vector2d dp = positions.col(g) - reference_.p_W.col(r);
+      const double dyaw = sample_.yaw_rad - reference_.yaw_rad(r);
+      const double a = options_.path_fit_angle_weight, b = options_.path_fit_position_weight;
+      double dq_sq = 0.0;
+      for (int k = 0; k < N; ++k) {
+        const double e = sample_.q_rad(k) - reference_.q_rad(k, r);
+        dq_sq += e * e;
+        if (with_gradient) weights_(2 + k, 0) += w_fit * 2.0 * a * e;
+      }
+      breakdown_.path_fit += w_fit * (b * dp.squaredNorm() + a * (dyaw * dyaw + dq_sq));
+      if (with_gradient) {
+        weights_(1, 0) += w_fit * 2.0 * a * dyaw;
+        dC_dp_.col(g) += w_fit * 2.0 * b * dp;
+      }
+    }
+    if (!with_gradient) continue;
+    dC_dc_.middleRows(kBlock * piece, kBlock).noalias() +=
+        basis.leftCols<3>() * weights_.transpose();
+    const double dcost_dt = (weights_.array() * values_.rightCols<3>().array()).sum();
+    dC_dT_(piece) += trapezoid / K * penalty + static_cast<double>(l) / K * dcost_dt;
+  }
+}
+
+// PHR-ALM term of eq. (7): rho / 2 |r + lambda / rho|^2, r = PoseResidual(FK(end state)).
+// d/dz = dr/dz^T (lambda + rho r), z = (x_f, y_f, yaw_f, q_f): x_f, y_f are the last Simpson
+// sample, yaw_f and q_f the free end values themselves.
+void TrajectoryObjective::AddEndEffector(bool with_gradient) {
+  const int last = num_pieces_ * panels_per_piece();
+  const Eigen::Matrix2Xd& positions = trajectory_.positions().positions();
+  end_state_.x_m = positions(0, last);
+  end_state_.y_m = positions(1, last);
+  end_state_.yaw_rad = tail_(1, 0);
+  end_state_.q_rad = tail_.col(0).tail(num_joints_);
+  kinematics_.Update(end_state_, &cache_);
+  residual_ = PoseResidual(cache_.X_WE, X_WE_goal_);
+  if (!terms_.end_effector) return;
+  const Vector6d shifted = residual_ + lambda_ / rho_;
+  breakdown_.end_effector = 0.5 * rho_ * shifted.squaredNorm();
+  if (!with_gradient) return;
+  kinematics_.EndEffectorJacobian(cache_, J_WE_);
+  PoseResidualJacobian(residual_, J_WE_, dr_dz_);
+  dL_dz_.noalias() = dr_dz_.transpose() * (rho_ * shifted);
+  dC_dp_(0, last) += dL_dz_(0);
+  dC_dp_(1, last) += dL_dz_(1);
+  dC_dend_direct_(1) += dL_dz_(2);
+  dC_dend_direct_.tail(num_joints_) += dL_dz_.tail(num_joints_);
+}
+
+void TrajectoryObjective::WriteGradient(double* gradient) const {
+  const int D = num_dims(), M = num_pieces_;
+  // Time map, eq. (21): dC/dtau = dC/dT dT/dtau.
+  for (int j = 0; j < M; ++j) gradient[j] = minco_gradient_.durations(j) * dT_dtau_(j);
+  // Joint map, eq. (22): dC/dxi = dC/dq dq/dxi.
+  const auto write_state = [&](int offset, int column, const auto& dC_dstate) {
+    gradient[offset] = dC_dstate(0);
+    gradient[offset + 1] = dC_dstate(1);
+    for (int k = 0; k < num_joints_; ++k) {
+      gradient[offset + 2 + k] = dC_dstate(2 + k) * dq_dxi_(k, column);
+    }
+  };
+  for (int i = 0; i + 1 < M; ++i) write_state(M + i * D, i, minco_gradient_.waypoints.col(i));
+  // The free end: through MINCO's tail and the end-effector term's direct dependence.
+  const int end = M + (M - 1) * D;
+  gradient[end] = minco_gradient_.tail(0, 0) + dC_dend_direct_(0);
+  gradient[end + 1] = minco_gradient_.tail(1, 0) + dC_dend_direct_(1);
+  for (int k = 0; k < num_joints_; ++k) {
+    gradient[end + 2 + k] =
+        (minco_gradient_.tail(2 + k, 0) + dC_dend_direct_(2 + k)) * dq_dxi_(k, M - 1);
+  }
+}
+
+}  // namespace topay

@@ -1,0 +1,225 @@
+#include "core/planner/whole_body_planner.h"
+
+#include <algorithm>
+#include <atomic>
+#include <chrono>
+#include <exception>
+#include <limits>
+#include <string>
+#include <thread>
+#include <utility>
+#include <vector>
+
+#include "core/planning/stop_deadline.h"
+#include "core/validate/arc_yaw_sampling.h"
+
+namespace topay {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double MsBetween(Clock::time_point a, Clock::time_point b) {
+  return std::chrono::duration<double, std::milli>(b - a).count();
+}
+
+Clock::time_point After(Clock::time_point t, double seconds) {
+  if (!(seconds < 1e6)) return Clock::time_point::max();  // +infinity: no deadline
+  return t + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(seconds));
+}
+
+WholeBodyPlannerOptions Checked(WholeBodyPlannerOptions options) {
+  CheckWholeBodyPlannerOptions(options);
+  return options;
+}
+
+BaseLimits ResolveLimits(const WholeBodyPlannerOptions& options, const Kinematics& kinematics) {
+  return options.base_limits.value_or(kinematics.model().base_limits);
+}
+
+FrontEndOptions FrontEndOptionsFor(const WholeBodyPlannerOptions& options,
+                                   const Kinematics& kinematics) {
+  FrontEndOptions front_end = options.front_end;
+  front_end.base_limits = ResolveLimits(options, kinematics);
+  return front_end;
+}
+
+PlanStatus FromFrontEnd(FrontEndStatus status) {
+  switch (status) {
+    case FrontEndStatus::kInvalidInput:
+      return PlanStatus::kInvalidInput;
+    case FrontEndStatus::kCancelled:
+      return PlanStatus::kCancelled;
+    default:
+      return PlanStatus::kFrontEndFailed;
+  }
+}
+
+// "n x reason; m x other" over the candidates that did not validate.
+std::string SummariseCandidates(const std::vector<CandidateReport>& candidates) {
+  std::vector<std::pair<std::string, int>> counts;
+  for (const CandidateReport& c : candidates) {
+    std::string why;
+    if (!c.started) {
+      why = "not started";
+    } else if (!c.optimization.success()) {
+      why = std::string(ToString(c.optimization.status)) + " (" + c.optimization.reason + ")";
+    } else if (c.validation && !c.validation->ok) {
+      why = "rejected by the validator (" + c.validation->first_failure.message + ")";
+    } else {
+      continue;
+    }
+    auto it = std::find_if(counts.begin(), counts.end(),
+                           [&why](const auto& entry) { return entry.first == why; });
+    if (it == counts.end()) {
+      counts.emplace_back(why, 1);
+    } else {
+      ++it->second;
+    }
+  }
+  std::string out;
+  for (const auto& [why, count] : counts) {
+    if (!out.empty()) out += "; ";
+    out += std::to_string(count) + " x " + why;
+  }
+  return out;
+}
+
+}  // namespace
+
+WholeBodyPlanner::WholeBodyPlanner(const Kinematics& kinematics,
+                                   const SignedDistanceField2& base_field,
+                                   const SignedDistanceField3& arm_field, const Scene& scene,
+                                   WholeBodyPlannerOptions options)
+    : options_(Checked(std::move(options))),
+      base_limits_(ResolveLimits(options_, kinematics)),
+      front_end_(kinematics, base_field, arm_field, FrontEndOptionsFor(options_, kinematics)),
+      optimizer_(kinematics, base_field, arm_field, options_.optimizer),
+      validator_(kinematics, scene, base_limits_, options_.validator) {}
+
+WholeBodyPlanResult WholeBodyPlanner::Plan(const WholeBodyState& start,
+                                           const Eigen::Isometry3d& X_WE_goal,
+                                           const std::optional<WholeBodyState>& hint,
+                                           std::stop_token stop) const {
+  const Clock::time_point t0 = Clock::now();
+  WholeBodyPlanResult result;
+  // One stop for the whole plan: the caller's, or the time limit.
+  std::stop_source plan_stop;
+  const std::stop_callback forward(stop, [&plan_stop] { plan_stop.request_stop(); });
+  std::atomic<bool> time_limit_hit{false};
+  {
+    const StopDeadline deadline(&plan_stop, After(t0, options_.time_limit_s));
+    result.front_end = front_end_.Plan(start, X_WE_goal, hint, plan_stop.get_token());
+    const FrontEndStats& stats = result.front_end.stats;
+    result.timings.search_ms = stats.goal_ms + stats.topology_ms;
+    result.timings.sampling_ms = stats.discretisation_ms + stats.acquisition_ms;
+    result.timings.front_end_ms = MsBetween(t0, Clock::now());
+    if (result.front_end.success()) {
+      OptimizeCandidates(start, X_WE_goal, plan_stop.get_token(), &result);
+    }
+    time_limit_hit = plan_stop.stop_requested() && !stop.stop_requested();
+  }
+  result.timings.total_ms = MsBetween(t0, Clock::now());
+
+  if (!result.front_end.success()) {
+    result.status = FromFrontEnd(result.front_end.status);
+    if (result.status == PlanStatus::kCancelled && time_limit_hit) {
+      result.status = PlanStatus::kTimeLimit;
+    }
+    result.failure_reason = "front end: " + result.front_end.failure_reason;
+    return result;
+  }
+  if (result.chosen >= 0) {
+    result.status = PlanStatus::kSuccess;
+    result.trajectory.emplace(result.candidates[result.chosen].optimization.MakeTrajectory());
+    return result;
+  }
+  result.status = stop.stop_requested() ? PlanStatus::kCancelled
+                  : time_limit_hit      ? PlanStatus::kTimeLimit
+                                        : PlanStatus::kOptimizationFailed;
+  result.failure_reason = "no validated trajectory from " +
+                          std::to_string(result.candidates.size()) + " candidate paths: " +
+                          SummariseCandidates(result.candidates);
+  return result;
+}
+
+void WholeBodyPlanner::RunCandidate(const TrajectoryProblem& problem, const WholeBodyPath& path,
+                                    std::stop_token stop, CandidateReport* report) const {
+  const Clock::time_point t = Clock::now();
+  report->started = true;
+  report->optimization = optimizer_.Optimize(problem, path, stop);
+  if (report->optimization.success()) {
+    try {
+      const ArcYawTrajectory trajectory = report->optimization.MakeTrajectory();
+      report->validation = validator_.Validate(SampleArcYaw(trajectory), problem.start,
+                                               problem.X_WE_goal);
+    } catch (const std::exception& e) {  // a malformed summary counts as a failure
+      ValidationReport failed;
+      failed.ok = false;
+      failed.first_failure.message = std::string("could not rebuild the trajectory: ") + e.what();
+      report->validation = failed;
+    }
+  }
+  report->wall_ms = MsBetween(t, Clock::now());
+}
+
+void WholeBodyPlanner::OptimizeCandidates(const WholeBodyState& start,
+                                          const Eigen::Isometry3d& X_WE_goal,
+                                          std::stop_token plan_stop,
+                                          WholeBodyPlanResult* result) const {
+  const Clock::time_point t_begin = Clock::now();
+  const std::vector<FrontEndPath>& paths = result->front_end.paths;
+  const int n = std::min<int>(options_.max_candidates, paths.size());
+  result->candidates.assign(n, CandidateReport{});
+  for (int i = 0; i < n; ++i) result->candidates[i].path_index = i;
+  const TrajectoryProblem problem{start, X_WE_goal, base_limits_};
+
+  // The stage's stop: the plan's, or the early-termination window after the first success.
+  std::stop_source stage_stop;
+  const std::stop_callback forward(plan_stop, [&stage_stop] { stage_stop.request_stop(); });
+  StopDeadline window(&stage_stop, Clock::time_point::max());
+  std::atomic<int> next{0};
+  std::atomic<std::int64_t> first_success_ns{std::numeric_limits<std::int64_t>::max()};
+  auto work = [&] {
+    while (!stage_stop.stop_requested()) {
+      const int i = next.fetch_add(1);
+      if (i >= n) return;
+      CandidateReport& report = result->candidates[i];
+      RunCandidate(problem, paths[i].path, stage_stop.get_token(), &report);
+      if (report.validated()) {
+        const Clock::time_point now = Clock::now();
+        std::int64_t expected = std::numeric_limits<std::int64_t>::max();
+        first_success_ns.compare_exchange_strong(expected, (now - t_begin).count());
+        if (!options_.sequential) window.Tighten(After(now, options_.early_termination_window_s));
+      }
+    }
+  };
+  if (options_.sequential) {
+    work();
+  } else {
+    const int hardware = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+    const int workers = std::min(n, options_.num_threads > 0 ? options_.num_threads : hardware);
+    std::vector<std::jthread> threads;
+    for (int w = 1; w < workers; ++w) threads.emplace_back(work);
+    work();  // the calling thread is a worker too
+  }  // jthreads join here
+  const Clock::time_point t_end = Clock::now();
+
+  double best = std::numeric_limits<double>::infinity();
+  for (int i = 0; i < n; ++i) {
+    const CandidateReport& c = result->candidates[i];
+    if (c.validated() && c.optimization.duration_s < best) {
+      best = c.optimization.duration_s;
+      result->chosen = i;
+    }
+  }
+  const std::int64_t first = first_success_ns.load();
+  if (first != std::numeric_limits<std::int64_t>::max()) {
+    const double first_ms = std::chrono::duration<double, std::milli>(Clock::duration(first)).count();
+    result->timings.optimization_ms = first_ms;
+    result->timings.wait_ms = MsBetween(t_begin, t_end) - first_ms;
+  } else {
+    result->timings.optimization_ms = MsBetween(t_begin, t_end);
+  }
+}
+
+}  // namespace topay

@@ -1,0 +1,64 @@
+#pragma once
+
+#include <optional>
+#include <stop_token>
+
+#include <Eigen/Geometry>
+
+#include "core/geometry/scene.h"
+#include "core/map/signed_distance_field2.h"
+#include "core/map/signed_distance_field3.h"
+#include "core/optimization/trajectory_optimizer.h"
+#include "core/planner/whole_body_plan_result.h"
+#include "core/planner/whole_body_planner_options.h"
+#include "core/planning/front_end.h"
+#include "core/robot/kinematics.h"
+#include "core/validate/trajectory_validator.h"
+
+namespace topay {
+
+/// TopAY (paper Sec. III): from a start state and an end-effector target to a validated
+/// whole-body trajectory.
+///  1. Front end (core/planning/front_end.h): whole-body paths in several homotopy classes.
+///  2. Back end: every path (up to max_candidates, shortest first) is optimized on its own
+///     worker (core/optimization); an optimizer success is then checked by the independent
+///     validator against the exact scene (core/validate). After the first validated success
+///     the others get early_termination_window_s, then they are cancelled; the shortest
+///     validated trajectory wins. options.sequential: one after another, no early stop.
+/// A success is only ever a trajectory the validator accepted.
+///
+/// The kinematics and the fields must outlive this object; the scene is copied (by the
+/// validator). Plan is const and may run from several threads.
+class WholeBodyPlanner {
+ public:
+  /// Throws std::invalid_argument for options out of range (naming them).
+  WholeBodyPlanner(const Kinematics& kinematics, const SignedDistanceField2& base_field,
+                   const SignedDistanceField3& arm_field, const Scene& scene,
+                   WholeBodyPlannerOptions options = {});
+
+  /// Never throws for bad input; failures come back with status and reason. `hint`: a
+  /// whole-body goal state tried first by the front end. `stop`: the caller's cancellation.
+  WholeBodyPlanResult Plan(const WholeBodyState& start, const Eigen::Isometry3d& X_WE_goal,
+                           const std::optional<WholeBodyState>& hint = std::nullopt,
+                           std::stop_token stop = {}) const;
+
+  const WholeBodyPlannerOptions& options() const { return options_; }
+  const BaseLimits& base_limits() const { return base_limits_; }
+  const FrontEnd& front_end() const { return front_end_; }
+  const TrajectoryValidator& validator() const { return validator_; }
+
+ private:
+  struct Stage;
+  void OptimizeCandidates(const WholeBodyState& start, const Eigen::Isometry3d& X_WE_goal,
+                          std::stop_token plan_stop, WholeBodyPlanResult* result) const;
+  void RunCandidate(const TrajectoryProblem& problem, const WholeBodyPath& path,
+                    std::stop_token stop, CandidateReport* report) const;
+
+  WholeBodyPlannerOptions options_;
+  BaseLimits base_limits_;
+  FrontEnd front_end_;
+  TrajectoryOptimizer optimizer_;
+  TrajectoryValidator validator_;
+};
+
+}  // namespace topay

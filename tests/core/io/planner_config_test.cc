@@ -1,0 +1,129 @@
+#include "core/io/planner_config.h"
+
+#include <cmath>
+#include <string>
+
+#include <gtest/gtest.h>
+
+#include "core/common/error.h"
+
+namespace topay {
+namespace {
+
+const std::string kShipped = TOPAY_SOURCE_DIR "/config/planner/topay.yaml";
+
+// The shipped file restates the defaults: loading it gives the struct defaults, field by field
+// for every field it names.
+TEST(PlannerConfigTest, ShippedFileLoadsAndRestatesTheDefaults) {
+  const WholeBodyPlannerOptions loaded = LoadPlannerOptions(kShipped);
+  const WholeBodyPlannerOptions d;
+  EXPECT_EQ(loaded.early_termination_window_s, d.early_termination_window_s);
+  EXPECT_EQ(loaded.sequential, d.sequential);
+  EXPECT_EQ(loaded.time_limit_s, d.time_limit_s);
+  EXPECT_EQ(loaded.max_candidates, d.max_candidates);
+  EXPECT_FALSE(loaded.base_limits.has_value());
+  const FrontEndOptions& f = loaded.front_end;
+  EXPECT_EQ(f.max_goal_attempts, d.front_end.max_goal_attempts);
+  EXPECT_EQ(f.fallback_base_clearance_m, d.front_end.fallback_base_clearance_m);
+  EXPECT_EQ(f.improvement_window_s, d.front_end.improvement_window_s);
+  EXPECT_EQ(f.acquisition_budget_s, d.front_end.acquisition_budget_s);
+  EXPECT_EQ(f.seed, d.front_end.seed);
+  EXPECT_EQ(f.goal.max_candidates, d.front_end.goal.max_candidates);
+  EXPECT_EQ(f.goal.clearance_weight, d.front_end.goal.clearance_weight);
+  EXPECT_EQ(f.ik.max_solutions, d.front_end.ik.max_solutions);
+  EXPECT_EQ(f.ik.time_budget_s, d.front_end.ik.time_budget_s);
+  EXPECT_EQ(f.ik.position_tolerance_m, d.front_end.ik.position_tolerance_m);
+  EXPECT_EQ(f.topology.mode, d.front_end.topology.mode);
+  EXPECT_EQ(f.topology.clearance_m, d.front_end.topology.clearance_m);
+  EXPECT_EQ(f.topology.prm.max_samples, d.front_end.topology.prm.max_samples);
+  EXPECT_EQ(f.topology.prm.max_time_s, d.front_end.topology.prm.max_time_s);
+  EXPECT_EQ(f.topology.prm.sample_half_width_m, d.front_end.topology.prm.sample_half_width_m);
+  EXPECT_EQ(f.topology.enumeration.max_raw_paths, d.front_end.topology.enumeration.max_raw_paths);
+  EXPECT_EQ(f.topology.enumeration.keep_fewest_hops,
+            d.front_end.topology.enumeration.keep_fewest_hops);
+  EXPECT_EQ(f.topology.pruning.max_paths, d.front_end.topology.pruning.max_paths);
+  EXPECT_EQ(f.topology.pruning.resolution_m, d.front_end.topology.pruning.resolution_m);
+  EXPECT_EQ(f.topology.shortcut.resample_step_m, d.front_end.topology.shortcut.resample_step_m);
+  EXPECT_EQ(f.topology.pruning.max_length_ratio, d.front_end.topology.pruning.max_length_ratio);
+  EXPECT_EQ(f.discretisation.delta_l_m, d.front_end.discretisation.delta_l_m);
+  EXPECT_DOUBLE_EQ(f.discretisation.max_turn_step_rad, d.front_end.discretisation.max_turn_step_rad);
+  EXPECT_EQ(f.rrt.time_budget_s, d.front_end.rrt.time_budget_s);
+  EXPECT_EQ(f.rrt.stop_at_first_solution, d.front_end.rrt.stop_at_first_solution);
+  EXPECT_EQ(f.rrt.goal_bias, d.front_end.rrt.goal_bias);
+  EXPECT_EQ(f.rrt.max_nodes, d.front_end.rrt.max_nodes);
+  EXPECT_EQ(f.validity.max_edge_step_m, d.front_end.validity.max_edge_step_m);
+  EXPECT_EQ(loaded.validator.sample_period_s, d.validator.sample_period_s);
+  EXPECT_EQ(loaded.validator.limit_tolerance, d.validator.limit_tolerance);
+  EXPECT_EQ(loaded.validator.ee_position_tolerance_m, d.validator.ee_position_tolerance_m);
+}
+
+TEST(PlannerConfigTest, FieldsOverrideDefaults) {
+  const WholeBodyPlannerOptions o = ParsePlannerOptions(R"(
+planner:
+  sequential: true
+  time_limit_s: .inf
+  base_limits: {omega_max_radps: 1.25}
+front_end:
+  seed: 42
+  topology: {mode: jps_only, prm: {max_samples: 100}}
+  rrt: {goal_bias: 0.25}
+validator: {sample_period_s: 0.005}
+)", "inline");
+  EXPECT_TRUE(o.sequential);
+  EXPECT_TRUE(std::isinf(o.time_limit_s));
+  ASSERT_TRUE(o.base_limits.has_value());
+  EXPECT_EQ(o.base_limits->omega_max_radps, 1.25);
+  EXPECT_EQ(o.base_limits->v_max_mps, BaseLimits{}.v_max_mps);
+  EXPECT_EQ(o.front_end.seed, 42u);
+  EXPECT_EQ(o.front_end.topology.mode, BasePathMode::kJpsOnly);
+  EXPECT_EQ(o.front_end.topology.prm.max_samples, 100);
+  EXPECT_EQ(o.front_end.rrt.goal_bias, 0.25);
+  EXPECT_EQ(o.validator.sample_period_s, 0.005);
+  // Untouched fields keep their defaults.
+  EXPECT_EQ(o.max_candidates, WholeBodyPlannerOptions{}.max_candidates);
+}
+
+// Each bad file names the file and the dotted field.
+TEST(PlannerConfigTest, BadValuesNameTheField) {
+  struct Case {
+    const char* yaml;
+    const char* field;
+  };
+  const Case cases[] = {
+      {"front_end: {rrt: {goal_bias: high}}", "front_end.rrt.goal_bias"},
+      {"front_end: {rrt: {goal_bais: 0.3}}", "front_end.rrt.goal_bais"},
+      {"front_end: {topology: {prm: {max_samples: 2.5}}}", "front_end.topology.prm.max_samples"},
+      {"front_end: {topology: {mode: fastest}}", "front_end.topology.mode"},
+      {"front_end: {seed: -3}", "front_end.seed"},
+      {"planner: {sequential: maybe}", "planner.sequential"},
+      {"planner: {time_limit_s: .nan}", "planner.time_limit_s"},
+      {"planner: {time_limit_s: [1, 2]}", "planner.time_limit_s"},
+      {"planner: {base_limits: {omega: 1}}", "planner.base_limits.omega"},
+      {"plnner: {}", "plnner"},
+      {"front_end: 3", "front_end"},
+  };
+  for (const Case& c : cases) {
+    try {
+      ParsePlannerOptions(c.yaml, "bad.yaml");
+      ADD_FAILURE() << "no error for: " << c.yaml;
+    } catch (const ConfigError& e) {
+      EXPECT_EQ(e.file(), "bad.yaml") << c.yaml;
+      EXPECT_EQ(e.field(), c.field) << c.yaml << " -> " << e.what();
+    }
+  }
+}
+
+TEST(PlannerConfigTest, RangeChecksAndFileErrorsAreConfigErrors) {
+  EXPECT_THROW(ParsePlannerOptions("planner: {max_candidates: 0}", "x.yaml"), ConfigError);
+  EXPECT_THROW(ParsePlannerOptions("front_end: {max_goal_attempts: 0}", "x.yaml"), ConfigError);
+  EXPECT_THROW(ParsePlannerOptions("planner: {max_candidates: [", "x.yaml"), ConfigError);
+  try {
+    LoadPlannerOptions("/nonexistent/planner.yaml");
+    FAIL() << "no error";
+  } catch (const ConfigError& e) {
+    EXPECT_EQ(e.file(), "/nonexistent/planner.yaml");
+  }
+}
+
+}  // namespace
+}  // namespace topay

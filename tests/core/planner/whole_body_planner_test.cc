@@ -1,0 +1,173 @@
+#include "core/planner/whole_body_planner.h"
+
+#include <cmath>
+#include <iostream>
+#include <limits>
+#include <stdexcept>
+#include <stop_token>
+#include <string>
+
+#include <gtest/gtest.h>
+
+#include "core/io/robot_loader.h"
+#include "core/map/scene_distance_fields.h"
+#include "core/planning/planner_fields.h"
+#include "core/robot/kinematics.h"
+#include "core/validate/arc_yaw_sampling.h"
+#include "tests/common/make_box.h"
+
+namespace topay {
+namespace {
+
+class WholeBodyPlannerTest : public ::testing::Test {
+ protected:
+  WholeBodyPlannerTest()
+      : model_(LoadRobotModel(TOPAY_SOURCE_DIR "/config/robot/topay_mm.urdf",
+                              TOPAY_SOURCE_DIR "/config/robot/topay_mm.yaml")),
+        kinematics_(model_),
+        scene_(PillarRoom()),
+        fields_(BuildSceneDistanceFields(scene_, PlannerFieldOptions(kinematics_))) {}
+
+  // A 10 x 10 m room with one pillar between start and goal, and a floating box.
+  static Scene PillarRoom() {
+    Scene scene;
+    scene.kind = "planner test";
+    scene.bounds_W_m = Eigen::AlignedBox3d(Eigen::Vector3d(-5, -5, 0), Eigen::Vector3d(5, 5, 1.6));
+    scene.boxes.push_back(MakeBox(Eigen::Vector3d(0, 0, 0.75), Eigen::Vector3d(1.0, 1.0, 1.5)));
+    scene.boxes.push_back(MakeBox(Eigen::Vector3d(-1.5, 2.5, 1.2), Eigen::Vector3d(0.5, 0.5, 0.4)));
+    return scene;
+  }
+
+  WholeBodyState State(double x, double y, double yaw) const {
+    WholeBodyState state;
+    state.x_m = x;
+    state.y_m = y;
+    state.yaw_rad = yaw;
+    state.q_rad.resize(model_.num_joints());
+    state.q_rad << 0.3, 0.8, 0.1, 1.2, 0.2, 0.6, 0.1;
+    return state;
+  }
+
+  static WholeBodyPlannerOptions Options() {
+    WholeBodyPlannerOptions options;
+    BaseLimits limits;
+    limits.omega_max_radps = 1.25;  // the paper's simulation benchmark
+    options.base_limits = limits;
+    options.time_limit_s = 20.0;  // generous: the tests run in parallel on loaded cores
+    options.optimizer.time_limit_s = 10.0;
+    options.front_end.acquisition_budget_s = 5.0;
+    return options;
+  }
+
+  RobotModel model_;
+  Kinematics kinematics_;
+  Scene scene_;
+  SceneDistanceFields fields_;
+};
+
+TEST_F(WholeBodyPlannerTest, PlansAValidatedTrajectoryAroundThePillar) {
+  const WholeBodyPlanner planner(kinematics_, fields_.base_field_2d, fields_.field_3d, scene_,
+                                 Options());
+  const WholeBodyState start = State(-3.0, 0.0, 0.0);
+  const WholeBodyState goal = State(3.0, 0.5, 1.0);
+  const Eigen::Isometry3d X_WE = kinematics_.EndEffectorPose(goal);
+  const WholeBodyPlanResult result = planner.Plan(start, X_WE, goal);
+  std::cout << result.Report();
+  ASSERT_TRUE(result.success()) << result.Report();
+  ASSERT_TRUE(result.trajectory.has_value());
+  ASSERT_GE(result.chosen, 0);
+  EXPECT_TRUE(result.failure_reason.empty());
+
+  // Checked again here by a validator of our own (exact boxes, 10 ms, limits + 1 %).
+  BaseLimits limits = *Options().base_limits;
+  const TrajectoryValidator validator(kinematics_, scene_, limits);
+  const ValidationReport check = validator.Validate(SampleArcYaw(*result.trajectory), start, X_WE);
+  EXPECT_TRUE(check.ok) << check.Report();
+  EXPECT_LE(check.end_position_error_m, 0.01);
+  EXPECT_LE(check.end_orientation_error_rad, 0.02);
+  EXPECT_GT(check.min_obstacle.clearance_m, 0.0);
+  // The chosen trajectory is the shortest validated one.
+  for (const CandidateReport& c : result.candidates) {
+    if (c.validated()) {
+      EXPECT_LE(result.candidates[result.chosen].optimization.duration_s,
+                c.optimization.duration_s);
+    }
+  }
+  EXPECT_NEAR(result.trajectory->duration_s(),
+              result.candidates[result.chosen].optimization.duration_s, 1e-9);
+  EXPECT_GT(result.timings.total_ms, 0.0);
+  EXPECT_GE(result.timings.total_ms, result.timings.front_end_ms);
+}
+
+TEST_F(WholeBodyPlannerTest, SequentialModeRunsEveryCandidate) {
+  WholeBodyPlannerOptions options = Options();
+  options.sequential = true;
+  const WholeBodyPlanner planner(kinematics_, fields_.base_field_2d, fields_.field_3d, scene_,
+                                 options);
+  const WholeBodyState start = State(-3.0, 0.0, 0.0);
+  const WholeBodyState goal = State(3.0, 0.5, 1.0);
+  const WholeBodyPlanResult result =
+      planner.Plan(start, kinematics_.EndEffectorPose(goal), goal);
+  ASSERT_TRUE(result.success()) << result.Report();
+  ASSERT_EQ(result.candidates.size(),
+            std::min<std::size_t>(options.max_candidates, result.front_end.paths.size()));
+  for (const CandidateReport& c : result.candidates) EXPECT_TRUE(c.started);
+  EXPECT_EQ(result.timings.wait_ms >= 0.0, true);
+}
+
+TEST_F(WholeBodyPlannerTest, BadInputAndUnreachableTargetsFailWithAReason) {
+  const WholeBodyPlanner planner(kinematics_, fields_.base_field_2d, fields_.field_3d, scene_,
+                                 Options());
+  const WholeBodyState start = State(-3.0, 0.0, 0.0);
+  const WholeBodyState goal = State(3.0, 0.5, 1.0);
+  const Eigen::Isometry3d X_WE = kinematics_.EndEffectorPose(goal);
+
+  WholeBodyState nan_start = start;
+  nan_start.q_rad(3) = std::numeric_limits<double>::quiet_NaN();
+  const WholeBodyPlanResult nan_result = planner.Plan(nan_start, X_WE);
+  EXPECT_EQ(nan_result.status, PlanStatus::kInvalidInput) << nan_result.Report();
+  EXPECT_NE(nan_result.failure_reason.find("start"), std::string::npos) << nan_result.failure_reason;
+  EXPECT_FALSE(nan_result.trajectory.has_value());
+
+  Eigen::Isometry3d high = X_WE;
+  high.translation().z() = 3.0;  // out of the arm's reach
+  const WholeBodyPlanResult unreachable = planner.Plan(start, high);
+  EXPECT_EQ(unreachable.status, PlanStatus::kFrontEndFailed) << unreachable.Report();
+  EXPECT_FALSE(unreachable.failure_reason.empty());
+
+  Eigen::Isometry3d inside = X_WE;
+  inside.translation() << 0.0, 0.0, 0.8;  // inside the pillar
+  const WholeBodyPlanResult blocked = planner.Plan(start, inside);
+  EXPECT_EQ(blocked.status, PlanStatus::kFrontEndFailed) << blocked.Report();
+}
+
+TEST_F(WholeBodyPlannerTest, StopBeforeTheStartCancels) {
+  const WholeBodyPlanner planner(kinematics_, fields_.base_field_2d, fields_.field_3d, scene_,
+                                 Options());
+  const WholeBodyState start = State(-3.0, 0.0, 0.0);
+  const WholeBodyState goal = State(3.0, 0.5, 1.0);
+  std::stop_source stop;
+  stop.request_stop();
+  const WholeBodyPlanResult result =
+      planner.Plan(start, kinematics_.EndEffectorPose(goal), goal, stop.get_token());
+  EXPECT_EQ(result.status, PlanStatus::kCancelled) << result.Report();
+  EXPECT_FALSE(result.trajectory.has_value());
+}
+
+TEST_F(WholeBodyPlannerTest, RejectsBadOptionsByName) {
+  WholeBodyPlannerOptions options = Options();
+  options.max_candidates = 0;
+  try {
+    WholeBodyPlanner planner(kinematics_, fields_.base_field_2d, fields_.field_3d, scene_, options);
+    FAIL() << "no exception";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("max_candidates"), std::string::npos) << e.what();
+  }
+  options = Options();
+  options.time_limit_s = 0.0;
+  EXPECT_THROW(WholeBodyPlanner(kinematics_, fields_.base_field_2d, fields_.field_3d, scene_, options),
+               std::invalid_argument);
+}
+
+}  // namespace
+}  // namespace topay
