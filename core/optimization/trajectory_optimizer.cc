@@ -10,6 +10,9 @@
 #include <string>
 #include <vector>
 
+#include "core/optimization/flatness_optimizer.h"
+#include "core/validate/arc_yaw_sampling.h"
+
 namespace topay {
 namespace {
 
@@ -93,6 +96,50 @@ void EscalateViolatedPenalties(const FieldFeasibilityReport& report,
   }
 }
 
+/// The flatness baseline's options from the driver's (the shared parts; its own sampling and
+/// minimum-speed defaults stay).
+FlatnessOptimizerOptions FlatnessOptionsFrom(const TrajectoryOptimizerOptions& o) {
+  FlatnessOptimizerOptions f;
+  f.objective.jerk_weights = o.objective.jerk_weights;
+  f.objective.time_weight = o.objective.time_weight;
+  f.objective.penalties = o.objective.penalties;
+  f.warm_start = o.warm_start;
+  f.lbfgs = o.lbfgs;
+  f.alm_rho_initial = o.alm_rho_initial;
+  f.alm_rho_growth = o.alm_rho_growth;
+  f.alm_rho_max = o.alm_rho_max;
+  f.alm_max_outer_iterations = o.alm_max_outer_iterations;
+  f.alm_position_tolerance_m = o.alm_position_tolerance_m;
+  f.alm_orientation_tolerance_rad = o.alm_orientation_tolerance_rad;
+  f.ee_position_tolerance_m = o.ee_position_tolerance_m;
+  f.ee_orientation_tolerance_rad = o.ee_orientation_tolerance_rad;
+  f.check_period_s = o.feasibility.sample_period_s;
+  f.time_limit_s = o.time_limit_s;
+  return f;
+}
+
+void CopyFlatnessSummary(const FlatnessOptimizerSummary& f, TrajectoryOptimizerSummary* s) {
+  s->parameterisation = TrajectoryParameterisation::kFlatness;
+  s->status = f.status;
+  s->reason = f.reason;
+  s->num_pieces = f.num_pieces;
+  s->flatness = f.trajectory;
+  s->durations_s = f.trajectory.durations_s;
+  s->duration_s = f.duration_s;
+  s->ee_position_error_m = f.ee_position_error_m;
+  s->ee_orientation_error_rad = f.ee_orientation_error_rad;
+  s->outer_iterations = f.outer_iterations;
+  s->stage2_iterations = f.iterations;
+  s->objective_evaluations = f.objective_evaluations;
+  s->total_s = f.total_s;
+  s->stage2_s = f.total_s;
+  s->final_cost.jerk = f.final_cost.jerk;
+  s->final_cost.time = f.final_cost.time;
+  s->final_cost.end_effector = f.final_cost.end_effector;
+  s->final_cost.penalties = f.final_cost.penalties;
+  s->final_cost.total = f.final_cost.total;
+}
+
 }  // namespace
 
 void CheckTrajectoryOptimizerOptions(const TrajectoryOptimizerOptions& o) {
@@ -135,11 +182,34 @@ ArcYawTrajectory TrajectoryOptimizerSummary::MakeTrajectory() const {
     throw std::invalid_argument("TrajectoryOptimizerSummary::MakeTrajectory: no trajectory (" +
                                 reason + ")");
   }
+  if (parameterisation != TrajectoryParameterisation::kArcLengthYaw) {
+    throw std::invalid_argument(
+        "TrajectoryOptimizerSummary::MakeTrajectory: a flatness trajectory (use Sampled())");
+  }
   ArcYawTrajectory::Options options;
   options.integrator.panels_per_piece = panels_per_piece;
   ArcYawTrajectory trajectory(static_cast<int>(head.rows()) - 2, num_pieces, options);
   trajectory.Update(p0_W, head, tail, waypoints, durations_s);
   return trajectory;
+}
+
+SampledTrajectory TrajectoryOptimizerSummary::Sampled() const {
+  if (parameterisation == TrajectoryParameterisation::kFlatness) {
+    if (num_pieces <= 0) {
+      throw std::invalid_argument("TrajectoryOptimizerSummary::Sampled: no trajectory (" +
+                                  reason + ")");
+    }
+    return SampleFlatness(flatness);
+  }
+  // SampleArcYaw holds the trajectory by reference: keep it alive with the samplers.
+  const auto trajectory = std::make_shared<const ArcYawTrajectory>(MakeTrajectory());
+  SampledTrajectory sampled = SampleArcYaw(*trajectory);
+  sampled.make_sampler = [trajectory, make = std::move(sampled.make_sampler)]() {
+    TrajectorySampler sampler = make();
+    return TrajectorySampler([trajectory, sampler = std::move(sampler)](
+                                 double t_s, TrajectorySample* sample) { sampler(t_s, sample); });
+  };
+  return sampled;
 }
 
 std::string TrajectoryOptimizerSummary::Report() const {
@@ -276,6 +346,17 @@ TrajectoryOptimizerSummary TrajectoryOptimizer::Optimize(const TrajectoryProblem
   if (stop.stop_requested()) return fail(TrajectoryOptimizerStatus::kCancelled, "cancelled");
   const std::string problem_error = CheckProblem(problem);
   if (!problem_error.empty()) return fail(TrajectoryOptimizerStatus::kInvalidInput, problem_error);
+  if (options_.parameterisation == TrajectoryParameterisation::kFlatness) {
+    try {
+      const FlatnessOptimizer flatness(kinematics_, base_field_, arm_field_,
+                                       FlatnessOptionsFrom(options_));
+      CopyFlatnessSummary(flatness.Optimize(problem, initial_path, stop), &summary);
+    } catch (const std::invalid_argument& e) {  // options the baseline cannot take
+      return fail(TrajectoryOptimizerStatus::kInvalidInput, std::string("flatness: ") + e.what());
+    }
+    summary.total_s = SecondsSince(run.begin);
+    return summary;
+  }
   try {
     run.warm = MakeWarmStart(initial_path, problem.start, problem.base_limits,
                              kinematics_.model().joint_limits, options_.objective.panels_per_piece,

@@ -10,6 +10,7 @@
 #include "core/map/signed_distance_field2.h"
 #include "core/map/signed_distance_field3.h"
 #include "core/optimization/field_feasibility.h"
+#include "core/optimization/flatness_trajectory.h"
 #include "core/optimization/lbfgs_solve.h"
 #include "core/optimization/trajectory_objective.h"
 #include "core/optimization/warm_start.h"
@@ -18,8 +19,13 @@
 #include "core/robot/robot_model.h"
 #include "core/robot/whole_body_state.h"
 #include "core/trajectory/arc_yaw_trajectory.h"
+#include "core/validate/trajectory_sample.h"
 
 namespace topay {
+
+/// Which trajectory the optimizer builds: TopAY's arc length-yaw MINCO (the default), or the
+/// REMANI-style flatness baseline (x, y, q as MINCO, yaw = atan2(dy, dx); flatness_optimizer.h).
+enum class TrajectoryParameterisation { kArcLengthYaw, kFlatness };
 
 /// Options of TrajectoryOptimizer, Ceres style. Defaults: the facts sheet's "Trajectory
 /// optimizer figures"; departures are stated field by field.
@@ -73,6 +79,13 @@ struct TrajectoryOptimizerOptions {
   /// reference code. 2 s is above the p95 of every benchmark cell on the 2-core VM (1.85 s
   /// for large Tables tasks, Release, one thread; docs/benchmarks.md).
   double time_limit_s = 2.0;
+
+  /// kFlatness runs FlatnessOptimizer instead (same problem, path and statuses): it takes
+  /// from these options the warm start, L-BFGS, ALM, tolerances, time limit, penalty
+  /// options, jerk and time weights, and keeps its own sampling (16 trapezoid panels per
+  /// piece, dense at the stops) and minimum-speed defaults. Its summary has no arc
+  /// length-yaw data: use Sampled(), not MakeTrajectory().
+  TrajectoryParameterisation parameterisation = TrajectoryParameterisation::kArcLengthYaw;
 };
 
 /// Throws std::invalid_argument naming the first option out of range (the L-BFGS options
@@ -133,11 +146,20 @@ struct TrajectoryOptimizerSummary {
   double check_s = 0.0;   ///< The field checks (CheckFeasibilityOnFields) alone.
   double total_s = 0.0;
 
+  /// Which trajectory the data describe: kArcLengthYaw (head, tail, waypoints, p0_W above)
+  /// or kFlatness (`flatness`; durations_s and duration_s are filled in both cases).
+  TrajectoryParameterisation parameterisation = TrajectoryParameterisation::kArcLengthYaw;
+  FlatnessTrajectoryData flatness;
+
   bool success() const { return status == TrajectoryOptimizerStatus::kSuccess; }
   int inner_iterations() const { return stage1_iterations + stage2_iterations; }
 
-  /// Rebuilds the trajectory (allocates). Throws std::invalid_argument if num_pieces == 0.
+  /// Rebuilds the arc length-yaw trajectory (allocates). Throws std::invalid_argument if
+  /// num_pieces == 0 or the parameterisation is kFlatness.
   ArcYawTrajectory MakeTrajectory() const;
+  /// The trajectory for TrajectoryValidator, either parameterisation (holds what it needs by
+  /// value). Throws std::invalid_argument if num_pieces == 0.
+  SampledTrajectory Sampled() const;
 
   /// A readable multi-line report.
   std::string Report() const;

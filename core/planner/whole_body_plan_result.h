@@ -8,6 +8,7 @@
 #include "core/optimization/trajectory_optimizer.h"
 #include "core/planning/front_end_result.h"
 #include "core/trajectory/arc_yaw_trajectory.h"
+#include "core/validate/trajectory_sample.h"
 #include "core/validate/validation_report.h"
 
 namespace topay {
@@ -52,7 +53,11 @@ struct WholeBodyPlanResult {
   FrontEndResult front_end;
   std::vector<CandidateReport> candidates;  ///< In front-end path order.
   int chosen = -1;  ///< Into candidates: the shortest validated trajectory (-1: none).
-  std::optional<ArcYawTrajectory> trajectory;  ///< The chosen one, rebuilt.
+  /// The chosen trajectory, rebuilt (arc length-yaw parameterisation only).
+  std::optional<ArcYawTrajectory> trajectory;
+  /// The chosen trajectory as samples, for either parameterisation (the flatness baseline
+  /// too): what the validator checked.
+  std::optional<SampledTrajectory> sampled;
   PlanTimings timings;
 
   bool success() const { return status == PlanStatus::kSuccess; }

@@ -11,7 +11,6 @@
 #include <vector>
 
 #include "core/planning/stop_deadline.h"
-#include "core/validate/arc_yaw_sampling.h"
 
 namespace topay {
 namespace {
@@ -130,7 +129,11 @@ WholeBodyPlanResult WholeBodyPlanner::Plan(const WholeBodyState& start,
   }
   if (result.chosen >= 0) {
     result.status = PlanStatus::kSuccess;
-    result.trajectory.emplace(result.candidates[result.chosen].optimization.MakeTrajectory());
+    const TrajectoryOptimizerSummary& chosen = result.candidates[result.chosen].optimization;
+    result.sampled = chosen.Sampled();
+    if (chosen.parameterisation == TrajectoryParameterisation::kArcLengthYaw) {
+      result.trajectory.emplace(chosen.MakeTrajectory());
+    }
     return result;
   }
   result.status = stop.stop_requested() ? PlanStatus::kCancelled
@@ -148,9 +151,8 @@ void WholeBodyPlanner::RunCandidate(const TrajectoryProblem& problem, const Whol
   report->started = true;
   report->optimization = optimizer_.Optimize(problem, path, stop);
   if (report->optimization.success()) {
-    try {
-      const ArcYawTrajectory trajectory = report->optimization.MakeTrajectory();
-      report->validation = validator_.Validate(SampleArcYaw(trajectory), problem.start,
+    try {  // either parameterisation (arc length-yaw, or the flatness baseline)
+      report->validation = validator_.Validate(report->optimization.Sampled(), problem.start,
                                                problem.X_WE_goal);
     } catch (const std::exception& e) {  // a malformed summary counts as a failure
       ValidationReport failed;

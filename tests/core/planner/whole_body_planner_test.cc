@@ -93,6 +93,8 @@ TEST_F(WholeBodyPlannerTest, PlansAValidatedTrajectoryAroundThePillar) {
                 c.optimization.duration_s);
     }
   }
+  ASSERT_TRUE(result.sampled.has_value());
+  EXPECT_NEAR(result.sampled->duration_s, result.trajectory->duration_s(), 1e-9);
   EXPECT_NEAR(result.trajectory->duration_s(),
               result.candidates[result.chosen].optimization.duration_s, 1e-9);
   EXPECT_GT(result.timings.total_ms, 0.0);
@@ -113,6 +115,31 @@ TEST_F(WholeBodyPlannerTest, SequentialModeRunsEveryCandidate) {
             std::min<std::size_t>(options.max_candidates, result.front_end.paths.size()));
   for (const CandidateReport& c : result.candidates) EXPECT_TRUE(c.started);
   EXPECT_EQ(result.timings.wait_ms >= 0.0, true);
+}
+
+// The flatness baseline behind the same planner: it may fail (it is a baseline), but cleanly,
+// and anything it reports as a success passed the validator.
+TEST_F(WholeBodyPlannerTest, FlatnessBaselineRunsBehindTheSamePlanner) {
+  WholeBodyPlannerOptions options = Options();
+  options.optimizer.parameterisation = TrajectoryParameterisation::kFlatness;
+  const WholeBodyPlanner planner(kinematics_, fields_.base_field_2d, fields_.field_3d, scene_,
+                                 options);
+  const WholeBodyState start = State(-3.0, 0.0, 0.0);
+  const WholeBodyState goal = State(3.0, 0.5, 1.0);
+  const Eigen::Isometry3d X_WE = kinematics_.EndEffectorPose(goal);
+  const WholeBodyPlanResult result = planner.Plan(start, X_WE, goal);
+  std::cout << result.Report();
+  EXPECT_TRUE(result.status == PlanStatus::kSuccess ||
+              result.status == PlanStatus::kOptimizationFailed)
+      << result.Report();
+  EXPECT_FALSE(result.trajectory.has_value());  // not an arc length-yaw trajectory
+  if (result.success()) {
+    ASSERT_TRUE(result.sampled.has_value());
+    const TrajectoryValidator validator(kinematics_, scene_, *Options().base_limits);
+    EXPECT_TRUE(validator.Validate(*result.sampled, start, X_WE).ok);
+  } else {
+    EXPECT_FALSE(result.failure_reason.empty());
+  }
 }
 
 TEST_F(WholeBodyPlannerTest, BadInputAndUnreachableTargetsFailWithAReason) {

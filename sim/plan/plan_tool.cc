@@ -1,0 +1,200 @@
+#include "sim/plan/plan_tool.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <sstream>
+#include <thread>
+
+#include "core/io/robot_loader.h"
+#include "core/map/scene_distance_fields.h"
+#include "core/planner/whole_body_planner.h"
+#include "core/planning/planner_fields.h"
+#include "core/robot/kinematics.h"
+#include "sim/plan/candidate_table.h"
+#include "sim/plan/plan_query.h"
+#include "sim/plan/trajectory_json.h"
+#include "sim/viz/png_io.h"
+#include "sim/viz/time_plot.h"
+#include "sim/viz/trajectory_view.h"
+
+namespace topay::plan {
+namespace {
+
+double MillisecondsSince(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
+      .count();
+}
+
+WholeBodyPlannerOptions PlannerOptions(const PlanToolOptions& o, const BaseLimits& limits) {
+  WholeBodyPlannerOptions options;
+  options.base_limits = limits;
+  options.num_threads = o.num_threads;
+  options.front_end.num_threads = o.num_threads;
+  options.time_limit_s = o.time_limit_s;
+  options.sequential = o.sequential;
+  if (o.optimizer_time_limit_s >= 0.0) options.optimizer.time_limit_s = o.optimizer_time_limit_s;
+  if (o.acquisition_budget_s >= 0.0) {
+    options.front_end.acquisition_budget_s = o.acquisition_budget_s;
+  }
+  return options;
+}
+
+void FillInputs(const PlanToolOptions& o, const PlanQuery& q, PlanToolSummary* s) {
+  s->scene_kind = q.scene.kind;
+  s->scene_seed = q.scene.seed;
+  s->scene_source = q.scene_source;
+  s->num_boxes = static_cast<int>(q.scene.boxes.size());
+  s->scene_size_m = q.scene.bounds_W_m.sizes();
+  s->task_source = q.task_source;
+  s->task_range = q.task_range;
+  s->task_seed = q.task_seed;
+  if (q.goal_state) {
+    s->base_distance_m =
+        std::hypot(q.goal_state->x_m - q.start.x_m, q.goal_state->y_m - q.start.y_m);
+  }
+  s->start = q.start;
+  s->X_WE_goal = q.X_WE_goal;
+  s->used_goal_hint = o.use_goal_hint && q.goal_state.has_value();
+  s->sequential = o.sequential;
+  s->time_limit_s = o.time_limit_s;
+  s->num_threads = o.num_threads > 0
+                       ? o.num_threads
+                       : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+}
+
+TrajectoryMetadata MetadataOf(const PlanToolOptions& o, const PlanToolSummary& s) {
+  TrajectoryMetadata m;
+  m.scene_kind = s.scene_kind;
+  m.scene_seed = s.scene_seed;
+  m.scene_file = o.scene_file;
+  m.num_boxes = s.num_boxes;
+  m.task_source =
+      s.task_source == "generated" || s.task_source == "command line" ? s.task_source : "task file";
+  m.task_file = o.task_file;
+  m.task_range = s.task_range;
+  m.task_seed = s.task_seed;
+  m.start = s.start;
+  m.X_WE_goal = s.X_WE_goal;
+  m.base_limits_source = std::string(BaseLimitChoiceName(s.limit_choice));
+  m.base_limits = s.base_limits;
+  m.status = std::string(ToString(s.plan.status));
+  m.failure_reason = s.plan.failure_reason;
+  m.timings = s.plan.timings;
+  m.map_build_ms = s.map_build_ms;
+  if (const CandidateReport* c = s.plan.chosen_candidate(); c != nullptr && c->validation) {
+    m.validation = FiguresOf(*c->validation);
+  }
+  return m;
+}
+
+void WriteJson(const PlanToolOptions& o, PlanToolSummary* s) {
+  TrajectoryFile file;
+  file.metadata = MetadataOf(o, *s);
+  file.sample_period_s = o.sample_period_s;
+  if (s->plan.trajectory) {
+    file.pieces = PiecesOf(*s->plan.trajectory);
+    file.samples = SampleTrajectory(*s->plan.trajectory, o.sample_period_s);
+  }
+  WriteTrajectoryJson(o.trajectory_json_out, file);
+  s->trajectory_json = o.trajectory_json_out;
+  s->num_samples = static_cast<int>(file.samples.size());
+}
+
+std::string SceneTitle(const PlanToolSummary& s) {
+  std::ostringstream out;
+  out << (s.scene_kind.empty() ? "scene" : s.scene_kind) << " seed " << s.scene_seed << ", "
+      << s.num_boxes << " boxes";
+  return out.str();
+}
+
+std::string PlanTitle(const PlanToolSummary& s) {
+  std::ostringstream out;
+  out.setf(std::ios::fixed);
+  out.precision(1);
+  out << (s.task_range.empty() ? "" : s.task_range + " ") << "task (" << s.task_source << "): ";
+  if (s.plan.trajectory) {
+    out << "trajectory " << s.plan.trajectory->duration_s() << " s, planned in "
+        << s.plan.timings.total_ms << " ms";
+  } else {
+    out << "plan failed (" << ToString(s.plan.status) << ")";
+  }
+  return out.str();
+}
+
+void WritePathPng(const PlanToolOptions& o, const PlanQuery& q, const SceneDistanceFields& fields,
+                  const Kinematics& kinematics, PlanToolSummary* s) {
+  viz::TrajectoryView view;
+  view.scene = &q.scene;
+  view.base_field = &fields.base_field_2d;
+  view.kinematics = &kinematics;
+  view.start = q.start;
+  view.X_WE_goal = q.X_WE_goal;
+  view.trajectory = s->plan.trajectory ? &*s->plan.trajectory : nullptr;
+  view.title_lines = {SceneTitle(*s), PlanTitle(*s)};
+  viz::TrajectoryViewOptions options;
+  options.scene.px_per_m = o.px_per_m;
+  options.trajectory.footprint_interval_s = o.footprint_interval_s;
+  const viz::Image image = viz::RenderTrajectoryView(view, options);
+  viz::WritePng(image, o.path_png_out);
+  s->path_png = o.path_png_out;
+  s->path_png_width_px = image.width();
+  s->path_png_height_px = image.height();
+}
+
+void WriteTimePng(const PlanToolOptions& o, const Kinematics& kinematics, PlanToolSummary* s) {
+  if (!s->plan.trajectory) {
+    s->time_png_skipped = "no trajectory to plot";
+    return;
+  }
+  viz::TimePlotLimits limits;
+  limits.base = s->base_limits;
+  limits.q_min_rad = kinematics.model().joint_limits.q_min_rad;
+  limits.q_max_rad = kinematics.model().joint_limits.q_max_rad;
+  viz::TimePlotOptions options;
+  options.title = SceneTitle(*s) + "\n" + PlanTitle(*s);
+  const viz::Image image = viz::RenderTimePlots(
+      viz::SampleTimePlotData(*s->plan.trajectory, o.sample_period_s), limits, options);
+  viz::WritePng(image, o.time_png_out);
+  s->time_png = o.time_png_out;
+  s->time_png_width_px = image.width();
+  s->time_png_height_px = image.height();
+}
+
+}  // namespace
+
+PlanToolSummary RunPlanTool(const PlanToolOptions& options) {
+  CheckPlanToolOptions(options);
+  CheckOutputFolders(options);
+  const RobotModel model = LoadRobotModel(options.robot_urdf, options.robot_yaml);
+  const Kinematics kinematics(model);
+  const PlanQuery query = ResolvePlanQuery(options, kinematics);
+
+  PlanToolSummary summary;
+  FillInputs(options, query, &summary);
+  summary.limit_choice = *ParseBaseLimitChoice(options.base_limits);
+  summary.base_limits = ChooseBaseLimits(summary.limit_choice, model);
+
+  const SceneDistanceFieldsOptions field_options = PlannerFieldOptions(kinematics);
+  const auto map_start = std::chrono::steady_clock::now();
+  const SceneDistanceFields fields = BuildSceneDistanceFields(query.scene, field_options);
+  summary.map_build_ms = MillisecondsSince(map_start);
+  summary.arm_field_resolution_m = field_options.resolution_m;
+  summary.base_field_resolution_m = field_options.base_resolution_m > 0.0
+                                        ? field_options.base_resolution_m
+                                        : field_options.resolution_m;
+  summary.arm_field_cells = fields.field_3d.geometry().dims;
+
+  const WholeBodyPlanner planner(kinematics, fields.base_field_2d, fields.field_3d, query.scene,
+                                 PlannerOptions(options, summary.base_limits));
+  summary.plan = planner.Plan(query.start, query.X_WE_goal,
+                              summary.used_goal_hint ? query.goal_state : std::nullopt);
+  summary.candidates = CandidateRows(summary.plan);
+
+  if (!options.trajectory_json_out.empty()) WriteJson(options, &summary);
+  if (!options.path_png_out.empty()) WritePathPng(options, query, fields, kinematics, &summary);
+  if (!options.time_png_out.empty()) WriteTimePng(options, kinematics, &summary);
+  return summary;
+}
+
+}  // namespace topay::plan

@@ -1,0 +1,103 @@
+// topay-plan: one planning query on a scene (generated or from a JSON file) and a task
+// (generated, from a JSON file, or a start state and an end-effector target given here).
+// Prints a summary, writes the trajectory JSON and PNG plots. Logic: sim/plan/plan_tool.h.
+// Exit codes: 0 a validated trajectory, 1 an error (file, output), 2 a usage error, 3 the
+// planner found no validated trajectory (the reason is printed).
+#include <CLI/CLI.hpp>
+#include <cstdlib>
+#include <exception>
+#include <iostream>
+#include <string>
+
+#include "sim/plan/plan_tool.h"
+#include "sim/plan/usage_error.h"
+
+namespace {
+
+// The robot config folder: $TOPAY_CONFIG_DIR if set, else the repository's (compiled in).
+std::string ConfigDir() {
+  const char* from_env = std::getenv("TOPAY_CONFIG_DIR");
+  return from_env != nullptr && *from_env != '\0' ? from_env : TOPAY_CONFIG_DIR;
+}
+
+void AddInputOptions(CLI::App* app, topay::plan::PlanToolOptions* o) {
+  auto* kind = app->add_option("--scene", o->scene_kind, "Generate a scene: cuboids | tables");
+  auto* file = app->add_option("--scene-file", o->scene_file, "Load a scene JSON instead");
+  kind->excludes(file);
+  app->add_option("--seed", o->seed, "Seed of the generated scene and task")->capture_default_str();
+  auto* range = app->add_option("--range", o->range, "Generate a task: small | medium | large");
+  auto* task = app->add_option("--task-file", o->task_file, "Load a task JSON instead");
+  range->excludes(task);
+  app->add_option("--start", o->start, "Start state: X Y YAW Q1..QN (m, rad)")
+      ->expected(1, 64)
+      ->allow_extra_args(false);
+  auto* rpy = app->add_option("--target", o->target_rpy,
+                              "End-effector target: X Y Z ROLL PITCH YAW (m, rad; fixed axes, "
+                              "R = Rz(yaw) Ry(pitch) Rx(roll))")
+                  ->expected(1, 16)
+                  ->allow_extra_args(false);
+  auto* quat = app->add_option("--target-quat", o->target_quaternion,
+                               "End-effector target: X Y Z QW QX QY QZ (m; unit quaternion)")
+                   ->expected(1, 16)
+                   ->allow_extra_args(false);
+  rpy->excludes(quat);
+  app->add_flag("--use-goal-hint", o->use_goal_hint,
+                "Give a generated or loaded task's goal state to the planner as a hint");
+}
+
+void AddPlanAndOutputOptions(CLI::App* app, topay::plan::PlanToolOptions* o) {
+  app->add_option("--json", o->trajectory_json_out, "Write the trajectory JSON here");
+  app->add_option("--png", o->path_png_out, "Write the top-down path PNG here");
+  app->add_option("--time-png", o->time_png_out, "Write the time plots PNG here");
+  app->add_option("--threads", o->num_threads, "Front-end and optimization workers (0: all cores)")
+      ->capture_default_str();
+  app->add_option("--time-limit", o->time_limit_s, "Bound on the plan (s)")->capture_default_str();
+  app->add_flag("--sequential", o->sequential, "Optimize candidates one after another");
+  app->add_option("--optimizer-time-limit", o->optimizer_time_limit_s,
+                  "Bound on one candidate's optimization (s; default: the planner's, 1 s)");
+  app->add_option("--acquisition-budget", o->acquisition_budget_s,
+                  "Bound on the front end's arm search (s; default: the planner's, 0.5 s)");
+  app->add_option("--base-limits", o->base_limits,
+                  "Base limits: benchmark (paper's simulation, omega_max 1.25) | robot (config)")
+      ->capture_default_str();
+  app->add_option("--px-per-m", o->px_per_m, "Top-down PNG scale")->capture_default_str();
+  app->add_option("--footprint-interval", o->footprint_interval_s,
+                  "Time between drawn footprints (s)")
+      ->capture_default_str();
+  app->add_option("--sample-period", o->sample_period_s, "JSON and plot sample period (s)")
+      ->capture_default_str();
+  const std::string config = ConfigDir();
+  o->robot_urdf = config + "/robot/topay_mm.urdf";
+  o->robot_yaml = config + "/robot/topay_mm.yaml";
+  app->add_option("--robot", o->robot_urdf, "Robot URDF")->capture_default_str();
+  app->add_option("--robot-config", o->robot_yaml, "Robot YAML")->capture_default_str();
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  namespace plan = topay::plan;
+  CLI::App app{"Plan one TopAY whole-body query and write its summary, trajectory and plots."};
+  plan::PlanToolOptions options;
+  AddInputOptions(&app, &options);
+  AddPlanAndOutputOptions(&app, &options);
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::CallForHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::ParseError& e) {
+    std::cerr << "topay-plan: " << e.what() << "\n(run with --help for usage)\n";
+    return plan::kExitUsage;
+  }
+  try {
+    const plan::PlanToolSummary summary = plan::RunPlanTool(options);
+    std::cout << summary.Report();
+    return summary.ExitCode();
+  } catch (const plan::UsageError& e) {
+    std::cerr << "topay-plan: " << e.what() << "\n(run with --help for usage)\n";
+    return plan::kExitUsage;
+  } catch (const std::exception& e) {
+    std::cerr << "topay-plan: error: " << e.what() << "\n";
+    return plan::kExitError;
+  }
+}
