@@ -3,6 +3,8 @@
 #include <stop_token>
 
 #include <Eigen/Core>
+
+#include "core/optimization/lbfgs_objective.h"
 #include <Eigen/Geometry>
 
 #include "core/map/signed_distance_field2.h"
@@ -81,7 +83,7 @@ struct FlatnessBreakdown {
 /// (x_f, y_f, psi_f, q_f). Gradient by the chain rule through flat_yaw.h and MINCO's adjoint.
 ///
 /// Construction allocates; Evaluate does not. One object per thread.
-class FlatnessObjective {
+class FlatnessObjective : public LbfgsObjective {
  public:
   /// Throws std::invalid_argument for num_pieces < 1, bad options, a start state of the wrong
   /// size or not finite, a non-finite goal (naming them).
@@ -93,7 +95,7 @@ class FlatnessObjective {
   int num_pieces() const { return num_pieces_; }
   int num_joints() const { return num_joints_; }
   int num_dims() const { return num_joints_ + 2; }
-  int num_parameters() const { return num_pieces_ * (1 + num_dims()) + 1; }
+  int num_parameters() const override { return num_pieces_ * (1 + num_dims()) + 1; }
   /// Panels of piece j (K, or K x stop_panel_factor for the first and last piece).
   int panels(int piece) const;
   const FlatnessObjectiveOptions& options() const { return options_; }
@@ -112,14 +114,14 @@ class FlatnessObjective {
 
   /// f(x) and, if gradient is non-null, df/dx. False for a non-finite x or cost, a singular
   /// MINCO system, a zero speed at an inner sample, or a stop request. Allocation-free.
-  bool Evaluate(const double* x, double* cost, double* gradient);
+  bool Evaluate(const double* x, double* cost, double* gradient) override;
 
   const FlatnessBreakdown& breakdown() const { return breakdown_; }
   const Vector6d& end_effector_residual() const { return residual_; }
   /// The trajectory of the last successful Evaluate (copies; allocates).
   FlatnessTrajectoryData TrajectoryData() const;
-  bool stopped() const { return stopped_; }
-  int num_evaluations() const { return num_evaluations_; }
+  bool stopped() const override { return stopped_; }
+  int num_evaluations() const override { return num_evaluations_; }
 
  private:
   bool Decode(const double* x);

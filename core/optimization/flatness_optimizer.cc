@@ -1,5 +1,7 @@
 #include "core/optimization/flatness_optimizer.h"
 
+#include "core/optimization/lbfgs_solve.h"
+
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -11,7 +13,6 @@
 #include <string>
 #include <vector>
 
-#include <ceres/ceres.h>
 
 namespace topay {
 namespace {
@@ -29,69 +30,14 @@ std::string Format(const char* format, double a, double b = 0.0, double c = 0.0,
   return buffer;
 }
 
-class FlatnessFunction : public ceres::FirstOrderFunction {
- public:
-  explicit FlatnessFunction(FlatnessObjective* objective) : objective_(objective) {}
-  bool Evaluate(const double* parameters, double* cost, double* gradient) const override {
-    return objective_->Evaluate(parameters, cost, gradient);
-  }
-  int NumParameters() const override { return objective_->num_parameters(); }
-
- private:
-  FlatnessObjective* objective_;
-};
-
-/// Stops on a stop request, at the deadline, or on a small relative decrease (as
-/// lbfgs_solve.cc's callback).
-class FlatnessCallback : public ceres::IterationCallback {
- public:
-  FlatnessCallback(const LbfgsOptions& options, Clock::time_point deadline, std::stop_token stop)
-      : options_(options), deadline_(deadline), stop_(std::move(stop)) {}
-  ceres::CallbackReturnType operator()(const ceres::IterationSummary& summary) override {
-    if (stop_.stop_requested() || Clock::now() >= deadline_) {
-      aborted_ = true;
-      return ceres::SOLVER_ABORT;
-    }
-    costs_.push_back(summary.cost);
-    const int past = options_.relative_decrease_past;
-    const int k = static_cast<int>(costs_.size()) - 1;
-    if (k >= past && (costs_[k - past] - costs_[k]) / std::max(std::abs(costs_[k]), 1.0) <
-                         options_.relative_decrease_delta) {
-      return ceres::SOLVER_TERMINATE_SUCCESSFULLY;
-    }
-    return ceres::SOLVER_CONTINUE;
-  }
-  bool aborted() const { return aborted_; }
-
- private:
-  const LbfgsOptions& options_;
-  Clock::time_point deadline_;
-  std::stop_token stop_;
-  std::vector<double> costs_;
-  bool aborted_ = false;
-};
-
-/// One L-BFGS solve from *x; returns the iterations; *aborted on stop or deadline.
+/// One L-BFGS solve from *x (lbfgs_solve.h, shared with the arc length-yaw driver); returns
+/// the iterations; *aborted on stop or deadline.
 int Solve(FlatnessObjective* objective, Eigen::VectorXd* x, const LbfgsOptions& lbfgs,
           Clock::time_point deadline, std::stop_token stop, bool* aborted) {
-  ceres::GradientProblemSolver::Options options;
-  options.line_search_direction_type = ceres::LBFGS;
-  options.line_search_type = ceres::WOLFE;
-  options.max_lbfgs_rank = lbfgs.memory;
-  options.max_num_iterations = lbfgs.max_iterations;
-  options.use_approximate_eigenvalue_bfgs_scaling = lbfgs.approximate_eigenvalue_scaling;
-  options.line_search_sufficient_function_decrease = lbfgs.sufficient_decrease;
-  options.line_search_sufficient_curvature_decrease = lbfgs.curvature;
-  options.max_solver_time_in_seconds =
-      std::max(1e-3, std::chrono::duration<double>(deadline - Clock::now()).count());
-  options.logging_type = ceres::SILENT;
-  FlatnessCallback callback(lbfgs, deadline, stop);
-  options.callbacks.push_back(&callback);
-  ceres::GradientProblem problem(new FlatnessFunction(objective));
-  ceres::GradientProblemSolver::Summary summary;
-  ceres::Solve(options, problem, x->data(), &summary);
-  *aborted = callback.aborted() || objective->stopped() || Clock::now() >= deadline;
-  return static_cast<int>(summary.iterations.size());
+  const LbfgsResult result = SolveWithLbfgs(objective, x, lbfgs, deadline, std::move(stop));
+  *aborted = result.stop == LbfgsStop::kCancelled || result.stop == LbfgsStop::kTimeLimit ||
+             objective->stopped();
+  return result.iterations;
 }
 
 }  // namespace

@@ -19,14 +19,14 @@ using Clock = std::chrono::steady_clock;
 /// The objective as Ceres sees it (owned by the GradientProblem; the objective is not).
 class CeresFunction : public ceres::FirstOrderFunction {
  public:
-  explicit CeresFunction(TrajectoryObjective* objective) : objective_(objective) {}
+  explicit CeresFunction(LbfgsObjective* objective) : objective_(objective) {}
   bool Evaluate(const double* parameters, double* cost, double* gradient) const override {
     return objective_->Evaluate(parameters, cost, gradient);
   }
   int NumParameters() const override { return objective_->num_parameters(); }
 
  private:
-  TrajectoryObjective* objective_;
+  LbfgsObjective* objective_;
 };
 
 /// Stops the solver on a stop request, at the deadline, or on a small relative decrease over
@@ -98,7 +98,7 @@ std::string_view ToString(LbfgsStop stop) {
   return "unknown";
 }
 
-LbfgsResult SolveWithLbfgs(TrajectoryObjective* objective, Eigen::VectorXd* x,
+LbfgsResult SolveWithLbfgs(LbfgsObjective* objective, Eigen::VectorXd* x,
                            const LbfgsOptions& options, Clock::time_point deadline,
                            std::stop_token stop) {
   CheckLbfgsOptions(options);

@@ -7,7 +7,7 @@
 
 #include <Eigen/Core>
 
-#include "core/optimization/trajectory_objective.h"
+#include "core/optimization/lbfgs_objective.h"
 
 namespace topay {
 
@@ -55,11 +55,11 @@ void CheckLbfgsOptions(const LbfgsOptions& options);
 
 /// Minimises the objective's current terms from *x (updated in place: the last accepted
 /// iterate) with ceres::GradientProblemSolver (LBFGS, WOLFE). The stop token is polled inside
-/// every objective evaluation (TrajectoryObjective::set_stop_token: an evaluation after a stop
+/// every objective evaluation (the objectives' set_stop_token: an evaluation after a stop
 /// request fails at once) and by an iteration callback that aborts the solver; the deadline
 /// is checked by the callback and passed to Ceres as its time limit.
 /// Throws std::invalid_argument for options out of range or a wrong x size.
-LbfgsResult SolveWithLbfgs(TrajectoryObjective* objective, Eigen::VectorXd* x,
+LbfgsResult SolveWithLbfgs(LbfgsObjective* objective, Eigen::VectorXd* x,
                            const LbfgsOptions& options,
                            std::chrono::steady_clock::time_point deadline,
                            std::stop_token stop);

@@ -3,6 +3,8 @@
 #include <stop_token>
 
 #include <Eigen/Core>
+
+#include "core/optimization/lbfgs_objective.h"
 #include <Eigen/Geometry>
 
 #include "core/map/signed_distance_field2.h"
@@ -90,7 +92,7 @@ struct PathReference {
 ///
 /// Construction allocates; Evaluate does not. One object per thread. The kinematics and fields
 /// must outlive it.
-class TrajectoryObjective {
+class TrajectoryObjective : public LbfgsObjective {
  public:
   /// Throws std::invalid_argument for num_pieces < 1, panels_per_piece < 1, a start state of
   /// the wrong size or not finite, a non-finite goal, bad limits or options (naming them).
@@ -104,7 +106,7 @@ class TrajectoryObjective {
   int num_dims() const { return num_joints_ + 2; }
   int panels_per_piece() const { return options_.panels_per_piece; }
   /// M + M D.
-  int num_parameters() const { return num_pieces_ * (1 + num_dims()); }
+  int num_parameters() const override { return num_pieces_ * (1 + num_dims()); }
   const TrajectoryObjectiveOptions& options() const { return options_; }
 
   void set_terms(const ObjectiveTerms& terms);
@@ -134,7 +136,7 @@ class TrajectoryObjective {
   /// f(x) and, if gradient is non-null, df/dx (num_parameters()). Returns false if the
   /// trajectory cannot be built (non-finite values, a singular MINCO system from extreme
   /// durations, a failing evaluation) or if a stop was requested. Allocation-free.
-  bool Evaluate(const double* x, double* cost, double* gradient);
+  bool Evaluate(const double* x, double* cost, double* gradient) override;
 
   /// After a successful Evaluate: the cost's parts, the end-effector residual (always
   /// computed, whether the term is on or not) and the trajectory.
@@ -146,8 +148,8 @@ class TrajectoryObjective {
   const Eigen::MatrixXd& waypoints() const { return waypoints_; }
   const Eigen::VectorXd& durations_s() const { return durations_s_; }
   Eigen::Vector2d p0_W() const { return p0_W_; }
-  bool stopped() const { return stopped_; }
-  int num_evaluations() const { return num_evaluations_; }
+  bool stopped() const override { return stopped_; }
+  int num_evaluations() const override { return num_evaluations_; }
 
  private:
   bool Decode(const double* x);
