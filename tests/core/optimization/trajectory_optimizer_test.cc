@@ -300,10 +300,11 @@ TEST(TrajectoryOptimizerOptionsTest, RejectsOptionsOutOfRange) {
 // The end-effector constraint on random free-space tasks: start and goal base poses 3-6 m
 // apart, random collision-free arm configurations, a straight-line initial path. Every
 // success must have the end effector within 1 cm / 0.02 rad and pass the exact check.
-// 12 tasks by default; TOPAY_OPTIMIZER_TEST_TASKS=100 runs the 100.
+// The 100 tasks by default (TOPAY_OPTIMIZER_TEST_TASKS=n runs n). Measured: 99 / 100
+// succeed (the failure: a joint acceleration at 1.45 x its limit with rho at 1e10).
 TEST(TrajectoryOptimizerRandomTest, EndEffectorConvergesOnRandomFreeSpaceTasks) {
   const char* env = std::getenv("TOPAY_OPTIMIZER_TEST_TASKS");
-  const int num_tasks = env ? std::atoi(env) : 12;
+  const int num_tasks = env ? std::atoi(env) : 100;
   const auto world = MakeWorld({});
   const TrajectoryOptimizer optimizer(*world->kinematics, world->base_field(), world->arm_field());
   const SceneClearanceChecker checker(*world->kinematics, world->scene);
@@ -359,7 +360,7 @@ TEST(TrajectoryOptimizerRandomTest, EndEffectorConvergesOnRandomFreeSpaceTasks) 
   std::printf("%d / %d tasks succeeded; worst EE error %.4f m / %.4f rad; mean %.1f ms\n",
               successes, num_tasks, worst_position_m, worst_angle_rad, total_ms / num_tasks);
   RecordProperty("successes", successes);
-  EXPECT_GE(successes, (num_tasks * 3) / 4);  // free space: most tasks must succeed
+  EXPECT_GE(successes, (num_tasks * 95) / 100);  // free space: nearly every task succeeds
 }
 
 }  // namespace
