@@ -34,7 +34,7 @@ FlatnessObjective::FlatnessObjective(const Kinematics& kinematics,
       num_pieces_(num_pieces),
       num_joints_(kinematics.num_joints()),
       penalties_(kinematics, base_field, arm_field, base_limits, options.penalties),
-      X_WE_goal_(X_WE_goal),
+      end_effector_(kinematics, X_WE_goal),
       minco_(kinematics.num_joints() + 2, std::max(num_pieces, 1)) {
   Require(num_pieces >= 1, "num_pieces = " + std::to_string(num_pieces) + " must be >= 1");
   Require(options.panels_per_piece >= 1, "panels_per_piece must be >= 1");
@@ -87,10 +87,6 @@ FlatnessObjective::FlatnessObjective(const Kinematics& kinematics,
   values_.setZero(D, 5);
   weights_.setZero(D, 4);
   end_state_.q_rad.setZero(N);
-  cache_ = kinematics.MakeCache();
-  J_WE_.setZero(6, kinematics.num_states());
-  dr_dz_.setZero(6, kinematics.num_states());
-  dL_dz_.setZero(kinematics.num_states());
 }
 
 int FlatnessObjective::panels(int piece) const {
@@ -342,17 +338,12 @@ void FlatnessObjective::AddEndEffector(bool with_gradient) {
   end_state_.y_m = tail_(1, 0);
   end_state_.yaw_rad = end_yaw_rad_;
   end_state_.q_rad = tail_.col(0).tail(num_joints_);
-  kinematics_.Update(end_state_, &cache_);
-  residual_ = PoseResidual(cache_.X_WE, X_WE_goal_);
-  if (!terms_.end_effector) return;
-  const Vector6d shifted = residual_ + lambda_ / rho_;
-  breakdown_.end_effector = 0.5 * rho_ * shifted.squaredNorm();
-  if (!with_gradient) return;
-  kinematics_.EndEffectorJacobian(cache_, J_WE_);
-  PoseResidualJacobian(residual_, J_WE_, dr_dz_);
-  dL_dz_.noalias() = dr_dz_.transpose() * (rho_ * shifted);
-  dC_dend_direct_.head<3>() += dL_dz_.head<3>();
-  dC_dend_direct_.tail(num_joints_) += dL_dz_.tail(num_joints_);
+  breakdown_.end_effector =
+      end_effector_.Evaluate(end_state_, lambda_, rho_, terms_.end_effector, with_gradient);
+  if (!terms_.end_effector || !with_gradient) return;
+  const Eigen::VectorXd& dL_dz = end_effector_.dL_dz();
+  dC_dend_direct_.head<3>() += dL_dz.head<3>();
+  dC_dend_direct_.tail(num_joints_) += dL_dz.tail(num_joints_);
 }
 
 void FlatnessObjective::WriteGradient(double* gradient) const {

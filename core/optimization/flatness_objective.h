@@ -4,6 +4,7 @@
 
 #include <Eigen/Core>
 
+#include "core/optimization/end_effector_alm_term.h"
 #include "core/optimization/lbfgs_objective.h"
 #include <Eigen/Geometry>
 
@@ -117,7 +118,7 @@ class FlatnessObjective : public LbfgsObjective {
   bool Evaluate(const double* x, double* cost, double* gradient) override;
 
   const FlatnessBreakdown& breakdown() const { return breakdown_; }
-  const Vector6d& end_effector_residual() const { return residual_; }
+  const Vector6d& end_effector_residual() const { return end_effector_.residual(); }
   /// The trajectory of the last successful Evaluate (copies; allocates).
   FlatnessTrajectoryData TrajectoryData() const;
   bool stopped() const override { return stopped_; }
@@ -135,7 +136,7 @@ class FlatnessObjective : public LbfgsObjective {
   int num_joints_;
   FlatnessTerms terms_;
   SamplePenalties penalties_;
-  Eigen::Isometry3d X_WE_goal_;
+  EndEffectorAlmTerm end_effector_;  ///< PHR-ALM term of eq. (7).
   double stop_acceleration_mps2_ = 0.0;
   double start_yaw_rad_ = 0.0;
   double end_yaw_rad_ = 0.0;
@@ -160,10 +161,6 @@ class FlatnessObjective : public LbfgsObjective {
   Eigen::MatrixXd values_;   // D x 5: derivatives 0..4
   Eigen::MatrixXd weights_;  // D x 4: dCost/d(derivatives 0..3)
   WholeBodyState end_state_;
-  KinematicsCache cache_;
-  Eigen::MatrixXd J_WE_, dr_dz_;
-  Eigen::VectorXd dL_dz_;
-  Vector6d residual_ = Vector6d::Zero();
   FlatnessBreakdown breakdown_;
 };
 

@@ -39,7 +39,7 @@ TrajectoryObjective::TrajectoryObjective(const Kinematics& kinematics,
       num_pieces_(num_pieces),
       num_joints_(kinematics.num_joints()),
       penalties_(kinematics, base_field, arm_field, base_limits, options.penalties),
-      X_WE_goal_(X_WE_goal),
+      end_effector_(kinematics, X_WE_goal),
       trajectory_(kinematics.num_joints(), std::max(num_pieces, 1),
                   TrajectoryOptions(std::max(options.panels_per_piece, 1))) {
   Require(num_pieces >= 1, "num_pieces = " + std::to_string(num_pieces) + " must be >= 1");
@@ -80,10 +80,6 @@ TrajectoryObjective::TrajectoryObjective(const Kinematics& kinematics,
   values_.setZero(D, 4);
   weights_.setZero(D, 3);
   end_state_.q_rad.setZero(num_joints_);
-  cache_ = kinematics.MakeCache();
-  J_WE_.setZero(6, kinematics.num_states());
-  dr_dz_.setZero(6, kinematics.num_states());
-  dL_dz_.setZero(kinematics.num_states());
 }
 
 void TrajectoryObjective::set_terms(const ObjectiveTerms& terms) {
@@ -353,19 +349,14 @@ void TrajectoryObjective::AddEndEffector(bool with_gradient) {
   end_state_.y_m = positions(1, last);
   end_state_.yaw_rad = tail_(1, 0);
   end_state_.q_rad = tail_.col(0).tail(num_joints_);
-  kinematics_.Update(end_state_, &cache_);
-  residual_ = PoseResidual(cache_.X_WE, X_WE_goal_);
-  if (!terms_.end_effector) return;
-  const Vector6d shifted = residual_ + lambda_ / rho_;
-  breakdown_.end_effector = 0.5 * rho_ * shifted.squaredNorm();
-  if (!with_gradient) return;
-  kinematics_.EndEffectorJacobian(cache_, J_WE_);
-  PoseResidualJacobian(residual_, J_WE_, dr_dz_);
-  dL_dz_.noalias() = dr_dz_.transpose() * (rho_ * shifted);
-  dC_dp_(0, last) += dL_dz_(0);
-  dC_dp_(1, last) += dL_dz_(1);
-  dC_dend_direct_(1) += dL_dz_(2);
-  dC_dend_direct_.tail(num_joints_) += dL_dz_.tail(num_joints_);
+  breakdown_.end_effector =
+      end_effector_.Evaluate(end_state_, lambda_, rho_, terms_.end_effector, with_gradient);
+  if (!terms_.end_effector || !with_gradient) return;
+  const Eigen::VectorXd& dL_dz = end_effector_.dL_dz();
+  dC_dp_(0, last) += dL_dz(0);
+  dC_dp_(1, last) += dL_dz(1);
+  dC_dend_direct_(1) += dL_dz(2);
+  dC_dend_direct_.tail(num_joints_) += dL_dz.tail(num_joints_);
 }
 
 void TrajectoryObjective::WriteGradient(double* gradient) const {

@@ -4,6 +4,7 @@
 
 #include <Eigen/Core>
 
+#include "core/optimization/end_effector_alm_term.h"
 #include "core/optimization/lbfgs_objective.h"
 #include <Eigen/Geometry>
 
@@ -141,7 +142,7 @@ class TrajectoryObjective : public LbfgsObjective {
   /// After a successful Evaluate: the cost's parts, the end-effector residual (always
   /// computed, whether the term is on or not) and the trajectory.
   const ObjectiveBreakdown& breakdown() const { return breakdown_; }
-  const Vector6d& end_effector_residual() const { return residual_; }
+  const Vector6d& end_effector_residual() const { return end_effector_.residual(); }
   const ArcYawTrajectory& trajectory() const { return trajectory_; }
   const Eigen::MatrixXd& head() const { return head_; }
   const Eigen::MatrixXd& tail() const { return tail_; }
@@ -165,7 +166,7 @@ class TrajectoryObjective : public LbfgsObjective {
   int num_joints_;
   ObjectiveTerms terms_;
   SamplePenalties penalties_;
-  Eigen::Isometry3d X_WE_goal_;
+  EndEffectorAlmTerm end_effector_;  ///< PHR-ALM term of eq. (7).
   Eigen::Vector2d p0_W_;
   Vector6d lambda_ = Vector6d::Zero();
   double rho_ = 1.0;
@@ -195,10 +196,6 @@ class TrajectoryObjective : public LbfgsObjective {
   Eigen::MatrixXd weights_;  // D x 3: dCost/d(position, 1st, 2nd derivative) of the sample
   // End-effector scratch.
   WholeBodyState end_state_;
-  KinematicsCache cache_;
-  Eigen::MatrixXd J_WE_, dr_dz_;
-  Eigen::VectorXd dL_dz_;
-  Vector6d residual_ = Vector6d::Zero();
   ObjectiveBreakdown breakdown_;
 };
 
