@@ -191,7 +191,12 @@ void WholeBodyPlanner::OptimizeCandidates(const WholeBodyState& start,
         const Clock::time_point now = Clock::now();
         std::int64_t expected = std::numeric_limits<std::int64_t>::max();
         first_success_ns.compare_exchange_strong(expected, (now - t_begin).count());
-        if (!options_.sequential) window.Tighten(After(now, options_.early_termination_window_s));
+        if (options_.sequential) continue;
+        if (options_.early_termination_window_s <= 0.0) {
+          stage_stop.request_stop();  // at once, not when the deadline's thread wakes
+        } else {
+          window.Tighten(After(now, options_.early_termination_window_s));
+        }
       }
     }
   };

@@ -1,0 +1,22 @@
+#include "core/planner/deterministic_options.h"
+
+#include <limits>
+
+namespace topay {
+
+void MakeDeterministic(WholeBodyPlannerOptions* options, const DeterministicBudgets& budgets) {
+  constexpr double kUnbounded = std::numeric_limits<double>::infinity();
+  FrontEndOptions& front_end = options->front_end;
+  front_end.num_threads = 1;
+  front_end.ik.time_budget_s = kUnbounded;
+  front_end.topology.prm.max_time_s = 0.0;  // <= 0: samples only
+  front_end.topology.prm.max_samples = budgets.prm_samples;
+  front_end.rrt.time_budget_s = kUnbounded;
+  front_end.rrt.max_iterations = budgets.rrt_iterations;
+  front_end.improvement_window_s = kUnbounded;
+  front_end.acquisition_budget_s = kUnbounded;
+  options->num_threads = 1;
+  options->early_termination_window_s = 0.0;
+}
+
+}  // namespace topay
