@@ -107,6 +107,7 @@ void ReadFrontEnd(YamlSection section, FrontEndOptions* o) {
   rrt.Read("time_budget_s", &o->rrt.time_budget_s);
   rrt.Read("stop_at_first_solution", &o->rrt.stop_at_first_solution);
   rrt.Read("goal_bias", &o->rrt.goal_bias);
+  rrt.Read("stow_bias", &o->rrt.stow_bias);
   rrt.Read("rewire_radius_rad", &o->rrt.rewire_radius_rad);
   rrt.Read("max_neighbours", &o->rrt.max_neighbours);
   rrt.Read("max_informed_draws", &o->rrt.max_informed_draws);

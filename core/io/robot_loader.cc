@@ -66,6 +66,23 @@ void SetPositionLimits(const UrdfTree& tree, const RobotYaml& yaml, const std::s
   }
 }
 
+// The optional stow_q: one value per joint, within the position limits.
+void SetStowConfiguration(const RobotYaml& yaml, const std::string& yaml_source,
+                          RobotModel* model) {
+  if (yaml.stow_q_rad.empty()) return;
+  const int n = model->num_joints();
+  model->stow_q_rad = ListOfJointCount(yaml.stow_q_rad, n, yaml_source, "stow_q");
+  for (int i = 0; i < n; ++i) {
+    const double q = model->stow_q_rad(i);
+    if (!(q >= model->joint_limits.q_min_rad(i) && q <= model->joint_limits.q_max_rad(i))) {
+      throw ConfigError(yaml_source, "stow_q[" + std::to_string(i) + "]",
+                        "is " + std::to_string(q) + ", outside the joint's position limits [" +
+                            std::to_string(model->joint_limits.q_min_rad(i)) + ", " +
+                            std::to_string(model->joint_limits.q_max_rad(i)) + "]");
+    }
+  }
+}
+
 }  // namespace
 
 RobotModel LoadRobotModel(const std::string& urdf_path, const std::string& yaml_path) {
@@ -108,6 +125,7 @@ RobotModel LoadRobotModelFromStrings(const std::string& urdf_text, const std::st
       ResolveLink(model, yaml.end_effector_link, yaml_source, "end_effector.link", urdf_source);
   model.X_LE = yaml.X_LE;
   model.self_collision_pairs = FindSelfCollisionPairs(model);
+  SetStowConfiguration(yaml, yaml_source, &model);
   return model;
 }
 

@@ -171,13 +171,15 @@ RobotYaml ParseRobotYaml(const std::string& yaml_text, const std::string& source
   try {
     const YAML::Node root = in.Map(
         document, "",
-        {"base_link", "base_cylinder", "spheres", "base_limits", "joint_limits", "end_effector"});
+        {"base_link", "base_cylinder", "spheres", "base_limits", "joint_limits", "end_effector",
+         "stow_q"});
     out.base_link = in.String(in.Required(root, "", "base_link"), "base_link");
     out.base_cylinder = ReadBaseCylinder(in, root);
     out.spheres = ReadSpheres(in, root);
     out.base_limits = ReadBaseLimits(in, root);
     ReadJointLimits(in, root, &out);
     ReadEndEffector(in, root, &out);
+    if (root["stow_q"]) out.stow_q_rad = in.Numbers(root["stow_q"], "stow_q", false);
   } catch (const YAML::Exception& e) {  // e.g. a key that is not a string
     throw ConfigError(source, "line " + std::to_string(e.mark.line + 1), e.msg);
   }

@@ -29,6 +29,8 @@ struct RobotYaml {
   /// Optional position-limit overrides (empty if absent).
   std::vector<double> q_min_rad;
   std::vector<double> q_max_rad;
+  /// Optional stowed arm configuration (empty if absent).
+  std::vector<double> stow_q_rad;
   std::string end_effector_link;
   Eigen::Isometry3d X_LE = Eigen::Isometry3d::Identity();
 };

@@ -1,9 +1,12 @@
 #include "core/map/scene_distance_fields.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <stdexcept>
 #include <string>
+
+#include "core/map/footprint_distance_field.h"
 
 namespace topay {
 namespace {
@@ -26,6 +29,57 @@ GridGeometry2 BaseGeometry(const GridGeometry3& geometry_3d, const Eigen::Aligne
       base_resolution_m);
 }
 
+
+// The 2D field from the band(s) rasterised on the base grid, by the EDT.
+SignedDistanceField2 BuildRasterisedBaseField(const Scene& scene, const GridGeometry2& geometry,
+                                              const SceneDistanceFieldsOptions& options,
+                                              EdtWorkspace* workspace,
+                                              SceneDistanceFieldsSummary* summary) {
+  std::chrono::steady_clock::time_point phase = std::chrono::steady_clock::now();
+  OccupancyGrid2 occupancy(geometry);
+  for (const OrientedBox& box : scene.boxes) {
+    summary->num_boxes_in_base_band += occupancy.AddBoxInBand(box, options.base_band) ? 1 : 0;
+  }
+  summary->rasterize_2d_s = SecondsSince(phase);
+  phase = std::chrono::steady_clock::now();
+  SignedDistanceField2 field = SignedDistanceField2::Build(occupancy, options.field, workspace);
+  summary->build_2d_s = SecondsSince(phase);
+  if (!options.base_upper_band) return field;
+  phase = std::chrono::steady_clock::now();
+  occupancy.ClearAll();
+  for (const OrientedBox& box : scene.boxes) {
+    summary->num_boxes_in_upper_band +=
+        occupancy.AddBoxInBand(box, *options.base_upper_band) ? 1 : 0;
+  }
+  summary->rasterize_2d_s += SecondsSince(phase);
+  phase = std::chrono::steady_clock::now();
+  field.LowerTo(SignedDistanceField2::Build(occupancy, options.field, workspace),
+                options.base_upper_band_offset_m);
+  field.set_offset_band({*options.base_upper_band, options.base_upper_band_offset_m});
+  summary->build_2d_s += SecondsSince(phase);
+  return field;
+}
+
+// The 2D field from the exact footprint distances of the band(s) (no rasterisation).
+SignedDistanceField2 BuildExactBaseField(const Scene& scene, const GridGeometry2& geometry,
+                                         const SceneDistanceFieldsOptions& options,
+                                         SceneDistanceFieldsSummary* summary) {
+  const std::chrono::steady_clock::time_point phase = std::chrono::steady_clock::now();
+  FootprintDistanceFieldSummary band_summary;
+  SignedDistanceField2 field = BuildFootprintDistanceField(
+      geometry, scene.boxes, options.base_band, options.base_exact_cap_m, &band_summary);
+  summary->num_boxes_in_base_band = band_summary.num_boxes_in_band;
+  if (options.base_upper_band) {
+    field.LowerTo(BuildFootprintDistanceField(geometry, scene.boxes, *options.base_upper_band,
+                                              options.base_exact_cap_m, &band_summary),
+                  options.base_upper_band_offset_m);
+    field.set_offset_band({*options.base_upper_band, options.base_upper_band_offset_m});
+    summary->num_boxes_in_upper_band = band_summary.num_boxes_in_band;
+  }
+  summary->build_2d_s = SecondsSince(phase);
+  return field;
+}
+
 }  // namespace
 
 SceneDistanceFields BuildSceneDistanceFields(const Scene& scene,
@@ -42,6 +96,11 @@ SceneDistanceFields BuildSceneDistanceFields(const Scene& scene,
           std::to_string(options.base_upper_band_offset_m));
     }
   }
+  if (!(std::isfinite(options.base_exact_cap_m) && options.base_exact_cap_m >= 0.0)) {
+    throw std::invalid_argument(
+        "SceneDistanceFieldsOptions: base_exact_cap_m must be finite and >= 0, got " +
+        std::to_string(options.base_exact_cap_m));
+  }
   ValidateSignedDistanceFieldOptions(options.field);
   const Eigen::AlignedBox3d bounds_W_m = options.bounds_W_m.value_or(scene.bounds_W_m);
   const GridGeometry3 geometry = GridGeometry3::FromBounds(bounds_W_m, options.resolution_m);
@@ -51,7 +110,6 @@ SceneDistanceFields BuildSceneDistanceFields(const Scene& scene,
 
   Clock::time_point phase = Clock::now();
   OccupancyGrid3 occupancy_3d(geometry);
-  OccupancyGrid2 occupancy_2d(base_geometry);
   for (std::size_t i = 0; i < scene.boxes.size(); ++i) {
     try {
       occupancy_3d.AddBox(scene.boxes[i]);
@@ -66,33 +124,15 @@ SceneDistanceFields BuildSceneDistanceFields(const Scene& scene,
   SignedDistanceField3 field_3d = SignedDistanceField3::Build(occupancy_3d, options.field, &workspace);
   summary.build_3d_s = SecondsSince(phase);
 
-  phase = Clock::now();
-  for (const OrientedBox& box : scene.boxes) {
-    summary.num_boxes_in_base_band += occupancy_2d.AddBoxInBand(box, options.base_band) ? 1 : 0;
-  }
-  summary.rasterize_2d_s = SecondsSince(phase);
-
-  phase = Clock::now();
-  SignedDistanceField2 field_2d = SignedDistanceField2::Build(occupancy_2d, options.field, &workspace);
-  summary.build_2d_s = SecondsSince(phase);
-  if (options.base_upper_band) {
-    phase = Clock::now();
-    OccupancyGrid2 occupancy_upper(base_geometry);
-    for (const OrientedBox& box : scene.boxes) {
-      summary.num_boxes_in_upper_band +=
-          occupancy_upper.AddBoxInBand(box, *options.base_upper_band) ? 1 : 0;
-    }
-    summary.rasterize_2d_s += SecondsSince(phase);
-    phase = Clock::now();
-    field_2d.LowerTo(SignedDistanceField2::Build(occupancy_upper, options.field, &workspace),
-                     options.base_upper_band_offset_m);
-    summary.build_2d_s += SecondsSince(phase);
-  }
-
+  SignedDistanceField2 field_2d = options.base_exact_cap_m > 0.0
+                                      ? BuildExactBaseField(scene, base_geometry, options, &summary)
+                                      : BuildRasterisedBaseField(scene, base_geometry, options,
+                                                                 &workspace, &summary);
   summary.num_cells_3d = geometry.NumCells();
   summary.num_occupied_3d = occupancy_3d.CountOccupied();
-  summary.num_cells_2d = occupancy_2d.geometry().NumCells();
-  summary.num_occupied_2d = occupancy_2d.CountOccupied();
+  summary.num_cells_2d = base_geometry.NumCells();
+  summary.num_occupied_2d = std::count_if(field_2d.values().begin(), field_2d.values().end(),
+                                          [](float v) { return v <= 0.0f; });
   summary.total_s = SecondsSince(start);
   return {std::move(field_3d), std::move(field_2d), summary};
 }

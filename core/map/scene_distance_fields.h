@@ -35,6 +35,11 @@ struct SceneDistanceFieldsOptions {
   /// axis. Unset (default): base_band alone. Must be a valid band; offset finite and >= 0.
   std::optional<HeightBand> base_upper_band;
   double base_upper_band_offset_m = 0.0;
+  /// 0 (default): the 2D field is the EDT of the band(s) rasterised on its grid (exactness
+  /// margin sqrt(2) x the cell size). > 0: exact distances to the boxes' footprints at the
+  /// cell centres, capped at this value (m), for each band (BuildFootprintDistanceField;
+  /// margin cell size / sqrt(2)). Must be finite and >= 0.
+  double base_exact_cap_m = 0.0;
   /// Placement of the zero level, for both fields.
   SignedDistanceFieldOptions field;
   /// Volume the 3D field covers (and, in xy, the 2D one); unset: the scene's bounds_W_m.

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
+#include <string>
 
 #include "core/map/signed_distance_values.h"
 
@@ -27,6 +28,30 @@ void SignedDistanceField2::Rebuild(const OccupancyGrid2& occupancy,
   geometry_ = g;
   inv_resolution_ = 1.0 / g.resolution_m;
   max_distance_m_ = max_distance_m;
+  exactness_margin_m_ = std::sqrt(2.0) * g.resolution_m;
+}
+
+SignedDistanceField2 SignedDistanceField2::FromCellValues(const GridGeometry2& geometry,
+                                                          std::vector<float> values,
+                                                          double max_distance_m,
+                                                          double exactness_margin_m) {
+  geometry.Validate("SignedDistanceField2::FromCellValues");
+  if (static_cast<std::int64_t>(values.size()) != geometry.NumCells()) {
+    throw std::invalid_argument("SignedDistanceField2::FromCellValues: " +
+                                std::to_string(values.size()) + " values for " +
+                                std::to_string(geometry.NumCells()) + " cells");
+  }
+  if (!(exactness_margin_m >= 0.0) || !std::isfinite(exactness_margin_m)) {
+    throw std::invalid_argument(
+        "SignedDistanceField2::FromCellValues: exactness_margin_m must be finite and >= 0");
+  }
+  SignedDistanceField2 field;
+  field.geometry_ = geometry;
+  field.inv_resolution_ = 1.0 / geometry.resolution_m;
+  field.max_distance_m_ = max_distance_m;
+  field.exactness_margin_m_ = exactness_margin_m;
+  field.values_ = std::move(values);
+  return field;
 }
 
 void SignedDistanceField2::LowerTo(const SignedDistanceField2& other, double offset_m) {
@@ -42,6 +67,7 @@ void SignedDistanceField2::LowerTo(const SignedDistanceField2& other, double off
     values_[i] = std::min(values_[i], static_cast<float>(other.values_[i] + offset_m));
   }
   max_distance_m_ = std::max(max_distance_m_, other.max_distance_m_ + offset_m);
+  exactness_margin_m_ = std::max(exactness_margin_m_, other.exactness_margin_m_);
 }
 
 }  // namespace topay

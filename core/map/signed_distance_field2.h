@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <optional>
 #include <vector>
 
 #include <Eigen/Core>
@@ -22,6 +23,15 @@ namespace topay {
 /// behaviour outside the box of cell centres: clamp to its nearest point c and add |p - c|.
 class SignedDistanceField2 {
  public:
+  /// A band of obstacles lowered into this field with an offset (LowerTo): wherever
+  /// Distance(p) >= d + exactness_margin_m(), every obstacle in `band` is at least
+  /// d - offset_m from p in xy. Lets the base field stand for the robot's rigid parts above the
+  /// chassis (core/planning/base_band.h).
+  struct OffsetBand {
+    HeightBand band;
+    double offset_m = 0.0;
+  };
+
   /// Builds the field (two exact squared EDTs); the workspace, if given, is reused.
   static SignedDistanceField2 Build(const OccupancyGrid2& occupancy,
                                     const SignedDistanceFieldOptions& options = {},
@@ -36,8 +46,27 @@ class SignedDistanceField2 {
   /// requirement on the result clears it on both fields.
   void LowerTo(const SignedDistanceField2& other, double offset_m);
 
+  /// A field from given cell values (x fastest, geometry.NumCells() of them), e.g. exact
+  /// distances (core/map/footprint_distance_field.h). exactness_margin_m: see below. Throws
+  /// std::invalid_argument for a wrong count, an invalid geometry or a negative margin.
+  static SignedDistanceField2 FromCellValues(const GridGeometry2& geometry,
+                                             std::vector<float> values, double max_distance_m,
+                                             double exactness_margin_m);
+
   const GridGeometry2& geometry() const { return geometry_; }
   double max_distance_m() const { return max_distance_m_; }
+  /// How far the interpolated Distance(p) may exceed the exact signed distance at p: a point
+  /// with Distance(p) >= d + exactness_margin_m() is at least d from every obstacle (for d
+  /// below any cap of the values). Built from an occupancy grid (EDT between cell centres,
+  /// plus the rasterisation): sqrt(2) x the cell size. Exact values at the cell centres (a
+  /// 1-Lipschitz function sampled): the bilinear interpolant's bound, cell size / sqrt(2).
+  /// LowerTo keeps the larger of the two fields' margins.
+  double exactness_margin_m() const { return exactness_margin_m_; }
+
+  /// The offset band this field holds, if its builder declared one (BuildSceneDistanceFields
+  /// does for SceneDistanceFieldsOptions::base_upper_band). Only declare what LowerTo put in.
+  const std::optional<OffsetBand>& offset_band() const { return offset_band_; }
+  void set_offset_band(const OffsetBand& band) { offset_band_ = band; }
   float CellValue(int ix, int iy) const { return values_[geometry_.Index(ix, iy)]; }
   const std::vector<float>& values() const { return values_; }
 
@@ -56,6 +85,8 @@ class SignedDistanceField2 {
   GridGeometry2 geometry_;
   double inv_resolution_ = 10.0;
   double max_distance_m_ = 0.0;
+  double exactness_margin_m_ = 0.0;
+  std::optional<OffsetBand> offset_band_;
   std::vector<float> values_;
 };
 

@@ -6,6 +6,8 @@
 #include <stdexcept>
 #include <string>
 
+#include "core/planning/base_band.h"
+
 namespace topay {
 namespace {
 
@@ -94,7 +96,7 @@ FieldFeasibilityReport CheckFeasibilityOnFields(const ArcYawTrajectory& trajecto
   const RobotModel& model = kinematics.model();
   const JointLimits& joints = model.joint_limits;
   const double base_margin =
-      options.base_field_margin_m.value_or(std::sqrt(2.0) * base_field.geometry().resolution_m);
+      options.base_field_margin_m.value_or(base_field.exactness_margin_m());
   const double arm_margin =
       options.arm_field_margin_m.value_or(std::sqrt(3.0) * arm_field.geometry().resolution_m);
   FieldFeasibilityReport report;
@@ -104,6 +106,8 @@ FieldFeasibilityReport CheckFeasibilityOnFields(const ArcYawTrajectory& trajecto
   const double duration = trajectory.duration_s();
   const int steps = static_cast<int>(std::ceil(duration / options.sample_period_s));
   const int num_spheres = static_cast<int>(model.spheres.size());
+  // The rigid spheres the base field covers pass with the base's check below.
+  const std::vector<int> arm_field_spheres = SpheresToCheckOnArmField(kinematics, base_field);
   for (int i = 0; i <= steps; ++i) {
     const double t = std::min(i * options.sample_period_s, duration);
     trajectory.Evaluate(t, &point);
@@ -133,10 +137,12 @@ FieldFeasibilityReport CheckFeasibilityOnFields(const ArcYawTrajectory& trajecto
                         model.base_cylinder.radius_m - base_margin;
     check.Clearance(base, &report.min_base_clearance_m, "base clearance", -1, t);
     kinematics.Update(point.state, &cache);
-    for (int s = 0; s < num_spheres; ++s) {
+    for (const int s : arm_field_spheres) {
       const double arm =
           arm_field.Distance(cache.p_WS[s]) - model.spheres[s].radius_m - arm_margin;
       check.Clearance(arm, &report.min_arm_clearance_m, "arm sphere clearance, sphere", s, t);
+    }
+    for (int s = 0; s < num_spheres; ++s) {
       const double chassis = cache.p_WS[s].z() - model.spheres[s].radius_m -
                              model.base_cylinder.height_m - options.chassis_margin_m;
       check.Clearance(chassis, &report.min_chassis_clearance_m, "chassis clearance, sphere", s, t);

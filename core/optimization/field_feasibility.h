@@ -19,8 +19,8 @@ struct FieldFeasibilityOptions {
   double rate_tolerance = 0.01;
   /// Joints must lie within [q_min - tol, q_max + tol].
   double joint_position_tolerance_rad = 1e-9;
-  /// Base: field2(p_WB) >= radius + base_field_margin_m; unset: sqrt(2) x the 2D field's
-  /// resolution (then field-feasible means exactly clear of the boxes the field was built
+  /// Base: field2(p_WB) >= radius + base_field_margin_m; unset: the field's
+  /// exactness_margin_m() (then field-feasible means exactly clear of the boxes the field was built
   /// from, see core/planning/whole_body_validity.h). No safety factor: that is the penalty's.
   std::optional<double> base_field_margin_m;
   /// Arm spheres: field3(p_WS) >= r_s + arm_field_margin_m; unset: sqrt(3) x resolution.

@@ -5,6 +5,7 @@
 #include <string>
 
 #include "core/optimization/smooth_penalty.h"
+#include "core/planning/base_band.h"
 
 namespace topay {
 namespace {
@@ -121,12 +122,13 @@ SamplePenalties::SamplePenalties(const Kinematics& kinematics,
     CheckPositive(joints.qdd_max_radps2(k), "joint_limits.qdd_max_radps2");
   }
   const double base_margin = options_.base_field_margin_m.value_or(
-      std::sqrt(2.0) * base_field.geometry().resolution_m);
+      base_field.exactness_margin_m());
   const double arm_margin =
       options_.arm_field_margin_m.value_or(std::sqrt(3.0) * arm_field.geometry().resolution_m);
   CheckNonNegative(base_margin, "base_field_margin_m");
   CheckNonNegative(arm_margin, "arm_field_margin_m");
   base_threshold_m_ = options_.base_radius_factor * model.base_cylinder.radius_m + base_margin;
+  arm_field_spheres_ = SpheresToCheckOnArmField(kinematics, base_field);
   sphere_thresholds_m_.resize(static_cast<int>(model.spheres.size()));
   for (int s = 0; s < sphere_thresholds_m_.size(); ++s) {
     sphere_thresholds_m_(s) =
@@ -266,7 +268,7 @@ void SamplePenalties::EvaluateGeometry(const SampleQuantities& sample,
   const int num_spheres = static_cast<int>(model.spheres.size());
   if (enabled(PenaltyTerm::kArmObstacle)) {
     // Eq. (13), arm spheres on the 3D field: threshold_s - SDF(p_WS) <= 0.
-    for (int s = 0; s < num_spheres; ++s) {
+    for (const int s : arm_field_spheres_) {
       Eigen::Vector3d field_gradient;
       const double distance = arm_field_.DistanceAndGradient(cache_.p_WS[s], &field_gradient);
       const double slope =

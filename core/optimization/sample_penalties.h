@@ -81,7 +81,7 @@ struct SamplePenaltyOptions {
   /// sheet: 1.1). The reference code also clamped radii below 0.055 m up to 0.055 m; not done
   /// here (the paper's radii).
   double sphere_radius_factor = 1.1;
-  /// Extra clearance (m) on the 2D field. Unset: sqrt(2) x the 2D field's resolution, the
+  /// Extra clearance (m) on the 2D field. Unset: the field's exactness_margin_m(), the
   /// bound on how much the interpolated field can exceed the exact distance (the front end's
   /// WholeBodyValidity default), so that a sample the penalty leaves alone is exactly clear.
   /// Not in the reference code, whose success test did not use the exact geometry.
@@ -200,6 +200,9 @@ class SamplePenalties {
   double extra_arm_m_ = 0.0;
   double base_threshold_m_ = 0.0;
   Eigen::VectorXd sphere_thresholds_m_;
+  /// Spheres penalised on the 3D field: all but the rigid ones the base field covers
+  /// (SpheresToCheckOnArmField; the base penalty keeps them clear).
+  std::vector<int> arm_field_spheres_;
   Eigen::VectorXd qd_max_radps_;    // rate_limit_fraction x the joint limits
   Eigen::VectorXd qdd_max_radps2_;
   Eigen::VectorXd joint_middle_rad_;

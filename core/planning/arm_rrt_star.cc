@@ -26,6 +26,9 @@ std::string CheckOptions(const ArmRrtStarOptions& options, int num_joints) {
   if (!(options.goal_bias >= 0.0 && options.goal_bias <= 1.0)) {
     return "options.goal_bias must be in [0, 1]";
   }
+  if (!(options.stow_bias >= 0.0 && options.stow_bias <= 1.0)) {
+    return "options.stow_bias must be in [0, 1]";
+  }
   if (!(options.rewire_radius_rad >= 0.0)) return "options.rewire_radius_rad must be >= 0";
   if (options.max_neighbours < 1) return "options.max_neighbours must be >= 1";
   if (options.max_informed_draws < 0) return "options.max_informed_draws must be >= 0";

@@ -35,10 +35,31 @@ RigidLowerBody RigidLowerBodyOf(const Kinematics& kinematics) {
   for (int s = 0; s < num_spheres; ++s) {
     if (variation[s] >= 1e-6) continue;
     const double radius = model.spheres[s].radius_m;
-    body.top_m = std::max(body.top_m, p0[s].z() + radius);
-    body.sphere_reach_m = std::max(body.sphere_reach_m, p0[s].head<2>().norm() + radius);
+    const RigidLowerBody::Sphere sphere{s, p0[s].z() + radius, p0[s].z() - radius,
+                                        p0[s].head<2>().norm() + radius};
+    body.spheres.push_back(sphere);
+    body.top_m = std::max(body.top_m, sphere.top_m);
+    body.sphere_reach_m = std::max(body.sphere_reach_m, sphere.reach_m);
   }
   return body;
+}
+
+std::vector<int> SpheresToCheckOnArmField(const Kinematics& kinematics,
+                                          const SignedDistanceField2& base_field) {
+  const int num_spheres = static_cast<int>(kinematics.model().spheres.size());
+  std::vector<bool> covered(num_spheres, false);
+  if (const auto& band = base_field.offset_band()) {
+    const double reach_limit_m = kinematics.model().base_cylinder.radius_m - band->offset_m;
+    for (const RigidLowerBody::Sphere& s : RigidLowerBodyOf(kinematics).spheres) {
+      covered[s.index] = s.top_m <= band->band.z_max_m && s.bottom_m >= band->band.z_min_m &&
+                         s.reach_m <= reach_limit_m;
+    }
+  }
+  std::vector<int> checked;
+  for (int s = 0; s < num_spheres; ++s) {
+    if (!covered[s]) checked.push_back(s);
+  }
+  return checked;
 }
 
 HeightBand FrontEndBaseBand(const Kinematics& kinematics, double arm_margin_m) {

@@ -1,6 +1,9 @@
 #pragma once
 
+#include <vector>
+
 #include "core/map/occupancy_grid2.h"
+#include "core/map/signed_distance_field2.h"
 #include "core/robot/kinematics.h"
 
 namespace topay {
@@ -27,7 +30,27 @@ struct RigidLowerBody {
   /// Largest horizontal distance (m) from the base axis of any rigid sphere's surface (over
   /// every yaw): 0.115 + 0.08 = 0.195 m on the TopAY arm, well inside the 0.40 m cylinder.
   double sphere_reach_m = 0.0;
+  /// The rigid spheres (RobotModel::spheres indices), with each one's top (m above the
+  /// ground), bottom, and horizontal reach from the base axis (m, its surface, over every yaw).
+  struct Sphere {
+    int index = -1;
+    double top_m = 0.0;
+    double bottom_m = 0.0;
+    double reach_m = 0.0;
+  };
+  std::vector<Sphere> spheres;
 };
 RigidLowerBody RigidLowerBodyOf(const Kinematics& kinematics);
+
+/// The collision spheres to check on the 3D arm field, given the base's 2D field: every
+/// sphere except the rigid ones that the base field's offset band (SignedDistanceField2::
+/// offset_band) already keeps clear wherever the base cylinder passes its own field check
+/// (field >= radius + margin): a rigid sphere lying within the band's heights and within
+/// radius - offset of the base axis. Such a sphere is then checked exactly by the 2D field (at
+/// its 2D margin) instead of by the 3D field at the larger 3D margin (sqrt(3) x 0.05 =
+/// 0.087 m), which lets the base pass 6 % more of the Tables large tasks (docs/benchmarks.md).
+/// All spheres if the field has no offset band. In increasing index order.
+std::vector<int> SpheresToCheckOnArmField(const Kinematics& kinematics,
+                                          const SignedDistanceField2& base_field);
 
 }  // namespace topay

@@ -12,7 +12,7 @@ double FieldClearance(const WholeBodyValidity& validity, const SignedDistanceFie
   double clearance_m = base_field.Distance(Eigen::Vector2d(state.x_m, state.y_m)) -
                        model.base_cylinder.radius_m - validity.base_margin_m();
   validity.kinematics().Update(state, &workspace->cache);
-  for (std::size_t s = 0; s < model.spheres.size(); ++s) {
+  for (const int s : validity.arm_field_spheres()) {
     clearance_m = std::min(clearance_m, arm_field.Distance(workspace->cache.p_WS[s]) -
                                             model.spheres[s].radius_m - validity.arm_margin_m());
   }

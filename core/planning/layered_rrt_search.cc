@@ -72,6 +72,12 @@ RrtTarget LayeredRrtSearch::Sample(int a) {
     return target;
   }
   target.layer = static_cast<int>(rng_.UniformInt(first, last));
+  const Eigen::VectorXd& stow = validity_.model().stow_q_rad;
+  if (stow.size() > 0 && rng_.Uniform01() < options_.stow_bias) {
+    const std::size_t layer = static_cast<std::size_t>(target.layer);
+    target.q_rad = stow.cwiseMax(box_low_[layer]).cwiseMin(box_high_[layer]);
+    return target;
+  }
   SampleQ(target.layer, &target.q_rad);
   return target;
 }

@@ -10,16 +10,21 @@ namespace topay {
 ///  - 3D arm field at 0.05 m: the arm's exactness margin (WholeBodyValidityOptions) is
 ///    sqrt(3) x 0.05 = 0.087 m. At the benchmark's 0.1 m it would be 0.173 m, too much to
 ///    work near table tops and floating boxes;
-///  - 2D base field at 0.02 m: the base's margin is sqrt(2) x 0.02 = 0.028 m. The base
-///    (radius 0.40 m) must pass gaps barely wider than itself in the Tables rooms: on 100
-///    Tables medium tasks, start and goal were connected for 98 at the exact radius, 92 at
-///    +0.028 m and 74 at +0.071 m (the 0.05 m field's margin);
+///  - 2D base field at 0.02 m of exact footprint distances at the cell centres, capped at
+///    1.0 m (SceneDistanceFieldsOptions::base_exact_cap_m, above every distance the planner
+///    compares with): the base's margin is 0.02 / sqrt(2) = 0.014 m (an EDT field's would be
+///    sqrt(2) x 0.02 = 0.028 m). The base (radius 0.40 m) must pass gaps barely wider than
+///    itself in the Tables rooms: on 100 Tables medium tasks, start and goal were connected
+///    for 98 at the exact radius, 92 at +0.028 m and 74 at +0.071 m;
 ///  - the 2D field in two bands (SceneDistanceFieldsOptions::base_upper_band): obstacles up
 ///    to the chassis top against the base cylinder, and obstacles up to the top of the rigid
-///    lower body (chassis and the arm's rigid spheres, RigidLowerBodyOf) plus the arm margin
-///    against the rigid spheres' horizontal reach plus the arm margin (0.195 + 0.087 m on the
-///    TopAY arm): the base may stand partly under a low table top, as long as its shoulder
-///    stays clear, but never under anything lower than its shoulder.
+///    lower body (chassis and the arm's rigid spheres, RigidLowerBodyOf) plus the 3D field's
+///    margin against the rigid spheres' horizontal reach (0.195 m on the TopAY arm): the base
+///    may stand partly under a
+///    low table top, as long as its shoulder stays clear, but never under anything lower than
+///    its shoulder. The field declares that band (offset_band), so the rigid spheres are
+///    checked by it exactly (at the 2D margin) and not again on the 3D field at its larger
+///    margin (SpheresToCheckOnArmField).
 /// Map build time at these settings: see docs/benchmarks.md (it is not part of the planning
 /// time, as in the paper).
 SceneDistanceFieldsOptions PlannerFieldOptions(const Kinematics& kinematics);

@@ -5,6 +5,8 @@
 #include <stdexcept>
 #include <string>
 
+#include "core/planning/base_band.h"
+
 namespace topay {
 namespace {
 
@@ -23,6 +25,9 @@ namespace {
 //      and d is 1-Lipschitz: d(c_i) <= d(p) + |c_i - p|, with sum_i w_i |c_i - p| at most
 //      sqrt(n)/2 res (attained at the cell's centre).
 // Hence field(p) <= d(p) + sqrt(n) res, and field(p) >= r + sqrt(n) res implies d(p) >= r.
+// A field of exact (possibly capped) distances at the centres (BuildFootprintDistanceField)
+// has value(c) <= d(c) in (1), so only (2) remains: sqrt(n)/2 res. The 2D field states its
+// own bound (SignedDistanceField2::exactness_margin_m), which is the base's default.
 // The exact base test (cylinder from the ground to the chassis top) equals the 2D distance to
 // the footprints of the boxes in the base band, which is what the 2D field rasterises.
 double DefaultMargin(double resolution_m, int dimension) {
@@ -68,9 +73,10 @@ WholeBodyValidity::WholeBodyValidity(const Kinematics& kinematics,
       base_field_(base_field),
       arm_field_(arm_field),
       self_collision_(kinematics),
-      options_(options) {
+      options_(options),
+      arm_field_spheres_(SpheresToCheckOnArmField(kinematics, base_field)) {
   base_margin_m_ = ResolveMargin(
-      options.base_margin_m, DefaultMargin(base_field.geometry().resolution_m, 2), "base_margin_m");
+      options.base_margin_m, base_field.exactness_margin_m(), "base_margin_m");
   arm_margin_m_ = ResolveMargin(
       options.arm_margin_m, DefaultMargin(arm_field.geometry().resolution_m, 3), "arm_margin_m");
   if (!std::isfinite(options.self_margin_m)) {
@@ -112,7 +118,7 @@ ValidityFailure WholeBodyValidity::Check(const WholeBodyState& state,
     return ValidityFailure::kBaseCollision;
   }
   kinematics_.Update(state, &workspace->cache);
-  for (std::size_t s = 0; s < robot.spheres.size(); ++s) {
+  for (const int s : arm_field_spheres_) {
     const double needed = robot.spheres[s].radius_m + arm_margin_m_;
     if (!(arm_field_.Distance(workspace->cache.p_WS[s]) >= needed)) {
       return ValidityFailure::kArmCollision;

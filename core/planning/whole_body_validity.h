@@ -7,6 +7,8 @@
 #include "core/map/signed_distance_field2.h"
 #include "core/map/signed_distance_field3.h"
 #include "core/robot/kinematics.h"
+#include <vector>
+
 #include "core/robot/self_collision.h"
 #include "core/robot/whole_body_state.h"
 
@@ -15,9 +17,10 @@ namespace topay {
 /// Options of WholeBodyValidity.
 struct WholeBodyValidityOptions {
   /// Clearance (m) the base cylinder needs beyond its radius on the 2D base field:
-  /// field2(p_WB) >= radius + base_margin_m. Unset: sqrt(2) x the 2D field's resolution, the
-  /// largest amount by which the bilinearly interpolated field can exceed the exact 2D
-  /// distance (proof in whole_body_validity.cc), so a field-valid base is exactly clear.
+  /// field2(p_WB) >= radius + base_margin_m. Unset: the field's exactness_margin_m(), the
+  /// largest amount by which the interpolated field can exceed the exact 2D distance
+  /// (sqrt(2) x the cell size for an EDT field, proof in whole_body_validity.cc; cell size /
+  /// sqrt(2) for exact footprint distances), so a field-valid base is exactly clear.
   std::optional<double> base_margin_m;
   /// Same for every arm sphere on the 3D field: field3(p_WS) >= r_S + arm_margin_m.
   /// Unset: sqrt(3) x the 3D field's resolution (same proof in 3D).
@@ -75,6 +78,9 @@ class WholeBodyValidity {
   const RobotModel& model() const { return kinematics_.model(); }
   double base_margin_m() const { return base_margin_m_; }
   double arm_margin_m() const { return arm_margin_m_; }
+  /// The spheres checked on the 3D field: all but the rigid ones the base field covers
+  /// (SpheresToCheckOnArmField), which pass whenever the base passes the 2D check.
+  const std::vector<int>& arm_field_spheres() const { return arm_field_spheres_; }
   const WholeBodyValidityOptions& options() const { return options_; }
 
   /// First failing check of `state` (kNone if valid). Never throws.
@@ -116,6 +122,7 @@ class WholeBodyValidity {
   const SignedDistanceField3& arm_field_;
   SelfCollision self_collision_;
   WholeBodyValidityOptions options_;
+  std::vector<int> arm_field_spheres_;
   double base_margin_m_ = 0.0;
   double arm_margin_m_ = 0.0;
 };

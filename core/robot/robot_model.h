@@ -70,6 +70,10 @@ struct RobotModel {
   /// Sphere index pairs checked for self-collision (see core/robot/self_collision.h):
   /// spheres on non-adjacent links that do not overlap at q = 0.
   std::vector<std::pair<int, int>> self_collision_pairs;
+  /// Optional stowed arm configuration (N joints, within the limits): the arm folded low and
+  /// close to the base axis, the pose a robot drives through tight spaces with. Planners may
+  /// steer the arm towards it (ArmRrtStarOptions::stow_bias). Empty: none.
+  Eigen::VectorXd stow_q_rad;
 
   int num_joints() const { return static_cast<int>(joint_names.size()); }
   /// Index of the link with this name, or -1.

@@ -1,11 +1,9 @@
 #include "sim/plan/plan_tool.h"
 
-#include <algorithm>
 #include <chrono>
-#include <cmath>
 #include <sstream>
-#include <thread>
 
+#include "core/io/planner_config.h"
 #include "core/io/robot_loader.h"
 #include "core/map/scene_distance_fields.h"
 #include "core/planner/whole_body_planner.h"
@@ -13,6 +11,7 @@
 #include "core/robot/kinematics.h"
 #include "sim/plan/candidate_table.h"
 #include "sim/plan/plan_query.h"
+#include "sim/plan/plan_summary_fill.h"
 #include "sim/plan/trajectory_json.h"
 #include "sim/viz/png_io.h"
 #include "sim/viz/time_plot.h"
@@ -27,7 +26,8 @@ double MillisecondsSince(std::chrono::steady_clock::time_point start) {
 }
 
 WholeBodyPlannerOptions PlannerOptions(const PlanToolOptions& o, const BaseLimits& limits) {
-  WholeBodyPlannerOptions options;
+  WholeBodyPlannerOptions options =
+      o.planner_config.empty() ? WholeBodyPlannerOptions{} : LoadPlannerOptions(o.planner_config);
   options.base_limits = limits;
   options.num_threads = o.num_threads;
   options.front_end.num_threads = o.num_threads;
@@ -38,54 +38,6 @@ WholeBodyPlannerOptions PlannerOptions(const PlanToolOptions& o, const BaseLimit
     options.front_end.acquisition_budget_s = o.acquisition_budget_s;
   }
   return options;
-}
-
-void FillInputs(const PlanToolOptions& o, const PlanQuery& q, PlanToolSummary* s) {
-  s->scene_kind = q.scene.kind;
-  s->scene_seed = q.scene.seed;
-  s->scene_source = q.scene_source;
-  s->num_boxes = static_cast<int>(q.scene.boxes.size());
-  s->scene_size_m = q.scene.bounds_W_m.sizes();
-  s->task_source = q.task_source;
-  s->task_range = q.task_range;
-  s->task_seed = q.task_seed;
-  if (q.goal_state) {
-    s->base_distance_m =
-        std::hypot(q.goal_state->x_m - q.start.x_m, q.goal_state->y_m - q.start.y_m);
-  }
-  s->start = q.start;
-  s->X_WE_goal = q.X_WE_goal;
-  s->used_goal_hint = o.use_goal_hint && q.goal_state.has_value();
-  s->sequential = o.sequential;
-  s->time_limit_s = o.time_limit_s;
-  s->num_threads = o.num_threads > 0
-                       ? o.num_threads
-                       : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
-}
-
-TrajectoryMetadata MetadataOf(const PlanToolOptions& o, const PlanToolSummary& s) {
-  TrajectoryMetadata m;
-  m.scene_kind = s.scene_kind;
-  m.scene_seed = s.scene_seed;
-  m.scene_file = o.scene_file;
-  m.num_boxes = s.num_boxes;
-  m.task_source =
-      s.task_source == "generated" || s.task_source == "command line" ? s.task_source : "task file";
-  m.task_file = o.task_file;
-  m.task_range = s.task_range;
-  m.task_seed = s.task_seed;
-  m.start = s.start;
-  m.X_WE_goal = s.X_WE_goal;
-  m.base_limits_source = std::string(BaseLimitChoiceName(s.limit_choice));
-  m.base_limits = s.base_limits;
-  m.status = std::string(ToString(s.plan.status));
-  m.failure_reason = s.plan.failure_reason;
-  m.timings = s.plan.timings;
-  m.map_build_ms = s.map_build_ms;
-  if (const CandidateReport* c = s.plan.chosen_candidate(); c != nullptr && c->validation) {
-    m.validation = FiguresOf(*c->validation);
-  }
-  return m;
 }
 
 void WriteJson(const PlanToolOptions& o, PlanToolSummary* s) {
@@ -171,7 +123,7 @@ PlanToolSummary RunPlanTool(const PlanToolOptions& options) {
   const PlanQuery query = ResolvePlanQuery(options, kinematics);
 
   PlanToolSummary summary;
-  FillInputs(options, query, &summary);
+  FillQueryInputs(options, query, &summary);
   summary.limit_choice = *ParseBaseLimitChoice(options.base_limits);
   summary.base_limits = ChooseBaseLimits(summary.limit_choice, model);
 

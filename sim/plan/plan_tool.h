@@ -70,6 +70,10 @@ struct PlanToolOptions {
 
   std::string robot_urdf;  ///< Robot description (required).
   std::string robot_yaml;
+  /// Planner options YAML (core/io/planner_config.h); empty: the options structs' defaults.
+  /// The flags above override what it sets (threads, time limit, sequential, budgets) and
+  /// base_limits chooses the limits.
+  std::string planner_config;
 };
 
 /// One row of the candidate table.

@@ -111,21 +111,30 @@ Json TrajectoryJson(const TrajectoryPieces& p) {
   return json;
 }
 
+// Sample rows use the short keys the benchmark issue names ({"t", "x", "y", "yaw", "q"}, plus
+// s, v, omega, a, beta); their units are stated once, in samples.units.
 Json SamplesJson(const TrajectoryFile& file) {
   Json rows = Json::array();
   for (const TrajectorySample& s : file.samples) {
-    rows.push_back({{"t_s", s.t_s},
-                    {"x_m", s.x_m},
-                    {"y_m", s.y_m},
-                    {"yaw_rad", s.yaw_rad},
-                    {"s_m", s.s_m},
-                    {"v_mps", s.v_mps},
-                    {"omega_radps", s.omega_radps},
-                    {"a_mps2", s.a_mps2},
-                    {"beta_radps2", s.beta_radps2},
-                    {"q_rad", VectorJson(s.q_rad)}});
+    rows.push_back({{"t", s.t_s},
+                    {"x", s.x_m},
+                    {"y", s.y_m},
+                    {"yaw", s.yaw_rad},
+                    {"s", s.s_m},
+                    {"v", s.v_mps},
+                    {"omega", s.omega_radps},
+                    {"a", s.a_mps2},
+                    {"beta", s.beta_radps2},
+                    {"q", VectorJson(s.q_rad)}});
   }
-  return {{"period_s", file.sample_period_s}, {"count", file.samples.size()}, {"rows", rows}};
+  const Json units = {{"t", "s"},       {"x", "m"},       {"y", "m"},
+                      {"yaw", "rad"},   {"s", "m"},       {"v", "m/s"},
+                      {"omega", "rad/s"}, {"a", "m/s^2"}, {"beta", "rad/s^2"},
+                      {"q", "rad (revolute) or m (prismatic)"}};
+  return {{"period_s", file.sample_period_s},
+          {"count", file.samples.size()},
+          {"units", units},
+          {"rows", rows}};
 }
 
 // Indented layout, except that arrays without objects and objects inside arrays (one piece,
@@ -328,16 +337,16 @@ TrajectorySample ReadSample(const JsonFieldReader& r, const nlohmann::json& v,
                             const std::string& path, int num_joints) {
   r.RequireObject(v, path);
   TrajectorySample s;
-  s.t_s = NumberAt(r, v, path, "t_s");
-  s.x_m = NumberAt(r, v, path, "x_m");
-  s.y_m = NumberAt(r, v, path, "y_m");
-  s.yaw_rad = NumberAt(r, v, path, "yaw_rad");
-  s.s_m = NumberAt(r, v, path, "s_m");
-  s.v_mps = NumberAt(r, v, path, "v_mps");
-  s.omega_radps = NumberAt(r, v, path, "omega_radps");
-  s.a_mps2 = NumberAt(r, v, path, "a_mps2");
-  s.beta_radps2 = NumberAt(r, v, path, "beta_radps2");
-  s.q_rad = r.NumberArray(r.Member(v, path, "q_rad"), Path(path, "q_rad"), num_joints);
+  s.t_s = NumberAt(r, v, path, "t");
+  s.x_m = NumberAt(r, v, path, "x");
+  s.y_m = NumberAt(r, v, path, "y");
+  s.yaw_rad = NumberAt(r, v, path, "yaw");
+  s.s_m = NumberAt(r, v, path, "s");
+  s.v_mps = NumberAt(r, v, path, "v");
+  s.omega_radps = NumberAt(r, v, path, "omega");
+  s.a_mps2 = NumberAt(r, v, path, "a");
+  s.beta_radps2 = NumberAt(r, v, path, "beta");
+  s.q_rad = r.NumberArray(r.Member(v, path, "q"), Path(path, "q"), num_joints);
   return s;
 }
 
@@ -352,7 +361,7 @@ void ReadSamples(const JsonFieldReader& r, const nlohmann::json& doc, int num_jo
     const std::string path = JsonFieldReader::Index("samples.rows", i);
     file->samples.push_back(ReadSample(r, rows[i], path, num_joints));
     if (i > 0 && !(file->samples[i].t_s > file->samples[i - 1].t_s)) {
-      r.Fail(Path(path, "t_s"), "sample times must increase");
+      r.Fail(Path(path, "t"), "sample times must increase");
     }
   }
   const std::uint64_t count = r.Unsigned(r.Member(v, "samples", "count"), "samples.count");

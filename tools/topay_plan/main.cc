@@ -71,6 +71,10 @@ void AddPlanAndOutputOptions(CLI::App* app, topay::plan::PlanToolOptions* o) {
   o->robot_yaml = config + "/robot/topay_mm.yaml";
   app->add_option("--robot", o->robot_urdf, "Robot URDF")->capture_default_str();
   app->add_option("--robot-config", o->robot_yaml, "Robot YAML")->capture_default_str();
+  o->planner_config = config + "/planner/topay.yaml";
+  app->add_option("--config", o->planner_config,
+                  "Planner YAML (the flags above override it; \"\" for the built-in defaults)")
+      ->capture_default_str();
 }
 
 }  // namespace

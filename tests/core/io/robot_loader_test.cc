@@ -7,6 +7,7 @@
 
 #include "core/common/error.h"
 #include "core/io/robot_loader.h"
+#include "core/collision/scene_clearance.h"
 #include "core/robot/kinematics.h"
 
 namespace topay {
@@ -57,6 +58,32 @@ TEST(RobotLoaderTest, LoadsTheTopayRobot) {
   EXPECT_EQ(model.end_effector_link, model.FindLink("link7"));
   EXPECT_TRUE(model.X_LE.translation().isApprox(Eigen::Vector3d(0, 0, 0.144)));
   EXPECT_FALSE(model.self_collision_pairs.empty());
+  EXPECT_EQ(model.stow_q_rad.size(), 7);
+}
+
+// The stowed configuration is what config/robot/README.md says: self clearance >= 1 cm, clear of
+// the chassis, no higher than the shoulder sphere's top and inside the base cylinder.
+TEST(RobotLoaderTest, TopayStowConfigurationIsFoldedAndClear) {
+  const RobotModel model =
+      LoadRobotModel(kConfigDir + "topay_mm.urdf", kConfigDir + "topay_mm.yaml");
+  const Kinematics kinematics(model);
+  WholeBodyState state;
+  state.q_rad = model.stow_q_rad;
+  Scene empty;
+  empty.bounds_W_m = Eigen::AlignedBox3d(Eigen::Vector3d(-2, -2, 0), Eigen::Vector3d(2, 2, 2));
+  const SceneClearance clearance = SceneClearanceChecker(kinematics, empty).Compute(state);
+  EXPECT_GE(clearance.self_m, 0.01);
+  EXPECT_GE(clearance.chassis_m, 0.0);
+  KinematicsCache cache = kinematics.MakeCache();
+  kinematics.Update(state, &cache);
+  double top_m = 0.0, reach_m = 0.0;
+  for (std::size_t s = 0; s < model.spheres.size(); ++s) {
+    top_m = std::max(top_m, cache.p_WS[s].z() + model.spheres[s].radius_m);
+    reach_m = std::max(reach_m, cache.p_WS[s].head<2>().norm() + model.spheres[s].radius_m);
+  }
+  EXPECT_LE(top_m, 0.4915 + 1e-9);
+  EXPECT_LE(reach_m, 0.34);
+  EXPECT_LT(reach_m, model.base_cylinder.radius_m);
 }
 
 TEST(RobotLoaderTest, LoadsASixJointArmWithoutCodeChanges) {
@@ -191,6 +218,14 @@ TEST_F(RobotLoaderBadInputTest, ContinuousJointWithoutPositionLimits) {
       Replace(urdf_, R"(name="joint7" type="revolute")", R"(name="joint7" type="continuous")");
   ExpectConfigError([&] { LoadRobotModelFromStrings(urdf, "robot.urdf", yaml_, "robot.yaml"); },
                     "robot.yaml", "joint_limits.position_lower");
+}
+
+TEST_F(RobotLoaderBadInputTest, StowConfigurationWithTheWrongJointCount) {
+  ExpectYamlError(Replace(yaml_, "stow_q: [2.899, ", "stow_q: ["), "stow_q");
+}
+
+TEST_F(RobotLoaderBadInputTest, StowConfigurationOutsideTheJointLimits) {
+  ExpectYamlError(Replace(yaml_, "stow_q: [2.899, ", "stow_q: [3.2, "), "stow_q[0]");
 }
 
 }  // namespace

@@ -174,6 +174,35 @@ TEST(SceneDistanceFieldsTest, UpperBandCountsWithItsOffset) {
   EXPECT_EQ(low.summary.num_boxes_in_upper_band, 4);
 }
 
+// base_exact_cap_m: exact footprint distances at the cell centres (both bands), half the EDT
+// field's exactness margin, and the offset band declared for the rigid spheres.
+TEST(SceneDistanceFieldsTest, ExactBaseFieldHoldsFootprintDistances) {
+  SceneDistanceFieldsOptions options;
+  options.base_resolution_m = 0.02;
+  options.base_upper_band = HeightBand{0.0, 0.8};
+  options.base_upper_band_offset_m = 0.2;
+  const SceneDistanceFields edt = BuildSceneDistanceFields(TableScene(), options);
+  options.base_exact_cap_m = 1.0;
+  const SceneDistanceFields exact = BuildSceneDistanceFields(TableScene(), options);
+  EXPECT_NEAR(edt.base_field_2d.exactness_margin_m(), std::sqrt(2.0) * 0.02, 1e-12);
+  EXPECT_NEAR(exact.base_field_2d.exactness_margin_m(), 0.02 / std::sqrt(2.0), 1e-12);
+  for (const SceneDistanceFields* fields : {&edt, &exact}) {
+    ASSERT_TRUE(fields->base_field_2d.offset_band().has_value());
+    EXPECT_EQ(fields->base_field_2d.offset_band()->offset_m, 0.2);
+    EXPECT_EQ(fields->base_field_2d.offset_band()->band.z_max_m, 0.8);
+  }
+  EXPECT_EQ(exact.summary.num_boxes_in_base_band, 4);
+  EXPECT_EQ(exact.summary.num_boxes_in_upper_band, 5);
+  // 1 m from the top's edge (x = -1.5): upper band 1.0 + 0.2, capped at 1.0.
+  EXPECT_NEAR(exact.base_field_2d.Distance(Eigen::Vector2d(-1.5, 0)), 1.0, 1e-6);
+  // 0.3 m from the top's edge: 0.3 + 0.2 exactly (the legs are farther).
+  EXPECT_NEAR(exact.base_field_2d.Distance(Eigen::Vector2d(-0.8, 0)), 0.5, 1e-5);
+  options.base_exact_cap_m = -1.0;
+  EXPECT_THROW(BuildSceneDistanceFields(TableScene(), options), std::invalid_argument);
+  // Without an upper band there is no offset band.
+  EXPECT_FALSE(BuildSceneDistanceFields(TableScene(), {}).base_field_2d.offset_band().has_value());
+}
+
 TEST(SceneDistanceFieldsTest, BadUpperBandIsReportedClearly) {
   SceneDistanceFieldsOptions options;
   options.base_upper_band = HeightBand{0.5, 0.2};

@@ -279,6 +279,11 @@ TEST(ArmRrtStarTest, InvalidStartOrGoalGivesAnEmptyResultWithAReason) {
   bad.goal_bias = 1.5;
   result = PlanArmRrtStar(c.base, c.q_start, c.q_goal, c.validity, bad);
   EXPECT_EQ(result.status, ArmRrtStarStatus::kInvalidInput);
+  bad = ArmRrtStarOptions{};
+  bad.stow_bias = -0.1;
+  result = PlanArmRrtStar(c.base, c.q_start, c.q_goal, c.validity, bad);
+  EXPECT_EQ(result.status, ArmRrtStarStatus::kInvalidInput);
+  EXPECT_NE(result.message.find("stow_bias"), std::string::npos) << result.message;
 }
 
 TEST(ArmRrtStarTest, BaseThroughAWallIsRejected) {

@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include "core/io/robot_loader.h"
+#include "core/map/scene_distance_fields.h"
 #include "core/planning/planner_fields.h"
 #include "core/robot/kinematics.h"
 
@@ -46,7 +47,46 @@ TEST_F(BaseBandTest, PlannerFieldOptionsUseTwoBands) {
   EXPECT_NEAR(options.base_band.z_max_m, 0.155, 1e-9);
   ASSERT_TRUE(options.base_upper_band.has_value());
   EXPECT_NEAR(options.base_upper_band->z_max_m, 0.4915 + arm_margin_m, 1e-6);
-  EXPECT_NEAR(options.base_upper_band_offset_m, 0.40 - (0.195 + arm_margin_m), 1e-6);
+  // The rigid spheres are checked by the upper band exactly: no 3D margin in the offset.
+  EXPECT_NEAR(options.base_upper_band_offset_m, 0.40 - 0.195, 1e-6);
+  EXPECT_GT(options.base_exact_cap_m, 0.40 + 0.1 + 0.02);  // above the PRM's requirement
+}
+
+TEST_F(BaseBandTest, RigidSpheresAreListedWithTheirExtent) {
+  const RigidLowerBody body = RigidLowerBodyOf(kinematics_);
+  ASSERT_EQ(body.spheres.size(), 3u);  // link 1's two spheres and the shoulder's
+  EXPECT_EQ(body.spheres[0].index, 0);
+  EXPECT_EQ(body.spheres[2].index, 2);
+  EXPECT_NEAR(body.spheres[2].top_m, 0.4915, 1e-6);
+  EXPECT_NEAR(body.spheres[0].bottom_m, 0.220 - 0.06, 1e-6);
+  EXPECT_NEAR(body.spheres[2].reach_m, 0.195, 1e-6);
+}
+
+TEST_F(BaseBandTest, ArmFieldSkipsOnlyTheRigidSpheresTheBaseFieldCovers) {
+  Scene scene;
+  scene.bounds_W_m = Eigen::AlignedBox3d(Eigen::Vector3d(-2, -2, 0), Eigen::Vector3d(2, 2, 1.6));
+  const int num_spheres = static_cast<int>(model_.spheres.size());
+  // No offset band (chassis band only): every sphere goes to the 3D field.
+  const SceneDistanceFields chassis_only = BuildSceneDistanceFields(scene, {});
+  EXPECT_EQ(SpheresToCheckOnArmField(kinematics_, chassis_only.base_field_2d).size(),
+            static_cast<std::size_t>(num_spheres));
+  // The planner's fields: the three rigid spheres are covered.
+  const SceneDistanceFields planner = BuildSceneDistanceFields(scene, PlannerFieldOptions(kinematics_));
+  const std::vector<int> checked = SpheresToCheckOnArmField(kinematics_, planner.base_field_2d);
+  ASSERT_EQ(checked.size(), static_cast<std::size_t>(num_spheres - 3));
+  EXPECT_EQ(checked.front(), 3);
+  // An offset too large for the shoulder's reach (0.40 - 0.21 = 0.19 < 0.195 m) or a band
+  // below its top keeps it on the 3D field.
+  SceneDistanceFieldsOptions options = PlannerFieldOptions(kinematics_);
+  options.base_upper_band_offset_m = 0.21;
+  EXPECT_EQ(SpheresToCheckOnArmField(kinematics_, BuildSceneDistanceFields(scene, options).base_field_2d)
+                .front(),
+            2);
+  options = PlannerFieldOptions(kinematics_);
+  options.base_upper_band->z_max_m = 0.45;
+  EXPECT_EQ(SpheresToCheckOnArmField(kinematics_, BuildSceneDistanceFields(scene, options).base_field_2d)
+                .front(),
+            2);
 }
 
 }  // namespace

@@ -189,7 +189,7 @@ TEST(TrajectoryJsonTest, LayoutHasOnePieceAndOneSamplePerLine) {
   std::string line;
   int sample_lines = 0, piece_lines = 0;
   while (std::getline(lines, line)) {
-    sample_lines += line.find("{\"t_s\":") != std::string::npos;
+    sample_lines += line.find("{\"t\":") != std::string::npos;
     piece_lines += line.find("{\"duration_s\":") != std::string::npos;
   }
   EXPECT_EQ(sample_lines, static_cast<int>(file.samples.size()));
@@ -242,12 +242,12 @@ TEST(TrajectoryJsonTest, BadFilesAreRejectedNamingFileAndField) {
   EXPECT_TRUE(has(e, "edited.json: format")) << e;
   e = ErrorAfter([](nlohmann::json* j) { (*j)["version"] = 2; });
   EXPECT_TRUE(has(e, "version")) << e;
-  e = ErrorAfter([](nlohmann::json* j) { (*j)["samples"]["rows"][3]["q_rad"].push_back(0.0); });
-  EXPECT_TRUE(has(e, "samples.rows[3].q_rad")) << e;
-  e = ErrorAfter([](nlohmann::json* j) { (*j)["samples"]["rows"][5]["t_s"] = 0.0; });
-  EXPECT_TRUE(has(e, "samples.rows[5].t_s")) << e;
-  e = ErrorAfter([](nlohmann::json* j) { (*j)["samples"]["rows"][2].erase("v_mps"); });
-  EXPECT_TRUE(has(e, "samples.rows[2].v_mps: missing")) << e;
+  e = ErrorAfter([](nlohmann::json* j) { (*j)["samples"]["rows"][3]["q"].push_back(0.0); });
+  EXPECT_TRUE(has(e, "samples.rows[3].q")) << e;
+  e = ErrorAfter([](nlohmann::json* j) { (*j)["samples"]["rows"][5]["t"] = 0.0; });
+  EXPECT_TRUE(has(e, "samples.rows[5].t")) << e;
+  e = ErrorAfter([](nlohmann::json* j) { (*j)["samples"]["rows"][2].erase("v"); });
+  EXPECT_TRUE(has(e, "samples.rows[2].v: missing")) << e;
   e = ErrorAfter([](nlohmann::json* j) { (*j)["samples"]["count"] = 3; });
   EXPECT_TRUE(has(e, "samples.count")) << e;
   e = ErrorAfter(

@@ -1,0 +1,121 @@
+// topay-bench: the benchmark harness. Runs N generated benchmark tasks (a fresh scene per
+// task) with one planner method or several on identical tasks, and writes tasks.jsonl (one
+// line per task and method), summary.json (one object per method) and, with
+// --dump-trajectories, each task's scene, task and trajectory JSON. Prints a Markdown table;
+// a progress bar on stderr when stderr is a terminal. Logic: sim/bench/bench_run.h.
+// Exit codes: 0 ran (whatever the success rate), 1 a file error, 2 a usage error.
+#include <unistd.h>
+
+#include <CLI/CLI.hpp>
+#include <chrono>
+#include <cstdlib>
+#include <exception>
+#include <iostream>
+#include <string>
+
+#include "sim/bench/bench_run.h"
+#include "sim/bench/progress_line.h"
+#include "sim/plan/usage_error.h"
+
+namespace {
+
+namespace bench = topay::bench;
+
+// The config folder: $TOPAY_CONFIG_DIR if set, else the repository's (compiled in).
+std::string ConfigDir() {
+  const char* from_env = std::getenv("TOPAY_CONFIG_DIR");
+  return from_env != nullptr && *from_env != '\0' ? from_env : TOPAY_CONFIG_DIR;
+}
+
+void AddTaskOptions(CLI::App* app, bench::BenchOptions* o) {
+  app->add_option("--scene", o->scene, "Scene kind: cuboids | tables")->capture_default_str();
+  app->add_option("--range", o->range, "Task range: small | medium | large")->capture_default_str();
+  app->add_option("--tasks", o->num_tasks, "Number of tasks N")->capture_default_str();
+  app->add_option("--seed", o->seed, "Base seed S (task i: DeriveSeed(S, i))")
+      ->capture_default_str();
+}
+
+void AddMethodOptions(CLI::App* app, bench::BenchOptions* o, std::string* method,
+                      std::string* compare) {
+  auto* one = app->add_option("--method", *method,
+                              "One method: topay | jps-only | sequential | flatness (default "
+                              "topay)");
+  auto* many = app->add_option("--compare", *compare,
+                               "Several methods on identical tasks, e.g. topay,flatness");
+  one->excludes(many);
+  app->add_option("--threads", o->num_threads, "Planner workers (0: all cores; 1: deterministic)")
+      ->capture_default_str();
+  app->add_option("--time-limit-ms", o->time_limit_ms, "Per-task planning time limit (ms)")
+      ->capture_default_str();
+  app->add_option("--base-limits", o->base_limits,
+                  "Base limits: benchmark (paper's simulation) | robot (config)")
+      ->capture_default_str();
+  app->add_flag("--use-hint,!--no-hint", o->use_hint,
+                "Pass the task's generating goal state as the planner's hint (default on)");
+}
+
+void AddFileOptions(CLI::App* app, bench::BenchOptions* o) {
+  const std::string config = ConfigDir();
+  o->planner_config = config + "/planner/topay.yaml";
+  o->robot_urdf = config + "/robot/topay_mm.urdf";
+  o->robot_yaml = config + "/robot/topay_mm.yaml";
+  app->add_option("--config", o->planner_config, "Planner options YAML")->capture_default_str();
+  app->add_option("--robot", o->robot_urdf, "Robot URDF")->capture_default_str();
+  app->add_option("--robot-config", o->robot_yaml, "Robot YAML")->capture_default_str();
+  app->add_option("--out", o->out_dir, "Output folder (created)")->required();
+  app->add_flag("--dump-trajectories", o->dump_trajectories,
+                "Also write each task's scene, task and trajectory JSON");
+}
+
+bench::BenchProgress TerminalProgress() {
+  if (::isatty(STDERR_FILENO) == 0) return {};
+  const auto start = std::chrono::steady_clock::now();
+  return [start](int done, int total) {
+    const double elapsed_s =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    std::cerr << "\r" << bench::ProgressLine(done, total, elapsed_s) << (done == total ? "\n" : "")
+              << std::flush;
+  };
+}
+
+int Usage(const std::string& message) {
+  std::cerr << "topay-bench: " << message << "\n(run with --help for usage)\n";
+  return bench::kExitUsage;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  CLI::App app{"Benchmark TopAY (and its baselines) on N generated tasks."};
+  bench::BenchOptions options;
+  std::string method;
+  std::string compare;
+  AddTaskOptions(&app, &options);
+  AddMethodOptions(&app, &options, &method, &compare);
+  AddFileOptions(&app, &options);
+  try {
+    app.parse(argc, argv);
+    if (method.find(',') != std::string::npos) {
+      return Usage("--method: one method only; use --compare " + method + " for several");
+    }
+    if (!method.empty()) options.methods = bench::ParseMethodList(method, "--method");
+    if (!compare.empty()) options.methods = bench::ParseMethodList(compare, "--compare");
+  } catch (const CLI::CallForHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::ParseError& e) {
+    return Usage(e.what());
+  } catch (const topay::plan::UsageError& e) {
+    return Usage(e.what());
+  }
+  try {
+    const bench::BenchReport report = bench::RunBench(options, TerminalProgress());
+    std::cout << report.Markdown();
+    std::cout << "Wrote " << report.tasks_jsonl << " and " << report.summary_json << "\n";
+    return bench::kExitRan;
+  } catch (const topay::plan::UsageError& e) {
+    return Usage(e.what());
+  } catch (const std::exception& e) {
+    std::cerr << "topay-bench: error: " << e.what() << "\n";
+    return bench::kExitError;
+  }
+}
