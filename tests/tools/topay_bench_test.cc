@@ -2,11 +2,8 @@
 // scene kinds, TopAY vs the flatness baseline, every success validated again from the dumped
 // files), the determinism of --threads 1, the plot script, and the exit codes.
 #include <gtest/gtest.h>
-#include <sys/wait.h>
-#include <unistd.h>
 
 #include <cmath>
-#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <map>
@@ -28,30 +25,13 @@
 #include "sim/plan/trajectory_json.h"
 #include "sim/scenes/scene_json.h"
 #include "sim/scenes/task_json.h"
+#include "tests/common/tool_test.h"
 
 namespace topay {
 namespace {
 
 namespace fs = std::filesystem;
 using Json = nlohmann::json;
-
-struct RunResult {
-  int exit_code = -1;
-  std::string out;
-  std::string err;
-};
-
-std::string ReadText(const fs::path& path) {
-  std::ifstream file(path, std::ios::binary);
-  std::ostringstream text;
-  text << file.rdbuf();
-  return text.str();
-}
-
-int ExitCodeOf(const std::string& command) {
-  const int status = std::system(command.c_str());
-  return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-}
 
 std::vector<Json> ReadLines(const fs::path& path) {
   std::ifstream file(path);
@@ -61,28 +41,9 @@ std::vector<Json> ReadLines(const fs::path& path) {
   return lines;
 }
 
-class TopayBenchTest : public ::testing::Test {
+class TopayBenchTest : public ToolTest {
  protected:
-  void SetUp() override {
-    dir_ = fs::temp_directory_path() /
-           ("topay_bench_test_" + std::to_string(::getpid()) + "_" +
-            ::testing::UnitTest::GetInstance()->current_test_info()->name());
-    fs::create_directories(dir_);
-  }
-  void TearDown() override { fs::remove_all(dir_); }
-
-  std::string Path(const std::string& name) const { return (dir_ / name).string(); }
-
-  // Runs topay-bench with `args` (already quoted where needed).
-  RunResult Run(const std::string& args) const {
-    const std::string command = "'" TOPAY_BINARY_DIR "/bin/topay-bench' " + args + " > '" +
-                                Path("stdout.txt") + "' 2> '" + Path("stderr.txt") + "'";
-    RunResult result;
-    result.exit_code = ExitCodeOf(command);
-    result.out = ReadText(Path("stdout.txt"));
-    result.err = ReadText(Path("stderr.txt"));
-    return result;
-  }
+  TopayBenchTest() : ToolTest("topay-bench") {}
 
   // A --compare topay,flatness run with dumps into Path(name); expects exit code 0.
   void RunCompare(const std::string& scene, int tasks, const std::string& name) const {
@@ -98,8 +59,6 @@ class TopayBenchTest : public ::testing::Test {
     // stderr is a file here, not a terminal: no progress bar.
     EXPECT_EQ(run.err.find("tasks, "), std::string::npos) << run.err;
   }
-
-  fs::path dir_;
 };
 
 // ---- Smoke: files, summary consistency, independent re-validation ---------------------------

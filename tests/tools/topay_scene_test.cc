@@ -1,8 +1,5 @@
 // Runs the built topay-scene binary end to end in a temporary folder.
-#include <sys/wait.h>
-#include <unistd.h>
 
-#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -13,50 +10,17 @@
 #include "sim/scenes/scene_json.h"
 #include "sim/scenes/task_json.h"
 #include "sim/viz/png_io.h"
+#include "tests/common/tool_test.h"
 
 namespace topay {
 namespace {
 
 namespace fs = std::filesystem;
 
-struct RunResult {
-  int exit_code = -1;
-  std::string out;
-  std::string err;
-};
-
-std::string ReadText(const fs::path& path) {
-  std::ifstream file(path, std::ios::binary);
-  std::ostringstream text;
-  text << file.rdbuf();
-  return text.str();
-}
-
-class TopaySceneTest : public ::testing::Test {
+class TopaySceneTest : public ToolTest {
  protected:
-  void SetUp() override {
-    dir_ = fs::temp_directory_path() / ("topay_scene_test_" + std::to_string(::getpid()) + "_" +
-                                        ::testing::UnitTest::GetInstance()->current_test_info()->name());
-    fs::create_directories(dir_);
-  }
-  void TearDown() override { fs::remove_all(dir_); }
+  TopaySceneTest() : ToolTest("topay-scene") {}
 
-  std::string Path(const std::string& name) const { return (dir_ / name).string(); }
-
-  // Runs topay-scene with `args` (already quoted where needed), `env` prefixed (e.g. "X=1").
-  RunResult Run(const std::string& args, const std::string& env = "") const {
-    const std::string command = env + (env.empty() ? "" : " ") + "'" TOPAY_BINARY_DIR
-                                "/bin/topay-scene' " + args + " > '" + Path("stdout.txt") +
-                                "' 2> '" + Path("stderr.txt") + "'";
-    const int status = std::system(command.c_str());
-    RunResult result;
-    result.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-    result.out = ReadText(Path("stdout.txt"));
-    result.err = ReadText(Path("stderr.txt"));
-    return result;
-  }
-
-  fs::path dir_;
 };
 
 TEST_F(TopaySceneTest, GeneratesSceneTaskAndPng) {
