@@ -62,7 +62,7 @@ struct FrontEndOptions {
   /// (s) to improve or finish before they are cancelled; cancelled jobs that have a solution
   /// keep their best one (facts sheet: ~100 ms in the reference code, not a bound there; here
   /// it is, and smaller, for the 40 ms median goal). +infinity: wait for all jobs.
-  double improvement_window_s = 0.02;
+  double improvement_window_s = 0.01;
   /// Bound (s) on the whole arm-search stage of one goal attempt, from its start: jobs still
   /// running then are cancelled. Jobs queue when there are more paths than threads.
   double acquisition_budget_s = 0.5;

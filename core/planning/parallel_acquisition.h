@@ -37,7 +37,7 @@ struct ParallelAcquisitionOptions {
   ArmRrtStarOptions rrt;
   /// Jobs still running this long (s) after the first solution found by any job are
   /// cancelled (+inf: never); a cancelled job that has a solution returns its best one.
-  double improvement_window_s = 0.02;
+  double improvement_window_s = 0.01;
   /// Jobs still running (or queued) this long (s) after the stage starts are cancelled.
   double budget_s = 0.5;
   /// Concurrent jobs (>= 1); the caller's TBB arena should have at least this many threads.

@@ -25,6 +25,9 @@ struct BenchRecord {
   bool used_hint = false;    ///< goal_hint was passed to the planner.
   Eigen::Isometry3d X_WE_goal = Eigen::Isometry3d::Identity();  ///< End-effector target.
   double base_distance_m = 0.0;  ///< Straight line between start and goal base positions.
+  /// No chassis motion joins start and goal (sim/scenes/base_reachability.h): the task cannot
+  /// be solved by any planner. Counted as a failure like any other, and reported apart.
+  bool base_unreachable = false;
 
   // The method and its outcome.
   std::string method;          ///< BenchMethodName.

@@ -63,6 +63,7 @@ nlohmann::ordered_json RecordToJson(const BenchRecord& r) {
   json["used_hint"] = r.used_hint;
   json["target"] = TargetJson(r.X_WE_goal);
   json["base_distance_m"] = r.base_distance_m;
+  json["base_unreachable"] = r.base_unreachable;
   json["success"] = r.success;
   json["status"] = r.status;
   json["failure_reason"] = r.failure_reason;

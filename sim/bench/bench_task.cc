@@ -13,6 +13,7 @@
 #include "sim/plan/plan_query.h"
 #include "sim/plan/plan_summary_fill.h"
 #include "sim/plan/trajectory_json.h"
+#include "sim/scenes/base_reachability.h"
 #include "sim/scenes/scene_json.h"
 #include "sim/scenes/task_generator.h"
 #include "sim/scenes/task_json.h"
@@ -129,6 +130,11 @@ std::vector<BenchRecord> RunBenchTask(const BenchTaskContext& c, int index) {
   const SceneDistanceFields fields =
       BuildSceneDistanceFields(query.scene, PlannerFieldOptions(*c.kinematics));
   const double map_ms = MillisecondsSince(map_start);
+  const bool base_unreachable =
+      CertifyBaseUnreachable(query.scene, *c.kinematics,
+                             {query.start.x_m, query.start.y_m},
+                             {bench_case.task.goal.x_m, bench_case.task.goal.y_m})
+          .certified_unreachable;
 
   std::vector<BenchRecord> records;
   const std::size_t m = c.methods.size();
@@ -144,6 +150,7 @@ std::vector<BenchRecord> RunBenchTask(const BenchTaskContext& c, int index) {
     r.method = std::string(BenchMethodName(method));
     r.order = static_cast<int>(k);
     r.map_ms = map_ms;
+    r.base_unreachable = base_unreachable;
     FillOutcome(plan, c.settings.time_limit_ms, &r);
     records.push_back(r);
     if (!c.dump_dir.empty()) DumpPlan(c, index, r.method, query, map_ms, options, plan);

@@ -1,5 +1,6 @@
 #include "sim/bench/method_summary.h"
 
+#include <limits>
 #include <map>
 #include <set>
 
@@ -27,14 +28,17 @@ MethodSummary SummarizeOne(const std::vector<BenchRecord>& records, const std::s
                            const std::set<int>& common) {
   MethodSummary s;
   s.method = method;
+  int reachable_successes = 0;
   std::vector<double> tp_ok, td_ok, tp_all, tp_common, td_common, map_ms;
   for (const BenchRecord& r : records) {
     if (r.method != method) continue;
     ++s.tasks;
     tp_all.push_back(r.tp_ms());
+    s.unreachable_tasks += r.base_unreachable ? 1 : 0;
     map_ms.push_back(r.map_ms);
     if (!r.success) continue;
     ++s.successes;
+    reachable_successes += r.base_unreachable ? 0 : 1;
     tp_ok.push_back(r.tp_ms());
     td_ok.push_back(r.duration_s);
     if (common.count(r.task) != 0) {
@@ -43,6 +47,9 @@ MethodSummary SummarizeOne(const std::vector<BenchRecord>& records, const std::s
     }
   }
   s.success_rate = s.tasks > 0 ? static_cast<double>(s.successes) / s.tasks : 0.0;
+  const int reachable = s.tasks - s.unreachable_tasks;
+  s.success_rate_reachable = reachable > 0 ? static_cast<double>(reachable_successes) / reachable
+                                           : std::numeric_limits<double>::quiet_NaN();
   s.tp_ms_mean = Mean(tp_ok);
   s.tp_ms_median = Median(tp_ok);
   s.tp_ms_p95 = NearestRankQuantile(tp_ok, 0.95);

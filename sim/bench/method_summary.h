@@ -18,6 +18,10 @@ struct MethodSummary {
   int tasks = 0;  ///< Tasks run by the method.
   int successes = 0;
   double success_rate = 0.0;  ///< successes / tasks, in [0, 1].
+  /// Tasks certified unsolvable (BenchRecord::base_unreachable), and the success rate over the
+  /// others: their successes / (tasks - unreachable_tasks) (NaN when none is left).
+  int unreachable_tasks = 0;
+  double success_rate_reachable = 0.0;
   double tp_ms_mean = 0.0;
   double tp_ms_median = 0.0;
   double tp_ms_p95 = 0.0;  ///< Nearest rank (bench_statistics.h).

@@ -70,8 +70,12 @@ void ExpectLineKeys(const Json& line) {
        {"task",      "task_seed",      "scene_seed", "scene",  "range",           "method",
         "start",     "goal_hint",      "used_hint",  "target", "base_distance_m", "success",
         "status",    "failure_reason", "timings_ms", "map_ms", "duration_s",      "num_candidates",
-        "num_paths", "num_classes",    "validation"}) {
+        "num_paths", "num_classes",    "validation", "base_unreachable"}) {
     EXPECT_TRUE(line.contains(key)) << key << " in " << line.dump();
+  }
+  // A task certified unsolvable is never solved (the certificate and the validator agree).
+  if (line.contains("base_unreachable") && line["base_unreachable"].get<bool>()) {
+    EXPECT_FALSE(line["success"].get<bool>()) << line.dump();
   }
   for (const char* key : {"search", "sampling", "front_end", "optimization", "wait", "total"}) {
     EXPECT_TRUE(line["timings_ms"].contains(key)) << key;

@@ -13,6 +13,7 @@
 #include <iostream>
 #include <string>
 
+#include "core/common/heap_retention.h"
 #include "sim/bench/bench_run.h"
 #include "sim/bench/progress_line.h"
 #include "sim/plan/usage_error.h"
@@ -86,6 +87,7 @@ int Usage(const std::string& message) {
 }  // namespace
 
 int main(int argc, char** argv) {
+  topay::RetainFreedHeapMemory();  // plans reuse their grids' memory (heap_retention.h)
   CLI::App app{"Benchmark TopAY (and its baselines) on N generated tasks."};
   bench::BenchOptions options;
   std::string method;
@@ -119,3 +121,4 @@ int main(int argc, char** argv) {
     return bench::kExitError;
   }
 }
+

@@ -19,6 +19,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include "core/common/heap_retention.h"
 #include "core/collision/scene_clearance.h"
 #include "core/common/random.h"
 #include "core/io/planner_config.h"
@@ -29,6 +30,7 @@
 #include "core/planning/path_verification.h"
 #include "core/planning/planner_fields.h"
 #include "core/robot/kinematics.h"
+#include "sim/scenes/base_reachability.h"
 #include "sim/scenes/task_generator.h"
 
 namespace {
@@ -81,6 +83,8 @@ struct Samples {
 struct Tally {
   int tasks = 0;
   int tasks_ok = 0;
+  int unreachable = 0;     // certified unsolvable (sim/scenes/base_reachability.h)
+  int unreachable_ok = 0;  // ... yet given a path: must stay 0
   int paths = 0;
   int paths_failing_exact_check = 0;
   int jobs_finished = 0;  // ran to their own end (not cancelled by the window or budget)
@@ -174,6 +178,12 @@ void RunTask(const BenchOptions& o, const topay::FrontEndOptions& configured,
     }
   }
   if (result.success() && all_exact) ++tally->tasks_ok;
+  const bool unreachable =
+      CertifyBaseUnreachable(bench_case.scene.scene, kinematics,
+                             {task.start.x_m, task.start.y_m}, {task.goal.x_m, task.goal.y_m})
+          .certified_unreachable;
+  tally->unreachable += unreachable ? 1 : 0;
+  tally->unreachable_ok += unreachable && result.success() ? 1 : 0;
   if (o.verbose) {
     std::cerr << "task " << i << ": " << ToString(result.status) << " " << std::fixed
               << std::setprecision(1) << result.stats.total_ms << " ms, " << result.paths.size()
@@ -198,12 +208,16 @@ std::string Fmt(double v, int digits = 1) {
 
 void PrintTable(const BenchOptions& o, const Tally& t) {
   const double share = t.tasks > 0 ? 100.0 * t.tasks_ok / t.tasks : 0.0;
+  const int reachable = t.tasks - t.unreachable;
+  const double reachable_share =
+      reachable > 0 ? 100.0 * (t.tasks_ok - t.unreachable_ok) / reachable : std::nan("");
   const double per_path =
       t.jobs_finished > 0 ? 100.0 * t.jobs_succeeded / t.jobs_finished : std::nan("");
   std::cout << "| scene | range | tasks | topo search ms (median / p95) | classes (mean) | "
                "base paths incl. JPS (mean) | RRT* first solution ms (median / p95) | "
-               "RRT* success per path | front end ms (median / p95) | tasks with a path |\n"
-            << "|---|---|---|---|---|---|---|---|---|---|\n"
+               "RRT* success per path | front end ms (median / p95) | tasks with a path | "
+               "reachable tasks with a path |\n"
+            << "|---|---|---|---|---|---|---|---|---|---|---|\n"
             << "| " << o.scene << (o.jps_only ? " (JPS only)" : "") << " | " << o.range << " | "
             << t.tasks << " | " << Fmt(t.topology_ms.Quantile(0.5)) << " / "
             << Fmt(t.topology_ms.Quantile(0.95)) << " | " << Fmt(t.classes.Mean(), 2) << " | "
@@ -211,7 +225,13 @@ void PrintTable(const BenchOptions& o, const Tally& t) {
             << Fmt(t.rrt_first_ms.Quantile(0.95)) << " | " << Fmt(per_path) << " % ("
             << t.jobs_succeeded << "/" << t.jobs_finished << ") | "
             << Fmt(t.total_ms.Quantile(0.5)) << " / " << Fmt(t.total_ms.Quantile(0.95)) << " | "
-            << Fmt(share) << " % (" << t.tasks_ok << "/" << t.tasks << ") |\n\n";
+            << Fmt(share) << " % (" << t.tasks_ok << "/" << t.tasks << ") | "
+            << Fmt(reachable_share) << " % (" << t.tasks_ok - t.unreachable_ok << "/"
+            << t.tasks - t.unreachable << ") |\n\n";
+  std::cout << "Reachable: tasks not certified unsolvable by the chassis connectivity test "
+               "(sim/scenes/base_reachability.h); certified: "
+            << t.unreachable << ", of which given a path (must be 0): " << t.unreachable_ok
+            << ".\n";
   std::cout << "Goal stage ms (median / p95): " << Fmt(t.goal_ms.Quantile(0.5)) << " / "
             << Fmt(t.goal_ms.Quantile(0.95)) << ". Jobs cancelled by the improvement window or "
             << "budget (not counted in the per-path rate): " << t.jobs_cancelled
@@ -231,6 +251,7 @@ void PrintTable(const BenchOptions& o, const Tally& t) {
 }  // namespace
 
 int main(int argc, char** argv) {
+  topay::RetainFreedHeapMemory();  // plans reuse their grids' memory (heap_retention.h)
   CLI::App app{"Benchmark the TopAY front end on generated tasks (Markdown table on stdout)."};
   BenchOptions o;
   app.add_option("--scene", o.scene, "cuboids | tables")->capture_default_str();

@@ -9,6 +9,7 @@
 #include <iostream>
 #include <string>
 
+#include "core/common/heap_retention.h"
 #include "sim/plan/plan_tool.h"
 #include "sim/plan/usage_error.h"
 
@@ -80,6 +81,7 @@ void AddPlanAndOutputOptions(CLI::App* app, topay::plan::PlanToolOptions* o) {
 }  // namespace
 
 int main(int argc, char** argv) {
+  topay::RetainFreedHeapMemory();  // plans reuse their grids' memory (heap_retention.h)
   namespace plan = topay::plan;
   CLI::App app{"Plan one TopAY whole-body query and write its summary, trajectory and plots."};
   plan::PlanToolOptions options;
@@ -105,3 +107,4 @@ int main(int argc, char** argv) {
     return plan::kExitError;
   }
 }
+

@@ -29,6 +29,7 @@ BenchRecord HandRecord() {
   r.X_WE_goal.translation() = Eigen::Vector3d(4.5, 6.5, 0.8);
   r.X_WE_goal.linear() = Eigen::AngleAxisd(M_PI / 2, Eigen::Vector3d::UnitZ()).toRotationMatrix();
   r.base_distance_m = 5.0;
+  r.base_unreachable = true;
   r.success = true;
   r.status = "success";
   r.timings.search_ms = 1.5;
@@ -80,6 +81,7 @@ TEST(BenchRecordJsonTest, HoldsEveryFieldOfTheTask) {
   EXPECT_NEAR(q[2].get<double>(), 0.0, 1e-12);
   EXPECT_NEAR(q[3].get<double>(), std::sqrt(0.5), 1e-12);
   EXPECT_EQ(j["base_distance_m"], 5.0);
+  EXPECT_EQ(j["base_unreachable"], true);
   EXPECT_EQ(j["success"], true);
   EXPECT_EQ(j["status"], "success");
   EXPECT_EQ(j["failure_reason"], "");
@@ -110,7 +112,7 @@ TEST(BenchRecordJsonTest, TimingsAreUnderOneKeyAndFiguresAreThere) {
   // No other key holds a wall-clock figure: the top-level keys are exactly these.
   std::vector<std::string> keys;
   for (auto it = j.begin(); it != j.end(); ++it) keys.push_back(it.key());
-  EXPECT_EQ(keys.size(), 23u);
+  EXPECT_EQ(keys.size(), 24u);
 }
 
 TEST(BenchRecordJsonTest, AFailureHasNullDurationAndValidation) {

@@ -53,6 +53,19 @@ TEST(MethodSummaryTest, HandComputedFigures) {
   EXPECT_DOUBLE_EQ(b.common_td_s_mean, 45.0);
 }
 
+TEST(MethodSummaryTest, UnreachableTasksAreCountedAndLeftOutOfTheReachableRate) {
+  std::vector<BenchRecord> records = Records();
+  for (BenchRecord& r : records) r.base_unreachable = r.task == 3;  // A failed it, B solved it
+  const std::vector<MethodSummary> s = SummarizeMethods(records, {"A", "B"});
+  EXPECT_EQ(s[0].unreachable_tasks, 1);
+  EXPECT_DOUBLE_EQ(s[0].success_rate, 0.75);           // all tasks still count
+  EXPECT_DOUBLE_EQ(s[0].success_rate_reachable, 1.0);  // 3 of the 3 others
+  EXPECT_DOUBLE_EQ(s[1].success_rate_reachable, 2.0 / 3.0);
+  const std::vector<MethodSummary> none = SummarizeMethods(Records(), {"A"});
+  EXPECT_EQ(none[0].unreachable_tasks, 0);
+  EXPECT_DOUBLE_EQ(none[0].success_rate_reachable, 0.75);
+}
+
 TEST(MethodSummaryTest, OneMethodHasItsSuccessesAsCommonTasks) {
   const std::vector<MethodSummary> s = SummarizeMethods(Records(), {"A"});
   ASSERT_EQ(s.size(), 1u);

@@ -13,6 +13,8 @@ MethodSummary Summary(const std::string& method, int successes) {
   s.tasks = 4;
   s.successes = successes;
   s.success_rate = successes / 4.0;
+  s.unreachable_tasks = 1;
+  s.success_rate_reachable = successes / 3.0;
   s.tp_ms_mean = 120.24;
   s.tp_ms_median = 100.0;
   s.tp_ms_p95 = 300.0;
@@ -43,7 +45,8 @@ TEST(SummaryReportTest, JsonHasTheRequiredKeysPerMethod) {
   for (const char* key :
        {"method", "scene", "range", "seed", "tasks", "success_rate", "tp_ms_mean", "tp_ms_median",
         "tp_ms_p95", "td_s_mean", "common_tp_ms_mean", "common_td_s_mean", "common_tasks",
-        "successes", "threads", "time_limit_ms", "tp_ms_median_all"}) {
+        "successes", "threads", "time_limit_ms", "tp_ms_median_all", "unreachable_tasks",
+        "success_rate_reachable"}) {
     EXPECT_TRUE(j[0].contains(key)) << key;
   }
   EXPECT_EQ(j[0]["method"], "topay");
@@ -57,10 +60,10 @@ TEST(SummaryReportTest, JsonHasTheRequiredKeysPerMethod) {
 
 TEST(SummaryReportTest, MarkdownHasOneRowPerMethod) {
   const std::string table = SummaryMarkdown({Summary("topay", 3), Summary("flatness", 0)}, Info());
-  EXPECT_NE(table.find("| topay | 4 | 75.0 | 120.2 | 100.0 | 300.0 | 9.50 | 110.0 | 9.00 |"),
+  EXPECT_NE(table.find("| topay | 4 | 75.0 | 1 | 100.0 | 120.2 | 100.0 | 300.0 | 9.50 | 110.0 | 9.00 |"),
             std::string::npos)
       << table;
-  EXPECT_NE(table.find("| flatness | 4 | 0.0 |"), std::string::npos) << table;
+  EXPECT_NE(table.find("| flatness | 4 | 0.0 | 1 | 0.0 |"), std::string::npos) << table;
   EXPECT_NE(table.find("| - |"), std::string::npos) << table;  // the NaN common T.P.
   EXPECT_NE(table.find("successful tasks"), std::string::npos) << table;
 }

@@ -1,0 +1,140 @@
+#include "sim/scenes/base_reachability.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+#include <vector>
+
+#include "core/geometry/oriented_box.h"
+#include "core/map/grid_geometry.h"
+#include "core/planning/base_band.h"
+
+namespace topay {
+namespace {
+
+// A rigid sphere as the test needs it: centre height, radius, horizontal centre offset bound.
+struct RigidSphere {
+  double z_m, radius_m, offset_m;
+};
+
+std::vector<RigidSphere> RigidSpheres(const RigidLowerBody& body) {
+  std::vector<RigidSphere> spheres;
+  for (const RigidLowerBody::Sphere& s : body.spheres) {
+    const double r = 0.5 * (s.top_m - s.bottom_m);
+    spheres.push_back({0.5 * (s.top_m + s.bottom_m), r, std::max(0.0, s.reach_m - r)});
+  }
+  return spheres;
+}
+
+// The least signed footprint distance d_b(p) any allowed base centre p has from `box`
+// (-infinity: the box constrains nothing).
+double RequiredDistance(const OrientedBox& box, const BaseCylinder& chassis,
+                        const std::vector<RigidSphere>& spheres) {
+  const double z_min = box.center_W_m.z() - 0.5 * box.size_m.z();
+  const double z_max = box.center_W_m.z() + 0.5 * box.size_m.z();
+  double need = -std::numeric_limits<double>::infinity();
+  if (z_min < chassis.height_m && z_max > 0.0) need = chassis.radius_m;
+  for (const RigidSphere& s : spheres) {
+    const double gap = std::max({0.0, z_min - s.z_m, s.z_m - z_max});
+    if (gap >= s.radius_m) continue;
+    need = std::max(need, std::sqrt(s.radius_m * s.radius_m - gap * gap) - s.offset_m);
+  }
+  return need;
+}
+
+// Clears allowed[] on the cells whose centre is closer to `box` than need - slack.
+void MarkBlocked(const GridGeometry2& g, const OrientedBox& box, double need, double slack,
+                 std::vector<std::uint8_t>* allowed) {
+  const Eigen::AlignedBox3d bounds = box.WorldBounds();
+  const double pad = std::max(need, 0.0) + g.resolution_m;
+  const Eigen::Vector2i lo = g.CellOf(bounds.min().head<2>() - Eigen::Vector2d::Constant(pad));
+  const Eigen::Vector2i hi = g.CellOf(bounds.max().head<2>() + Eigen::Vector2d::Constant(pad));
+  for (int iy = std::max(lo.y(), 0); iy <= std::min(hi.y(), g.dims.y() - 1); ++iy) {
+    for (int ix = std::max(lo.x(), 0); ix <= std::min(hi.x(), g.dims.x() - 1); ++ix) {
+      if (SignedDistanceToFootprint(box, g.CellCenter(ix, iy)) < need - slack) {
+        (*allowed)[g.Index(ix, iy)] = 0;
+      }
+    }
+  }
+}
+
+// 8-connected flood fill over allowed cells from `seed`; the outside of the grid joins all
+// allowed border cells (the first time a border cell is reached, all of them are queued).
+std::vector<std::uint8_t> FloodFill(const GridGeometry2& g, const std::vector<std::uint8_t>& allowed,
+                                    const Eigen::Vector2i& seed) {
+  const int nx = g.dims.x(), ny = g.dims.y();
+  std::vector<std::uint8_t> reached(allowed.size(), 0);
+  std::vector<Eigen::Vector2i> stack;
+  auto push = [&](int ix, int iy) {
+    const std::int64_t i = g.Index(ix, iy);
+    if (allowed[i] == 0 || reached[i] != 0) return;
+    reached[i] = 1;
+    stack.emplace_back(ix, iy);
+  };
+  bool outside_joined = false;
+  push(seed.x(), seed.y());
+  while (!stack.empty()) {
+    const Eigen::Vector2i c = stack.back();
+    stack.pop_back();
+    const bool on_border = c.x() == 0 || c.y() == 0 || c.x() == nx - 1 || c.y() == ny - 1;
+    if (on_border && !outside_joined) {
+      outside_joined = true;
+      for (int ix = 0; ix < nx; ++ix) { push(ix, 0); push(ix, ny - 1); }
+      for (int iy = 0; iy < ny; ++iy) { push(0, iy); push(nx - 1, iy); }
+    }
+    for (int dy = -1; dy <= 1; ++dy) {
+      for (int dx = -1; dx <= 1; ++dx) {
+        const int ix = c.x() + dx, iy = c.y() + dy;
+        if (ix >= 0 && iy >= 0 && ix < nx && iy < ny) push(ix, iy);
+      }
+    }
+  }
+  return reached;
+}
+
+}  // namespace
+
+BaseReachability CertifyBaseUnreachable(const Scene& scene, const Kinematics& kinematics,
+                                        const Eigen::Vector2d& p_WB_start_m,
+                                        const Eigen::Vector2d& p_WB_goal_m,
+                                        const BaseReachabilityOptions& options) {
+  if (!p_WB_start_m.allFinite() || !p_WB_goal_m.allFinite()) {
+    throw std::invalid_argument("CertifyBaseUnreachable: start or goal position is not finite");
+  }
+  if (!(options.resolution_m > 0.0)) {
+    throw std::invalid_argument("CertifyBaseUnreachable: resolution_m must be > 0");
+  }
+  const Eigen::AlignedBox2d bounds(scene.bounds_W_m.min().head<2>(),
+                                   scene.bounds_W_m.max().head<2>());
+  const GridGeometry2 g = GridGeometry2::FromBounds(bounds, options.resolution_m);
+  BaseReachability out;
+  if (!g.Contains(p_WB_start_m) || !g.Contains(p_WB_goal_m)) {
+    out.reason = "start or goal outside the scene's bounds: not tested";
+    return out;
+  }
+  const BaseCylinder& chassis = kinematics.model().base_cylinder;
+  const std::vector<RigidSphere> spheres = RigidSpheres(RigidLowerBodyOf(kinematics));
+  const double slack = options.resolution_m / std::sqrt(2.0);
+  std::vector<std::uint8_t> allowed(static_cast<std::size_t>(g.NumCells()), 1);
+  for (const OrientedBox& box : scene.boxes) {
+    const double need = RequiredDistance(box, chassis, spheres);
+    if (std::isfinite(need)) MarkBlocked(g, box, need, slack, &allowed);
+  }
+  const Eigen::Vector2i start = g.CellOf(p_WB_start_m), goal = g.CellOf(p_WB_goal_m);
+  if (allowed[g.Index(start.x(), start.y())] == 0) {
+    out.certified_unreachable = true;
+    out.reason = "the start position is not allowed (the rigid lower body is in collision)";
+    return out;
+  }
+  const std::vector<std::uint8_t> reached = FloodFill(g, allowed, start);
+  for (std::uint8_t r : reached) out.component_cells += r;
+  out.certified_unreachable = reached[g.Index(goal.x(), goal.y())] == 0;
+  out.reason = out.certified_unreachable
+                   ? "no chain of cells the rigid lower body could occupy joins start and goal (" +
+                         std::to_string(out.component_cells) + " cells reached from the start)"
+                   : "start and goal are in one component of the rigid lower body's free space";
+  return out;
+}
+
+}  // namespace topay

@@ -1,0 +1,50 @@
+#pragma once
+
+#include <cstdint>
+#include <string>
+
+#include <Eigen/Core>
+
+#include "core/geometry/scene.h"
+#include "core/robot/kinematics.h"
+
+namespace topay {
+
+/// Options of CertifyBaseUnreachable.
+struct BaseReachabilityOptions {
+  double resolution_m = 0.01;  ///< Cell size of the test grid over the scene's xy bounds.
+};
+
+/// What CertifyBaseUnreachable found.
+struct BaseReachability {
+  /// True only when no collision-free motion of the robot's rigid lower body joins start and
+  /// goal, whatever the planner: the task cannot be solved. False means "not excluded" (the
+  /// task may still be unsolvable for reasons the test does not see, e.g. the arm).
+  bool certified_unreachable = false;
+  std::int64_t component_cells = 0;  ///< Cells reached from the start's cell.
+  std::string reason;                ///< Readable account of the verdict.
+};
+
+/// A planner-independent test of a task's base connectivity, used by the benchmarks to tell
+/// unsolvable generated tasks from planner failures (the paper's protocol does not exclude
+/// them). It looks only at what every motion must satisfy, for upright scene boxes (yaw only):
+///  - the chassis cylinder (radius R, floor to top) clear of every box whose z extent meets
+///    it: the exact xy signed distance d_b(p) from the base centre p to the box's footprint is
+///    >= R;
+///  - each rigid sphere (core/planning/base_band.h: centre height z, radius r, centre within o
+///    of the base axis at every yaw) clear of every box at vertical gap g < r from z: its
+///    centre c is at least rho = sqrt(r^2 - g^2) from the footprint in xy, so d_b(p) >= rho - o.
+/// Certificate: each d_b is 1-Lipschitz, so every allowed p lies in a cell whose centre meets
+/// every bound less resolution / sqrt(2). A motion is a continuous curve of allowed p, so it
+/// visits a chain of 8-neighbouring such cells; if the flood fill from the start's cell misses
+/// the goal's cell, no motion exists (yaw and arm are free in the test, so it only ever
+/// under-claims). The outside of the grid counts as free and joins every border cell the fill
+/// may enter, so scenes without walls are never falsely certified. Start or goal outside the
+/// grid: not certified. Throws std::invalid_argument for a non-finite position or
+/// resolution <= 0.
+BaseReachability CertifyBaseUnreachable(const Scene& scene, const Kinematics& kinematics,
+                                        const Eigen::Vector2d& p_WB_start_m,
+                                        const Eigen::Vector2d& p_WB_goal_m,
+                                        const BaseReachabilityOptions& options = {});
+
+}  // namespace topay
