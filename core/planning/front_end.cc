@@ -12,6 +12,7 @@
 #include <tbb/task_arena.h>
 
 #include "core/common/random.h"
+#include "core/planning/base_reachable_region.h"
 #include "core/planning/field_clearance.h"
 #include "core/planning/parallel_acquisition.h"
 
@@ -133,12 +134,64 @@ FrontEndResult FrontEnd::Plan(const WholeBodyState& start, const Eigen::Isometry
 
 void FrontEnd::PlanInArena(PlanContext* context) const {
   if (!FindGoals(context)) return;
-  const int attempts = std::min<int>(options_.max_goal_attempts,
-                                     context->result->goal_candidates.candidates.size());
-  for (int attempt = 0; attempt < attempts; ++attempt) {
-    if (context->stop.stop_requested()) return;
-    if (AttemptGoal(attempt, context)) return;
+  if (AttemptGoals(0, context)) return;
+  FrontEndResult& result = *context->result;
+  if (!options_.reachable_goal_search || result.status != FrontEndStatus::kNoBasePath ||
+      context->stop.stop_requested()) {
+    return;
   }
+  const int first = static_cast<int>(result.goal_candidates.candidates.size());
+  const FrontEndStatus status = result.status;
+  const std::string reason = result.failure_reason;
+  if (!FindReachableGoals(context)) {
+    // Keep the first round's failure: it says why the candidates had no base path.
+    result.status = status;
+    result.failure_reason = reason + "; no goal the base can reach from the start (" +
+                            result.failure_reason + ")";
+    return;
+  }
+  AttemptGoals(first, context);
+}
+
+bool FrontEnd::AttemptGoals(int first, PlanContext* context) const {
+  const int end = std::min<int>(first + options_.max_goal_attempts,
+                                context->result->goal_candidates.candidates.size());
+  for (int attempt = first; attempt < end; ++attempt) {
+    if (context->stop.stop_requested()) return false;
+    if (AttemptGoal(attempt, context)) return true;
+  }
+  return false;
+}
+
+bool FrontEnd::FindReachableGoals(PlanContext* context) const {
+  FrontEndResult& result = *context->result;
+  result.stats.used_reachable_goal_search = true;
+  const Clock::time_point t = Clock::now();
+  const double safe_distance_m =
+      kinematics_.model().base_cylinder.radius_m +
+      std::max(options_.fallback_base_clearance_m, validity_.base_margin_m());
+  const BaseReachableRegion region(base_field_, {context->start.x_m, context->start.y_m},
+                                   safe_distance_m);
+  WholeBodyValidityWorkspace workspace = validity_.MakeWorkspace();
+  const std::stop_token& stop = context->stop;
+  const StateClearanceFn clearance = [&](const WholeBodyState& state) {
+    if (stop.stop_requested()) return std::numeric_limits<double>::quiet_NaN();
+    if (!region.Contains({state.x_m, state.y_m})) return -1.0;  // rejected like a collision
+    return FieldClearance(validity_, base_field_, arm_field_, state, &workspace);
+  };
+  GoalCandidatesResult more = FindGoalCandidates(ik_, context->X_WE_target, context->start,
+                                                 std::nullopt, clearance, options_.goal);
+  result.stats.goal_ms += MsSince(t);
+  if (!more.success()) {
+    result.failure_reason = region.start_joins_grid() ? more.failure_reason
+                                                      : "the start base position joins no "
+                                                        "traversable cell of the 2D field";
+    return false;
+  }
+  std::vector<GoalCandidate>& candidates = result.goal_candidates.candidates;
+  candidates.insert(candidates.end(), more.candidates.begin(), more.candidates.end());
+  result.stats.num_goal_candidates = static_cast<int>(candidates.size());
+  return true;
 }
 
 bool FrontEnd::FindGoals(PlanContext* context) const {

@@ -26,7 +26,8 @@ namespace topay {
 ///  3. each base path discretised into SE(2) layers (DiscreteSE2, start and goal yaw
 ///     included) and searched by the constrained bidirectional informed RRT* for the arm, one
 ///     job per path in parallel on a TBB arena (parallel_acquisition.h);
-///  4. if no job succeeds, the next goal candidate (up to max_goal_attempts).
+///  4. if no job succeeds, the next goal candidate (up to max_goal_attempts); if none had a
+///     base path, goal candidates whose base the start can reach (BaseReachableRegion).
 /// Validity everywhere is WholeBodyValidity on the two fields (with its default margins a
 /// valid state is exactly clear of the scene the fields were built from).
 ///
@@ -63,6 +64,12 @@ class FrontEnd {
 
   void PlanInArena(PlanContext* context) const;
   bool FindGoals(PlanContext* context) const;
+  /// Tries goal candidates [first, first + max_goal_attempts) in turn. True on success.
+  bool AttemptGoals(int first, PlanContext* context) const;
+  /// More goal candidates, without the hint, whose base lies in the start's reachable region
+  /// of the 2D field (FrontEndOptions::reachable_goal_search); appended to the result's.
+  /// False if there are none.
+  bool FindReachableGoals(PlanContext* context) const;
   /// One goal attempt: base paths, layers, arm jobs. True if a path was found.
   bool AttemptGoal(int attempt, PlanContext* context) const;
 

@@ -42,6 +42,14 @@ struct FrontEndOptions {
   /// raised to the validity's base margin if smaller (so 0 means "as close as the validity
   /// allows"). No second search when it is not below topology.clearance_m.
   double fallback_base_clearance_m = 0.0;
+  /// When every goal candidate failed for want of a base path (its base pose lies in a part
+  /// of the map the base cannot reach from the start: the far side of a table, a pocket
+  /// between furniture), search the IK again without the hint, accepting only base poses in
+  /// the start's connected region of the 2D field at the fallback clearance
+  /// (BaseReachableRegion), and try up to max_goal_attempts of those. Ours: the paper keeps
+  /// the one goal of the task; a user expects the robot to approach the target from a side it
+  /// can get to.
+  bool reachable_goal_search = true;
   /// Delta l = 1.414 m, turns in place at the vertices.
   DiscreteSE2Options discretisation;
   /// Base limits for the layers' arrival times (they bound the joint steps). Unset: the

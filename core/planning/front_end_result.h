@@ -47,6 +47,9 @@ struct FrontEndStats {
   int num_goal_candidates = 0;
   int num_goal_attempts = 0;
   bool goal_from_hint = false;     ///< The chosen goal came from the hint.
+  /// The goal candidates ran out without a base path and the reachable-goal search ran
+  /// (FrontEndOptions::reachable_goal_search); its candidates follow the first ones.
+  bool used_reachable_goal_search = false;
   // Base paths (the goal attempt that produced the result, else the last one).
   int num_prm_nodes = 0;           ///< Guards + connectors.
   int num_raw_paths = 0;           ///< DFS.

@@ -8,41 +8,19 @@
 
 #include "core/planning/base_free_space.h"
 #include "core/planning/base_path.h"
+#include "core/planning/traversable_grid.h"
 
 namespace topay {
 namespace {
 
 using Status = JumpPointSearchResult::Status;
-constexpr int kNone = -1;
-// Traversable cells need this much more than the safe distance, so that
-// bilinear interpolation between them (with its rounding) never reads below the
-// safe distance.
-constexpr double kCellMargin_m = 1e-6;
+constexpr int kNone = TraversableGrid::kNoCell;
 
 // The traversable cells of the field and the jump primitives of JPS without
 // corner cutting.
-class JpsGrid {
+class JpsGrid : public TraversableGrid {
  public:
-  JpsGrid(const SignedDistanceField2& field, double safe_distance_m)
-      : nx_(field.geometry().dims.x()),
-        ny_(field.geometry().dims.y()),
-        free_(static_cast<std::size_t>(nx_) * ny_) {
-    for (std::size_t i = 0; i < free_.size(); ++i) {
-      free_[i] = field.values()[i] >= safe_distance_m + kCellMargin_m ? 1 : 0;
-    }
-  }
-  int nx() const { return nx_; }
-  int num_cells() const { return static_cast<int>(free_.size()); }
-  int Index(int x, int y) const { return y * nx_ + x; }
-  bool Free(int x, int y) const {
-    return x >= 0 && y >= 0 && x < nx_ && y < ny_ && free_[Index(x, y)] != 0;
-  }
-  // A diagonal step needs the target and both orthogonal neighbours free (no
-  // corner cutting).
-  bool CanStep(int x, int y, int dx, int dy) const {
-    if (!Free(x + dx, y + dy)) return false;
-    return dx == 0 || dy == 0 || (Free(x + dx, y) && Free(x, y + dy));
-  }
+  using TraversableGrid::TraversableGrid;
   // A cell reached moving straight along (dx, dy) has a forced neighbour on
   // side (sx, sy) (perpendicular unit) when that side cell is free but its
   // predecessor along the line is blocked: no path through the previous cell
@@ -82,11 +60,6 @@ class JpsGrid {
   int Jump(int x, int y, int dx, int dy, int goal) const {
     return dx != 0 && dy != 0 ? JumpDiagonal(x, y, dx, dy, goal) : JumpStraight(x, y, dx, dy, goal);
   }
-
- private:
-  int nx_;
-  int ny_;
-  std::vector<std::uint8_t> free_;
 };
 
 int Sign(int v) { return (v > 0) - (v < 0); }
@@ -129,29 +102,6 @@ int SuccessorDirections(const JpsGrid& grid, int x, int y, int dx, int dy, int d
     }
   }
   return n;
-}
-
-// The traversable cell (own or one of the 8 around) nearest to p that p sees in
-// the field.
-int ConnectToGrid(const SignedDistanceField2& field, const JpsGrid& grid,
-                  const BaseFreeSpace& free_space, const Eigen::Vector2d& p) {
-  const GridGeometry2& g = field.geometry();
-  const Eigen::Vector2i c = g.CellOf(p);
-  int best = kNone;
-  double best_distance = std::numeric_limits<double>::infinity();
-  for (int a = -1; a <= 1; ++a) {
-    for (int b = -1; b <= 1; ++b) {
-      const int x = c.x() + a, y = c.y() + b;
-      if (!grid.Free(x, y)) continue;
-      const Eigen::Vector2d centre = g.CellCenter(x, y);
-      const double distance = (centre - p).norm();
-      if (distance < best_distance && free_space.IsSegmentFree(p, centre)) {
-        best = grid.Index(x, y);
-        best_distance = distance;
-      }
-    }
-  }
-  return best;
 }
 
 JumpPointSearchResult Fail(Status status, std::string reason) {

@@ -25,8 +25,10 @@ struct BenchRecord {
   bool used_hint = false;    ///< goal_hint was passed to the planner.
   Eigen::Isometry3d X_WE_goal = Eigen::Isometry3d::Identity();  ///< End-effector target.
   double base_distance_m = 0.0;  ///< Straight line between start and goal base positions.
-  /// No chassis motion joins start and goal (sim/scenes/base_reachability.h): the task cannot
-  /// be solved by any planner. Counted as a failure like any other, and reported apart.
+  /// No motion of the rigid lower body takes the base from the start to any position from
+  /// which the arm could reach the target (CertifyTargetUnreachable in
+  /// sim/scenes/base_reachability.h): no planner can solve the task. Counted as a failure like
+  /// any other, and reported apart.
   bool base_unreachable = false;
 
   // The method and its outcome.

@@ -131,9 +131,8 @@ std::vector<BenchRecord> RunBenchTask(const BenchTaskContext& c, int index) {
       BuildSceneDistanceFields(query.scene, PlannerFieldOptions(*c.kinematics));
   const double map_ms = MillisecondsSince(map_start);
   const bool base_unreachable =
-      CertifyBaseUnreachable(query.scene, *c.kinematics,
-                             {query.start.x_m, query.start.y_m},
-                             {bench_case.task.goal.x_m, bench_case.task.goal.y_m})
+      CertifyTargetUnreachable(query.scene, *c.kinematics, {query.start.x_m, query.start.y_m},
+                               query.X_WE_goal)
           .certified_unreachable;
 
   std::vector<BenchRecord> records;

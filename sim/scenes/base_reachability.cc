@@ -9,6 +9,7 @@
 #include "core/geometry/oriented_box.h"
 #include "core/map/grid_geometry.h"
 #include "core/planning/base_band.h"
+#include "core/robot/whole_body_ik.h"
 
 namespace topay {
 namespace {
@@ -93,6 +94,40 @@ std::vector<std::uint8_t> FloodFill(const GridGeometry2& g, const std::vector<st
   return reached;
 }
 
+// True if a border cell was reached (then the free outside of the grid was too).
+bool ReachesOutside(const GridGeometry2& g, const std::vector<std::uint8_t>& reached) {
+  const int nx = g.dims.x(), ny = g.dims.y();
+  for (int ix = 0; ix < nx; ++ix) {
+    if (reached[g.Index(ix, 0)] != 0 || reached[g.Index(ix, ny - 1)] != 0) return true;
+  }
+  for (int iy = 0; iy < ny; ++iy) {
+    if (reached[g.Index(0, iy)] != 0 || reached[g.Index(nx - 1, iy)] != 0) return true;
+  }
+  return false;
+}
+
+// True if the goal's cell, or a cell whose centre is within radius_m of p_goal, was reached,
+// or the disc leaves the grid and the fill reached the outside.
+bool ReachesGoalDisc(const GridGeometry2& g, const std::vector<std::uint8_t>& reached,
+                     const Eigen::Vector2i& goal_cell, const Eigen::Vector2d& p_goal,
+                     double radius_m) {
+  if (reached[g.Index(goal_cell.x(), goal_cell.y())] != 0) return true;
+  const Eigen::AlignedBox2d bounds = g.Bounds();
+  const Eigen::Vector2d r(radius_m, radius_m);
+  if (!bounds.contains(Eigen::AlignedBox2d(p_goal - r, p_goal + r)) && ReachesOutside(g, reached)) {
+    return true;
+  }
+  const int span = static_cast<int>(std::ceil(radius_m / g.resolution_m)) + 1;
+  for (int y = std::max(goal_cell.y() - span, 0); y <= std::min(goal_cell.y() + span, g.dims.y() - 1); ++y) {
+    for (int x = std::max(goal_cell.x() - span, 0); x <= std::min(goal_cell.x() + span, g.dims.x() - 1); ++x) {
+      if (reached[g.Index(x, y)] != 0 && (g.CellCenter(x, y) - p_goal).norm() <= radius_m) {
+        return true;
+      }
+    }
+  }
+  return false;
+}
+
 }  // namespace
 
 BaseReachability CertifyBaseUnreachable(const Scene& scene, const Kinematics& kinematics,
@@ -102,8 +137,10 @@ BaseReachability CertifyBaseUnreachable(const Scene& scene, const Kinematics& ki
   if (!p_WB_start_m.allFinite() || !p_WB_goal_m.allFinite()) {
     throw std::invalid_argument("CertifyBaseUnreachable: start or goal position is not finite");
   }
-  if (!(options.resolution_m > 0.0)) {
-    throw std::invalid_argument("CertifyBaseUnreachable: resolution_m must be > 0");
+  if (!(options.resolution_m > 0.0) || !(options.goal_radius_m >= 0.0) ||
+      !std::isfinite(options.goal_radius_m)) {
+    throw std::invalid_argument(
+        "CertifyBaseUnreachable: resolution_m must be > 0 and goal_radius_m finite and >= 0");
   }
   const Eigen::AlignedBox2d bounds(scene.bounds_W_m.min().head<2>(),
                                    scene.bounds_W_m.max().head<2>());
@@ -129,12 +166,26 @@ BaseReachability CertifyBaseUnreachable(const Scene& scene, const Kinematics& ki
   }
   const std::vector<std::uint8_t> reached = FloodFill(g, allowed, start);
   for (std::uint8_t r : reached) out.component_cells += r;
-  out.certified_unreachable = reached[g.Index(goal.x(), goal.y())] == 0;
+  out.certified_unreachable = !ReachesGoalDisc(g, reached, goal, p_WB_goal_m,
+                                                options.goal_radius_m + slack);
   out.reason = out.certified_unreachable
                    ? "no chain of cells the rigid lower body could occupy joins start and goal (" +
                          std::to_string(out.component_cells) + " cells reached from the start)"
                    : "start and goal are in one component of the rigid lower body's free space";
   return out;
+}
+
+BaseReachability CertifyTargetUnreachable(const Scene& scene, const Kinematics& kinematics,
+                                          const Eigen::Vector2d& p_WB_start_m,
+                                          const Eigen::Isometry3d& X_WE_target,
+                                          BaseReachabilityOptions options) {
+  if (!X_WE_target.matrix().allFinite()) {
+    throw std::invalid_argument("CertifyTargetUnreachable: target pose is not finite");
+  }
+  const WholeBodyIk ik(kinematics);
+  const Eigen::Vector3d p_W_wrist = X_WE_target * ik.p_EW();
+  options.goal_radius_m += ik.p_BS().head<2>().norm() + ik.shoulder_to_wrist_reach_m();
+  return CertifyBaseUnreachable(scene, kinematics, p_WB_start_m, p_W_wrist.head<2>(), options);
 }
 
 }  // namespace topay

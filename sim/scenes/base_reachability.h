@@ -4,6 +4,7 @@
 #include <string>
 
 #include <Eigen/Core>
+#include <Eigen/Geometry>
 
 #include "core/geometry/scene.h"
 #include "core/robot/kinematics.h"
@@ -13,6 +14,9 @@ namespace topay {
 /// Options of CertifyBaseUnreachable.
 struct BaseReachabilityOptions {
   double resolution_m = 0.01;  ///< Cell size of the test grid over the scene's xy bounds.
+  /// The goal is every base position within this distance (m) of the goal position, not just
+  /// the goal position: certified only when the start's component reaches none of them.
+  double goal_radius_m = 0.0;
 };
 
 /// What CertifyBaseUnreachable found.
@@ -37,7 +41,7 @@ struct BaseReachability {
 /// Certificate: each d_b is 1-Lipschitz, so every allowed p lies in a cell whose centre meets
 /// every bound less resolution / sqrt(2). A motion is a continuous curve of allowed p, so it
 /// visits a chain of 8-neighbouring such cells; if the flood fill from the start's cell misses
-/// the goal's cell, no motion exists (yaw and arm are free in the test, so it only ever
+/// the goal's cell (and every cell meeting the goal disc), no motion exists (yaw and arm are free in the test, so it only ever
 /// under-claims). The outside of the grid counts as free and joins every border cell the fill
 /// may enter, so scenes without walls are never falsely certified. Start or goal outside the
 /// grid: not certified. Throws std::invalid_argument for a non-finite position or
@@ -46,5 +50,15 @@ BaseReachability CertifyBaseUnreachable(const Scene& scene, const Kinematics& ki
                                         const Eigen::Vector2d& p_WB_start_m,
                                         const Eigen::Vector2d& p_WB_goal_m,
                                         const BaseReachabilityOptions& options = {});
+
+/// The same test for an end-effector target, whatever goal base pose a planner chooses: the
+/// goal disc is centred at the target's wrist centre W (WholeBodyIk::p_EW) with radius
+/// |p_BS| + the shoulder-to-wrist reach (triangle-inequality bounds, WholeBodyIk), which
+/// holds every base position from which the arm could reach the target. Certified: no base
+/// position the start can reach lets the arm touch the target.
+BaseReachability CertifyTargetUnreachable(const Scene& scene, const Kinematics& kinematics,
+                                          const Eigen::Vector2d& p_WB_start_m,
+                                          const Eigen::Isometry3d& X_WE_target,
+                                          BaseReachabilityOptions options = {});
 
 }  // namespace topay

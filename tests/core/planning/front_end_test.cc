@@ -24,6 +24,7 @@
 #include "core/planning/path_verification.h"
 #include "core/planning/planner_fields.h"
 #include "core/robot/kinematics.h"
+#include "core/robot/whole_body_ik.h"
 #include "sim/scenes/task_generator.h"
 #include "tests/common/make_box.h"
 
@@ -214,6 +215,79 @@ TEST_F(FrontEndTest, NarrowGapIsPassedAtTheFallbackClearance) {
   const FrontEndResult refused = strict.Plan(start, X_WE, goal);
   EXPECT_EQ(refused.status, FrontEndStatus::kNoBasePath) << refused.failure_reason;
   EXPECT_FALSE(refused.stats.used_fallback_base_clearance);
+}
+
+// A wall across the room with a gap of 0.80 m, narrower than the base (2 x 0.40 m + the
+// field's margin): the hint's base stands just beyond the gap, the target hangs in it. The
+// reachable-goal search finds a goal just before the gap, on the start's side; without it the
+// plan fails for want of a base path.
+TEST_F(FrontEndTest, AGoalBeyondAnImpassableGapIsApproachedFromTheStartsSide) {
+  Eigen::Isometry3d X_WE = Eigen::Isometry3d::Identity();
+  X_WE.linear() = Eigen::AngleAxisd(M_PI, Eigen::Vector3d::UnitX()).toRotationMatrix();  // down
+  X_WE.translation() = Eigen::Vector3d(0.0, 0.0, 0.45);
+  Scene scene = EmptyRoom();
+  const double half_gap_m = 0.40, wall_extent_m = 5.0 - half_gap_m;
+  for (double sign : {-1.0, 1.0}) {
+    scene.boxes.push_back(MakeBox(Eigen::Vector3d(0, sign * (half_gap_m + 0.5 * wall_extent_m), 0.75),
+                                  Eigen::Vector3d(0.1, wall_extent_m, 1.5)));
+  }
+  const SceneDistanceFields fields =
+      BuildSceneDistanceFields(scene, PlannerFieldOptions(kinematics_));
+  // The hint: an IK solution on the far side of the wall, clear on the fields.
+  const FrontEnd probe(kinematics_, fields.base_field_2d, fields.field_3d, DeterministicOptions());
+  WholeBodyValidityWorkspace workspace = probe.validity().MakeWorkspace();
+  WholeBodyIkOptions ik_options;
+  ik_options.max_base_candidates = 64;
+  ik_options.max_solutions = 64;
+  ik_options.time_budget_s = std::numeric_limits<double>::infinity();
+  WholeBodyIkQuery query;
+  query.reference_base = Eigen::Vector3d(2.0, 0.0, M_PI);
+  const WholeBodyIkResult solved = WholeBodyIk(kinematics_, ik_options).Solve(X_WE, nullptr, query);
+  std::optional<WholeBodyState> hint;
+  for (const IkSolution& solution : solved.solutions) {
+    if (solution.state.x_m > 0.1 &&
+        probe.validity().Check(solution.state, &workspace) == ValidityFailure::kNone) {
+      hint = solution.state;
+      break;
+    }
+  }
+  ASSERT_TRUE(hint.has_value()) << solved.solutions.size() << " IK solutions, none valid beyond the wall";
+  const WholeBodyState start = State(-3.0, 1.0, 0.0);
+
+  FrontEndOptions options = DeterministicOptions();
+  options.max_goal_attempts = 1;  // the first round tries the hint only
+  const FrontEnd front_end(kinematics_, fields.base_field_2d, fields.field_3d, options);
+  const FrontEndResult result = front_end.Plan(start, X_WE, hint);
+  ASSERT_TRUE(result.success()) << result.failure_reason;
+  EXPECT_TRUE(result.stats.used_reachable_goal_search);
+  EXPECT_FALSE(result.stats.goal_from_hint);
+  EXPECT_LT(result.goal.x_m, 0.0);
+  ExpectPathsExactlyValid(result, scene, start, X_WE, "gap");
+
+  options.reachable_goal_search = false;
+  const FrontEnd plain(kinematics_, fields.base_field_2d, fields.field_3d, options);
+  const FrontEndResult refused = plain.Plan(start, X_WE, hint);
+  EXPECT_EQ(refused.status, FrontEndStatus::kNoBasePath) << refused.failure_reason;
+  EXPECT_FALSE(refused.stats.used_reachable_goal_search);
+}
+
+// A target the arm cannot reach from any base position on the start's side: the plan fails
+// with the first round's reason and says that no reachable goal exists.
+TEST_F(FrontEndTest, AGoalOnlyReachableBehindAWallFailsWithBothReasons) {
+  const WholeBodyState hint = State(3.0, 0.0, M_PI);
+  const Eigen::Isometry3d X_WE = kinematics_.EndEffectorPose(hint);
+  Scene scene = EmptyRoom();
+  scene.boxes.push_back(MakeBox(Eigen::Vector3d(0, 0, 0.75), Eigen::Vector3d(0.1, 10.0, 1.5)));
+  const SceneDistanceFields fields =
+      BuildSceneDistanceFields(scene, PlannerFieldOptions(kinematics_));
+  const FrontEnd front_end(kinematics_, fields.base_field_2d, fields.field_3d,
+                           DeterministicOptions());
+  const FrontEndResult result = front_end.Plan(State(-3.0, 1.0, 0.0), X_WE, hint);
+  EXPECT_EQ(result.status, FrontEndStatus::kNoBasePath);
+  EXPECT_TRUE(result.stats.used_reachable_goal_search);
+  EXPECT_NE(result.failure_reason.find("no goal the base can reach"), std::string::npos)
+      << result.failure_reason;
+  EXPECT_TRUE(result.paths.empty());
 }
 
 TEST_F(FrontEndTest, PillarBetweenStartAndGoalGivesPathsInTwoClasses) {

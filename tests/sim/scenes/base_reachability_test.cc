@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include "core/robot/kinematics.h"
+#include "core/robot/whole_body_ik.h"
 #include "tests/common/make_box.h"
 #include "tests/core/robot/robot_test_model.h"
 
@@ -65,6 +66,58 @@ TEST_F(BaseReachabilityTest, AGapNarrowerThanTheChassisCertifiesUnreachable) {
   // Both on one side: reachable.
   EXPECT_FALSE(Certify(SplitRoom(0.70), kLeft, {-0.8, -1.2})
                    .certified_unreachable);
+}
+
+TEST_F(BaseReachabilityTest, AGoalDiscReachingTheStartsSideIsNotExcluded) {
+  // Left cells end at x = -(0.40 - 0.01 / sqrt 2 + 0.05) ~ -0.44 m; kRight is at x = 1.5.
+  BaseReachabilityOptions o;
+  o.goal_radius_m = 1.5;  // the disc ends at x = 0: still the far side
+  EXPECT_TRUE(Certify(SplitRoom(0.70), kLeft, kRight, o).certified_unreachable);
+  o.goal_radius_m = 2.2;  // the disc crosses the divider
+  EXPECT_FALSE(Certify(SplitRoom(0.70), kLeft, kRight, o).certified_unreachable);
+  o.goal_radius_m = -0.1;
+  EXPECT_THROW(Certify(SplitRoom(0.70), kLeft, kRight, o), std::invalid_argument);
+}
+
+TEST_F(BaseReachabilityTest, AGoalDiscLeavingTheBoundsJoinsTheOutside) {
+  // A 6 x 4 m map without walls but one along its top edge; the goal sits in a pen closed by
+  // that wall. The start's fill reaches the open bottom border, hence the (free) outside.
+  Scene s;
+  s.bounds_W_m = Eigen::AlignedBox3d(Eigen::Vector3d(-3, -2, 0), Eigen::Vector3d(3, 2, 1.6));
+  s.boxes.push_back(MakeBox({0, 1.95, 0.5}, {6, 0.1, 1}));      // top edge
+  s.boxes.push_back(MakeBox({0, 0.5, 0.5}, {2.1, 0.1, 1}));     // pen, bottom
+  s.boxes.push_back(MakeBox({-1.0, 1.25, 0.5}, {0.1, 1.5, 1}));  // pen, sides
+  s.boxes.push_back(MakeBox({1.0, 1.25, 0.5}, {0.1, 1.5, 1}));
+  const Eigen::Vector2d start(-1.5, -1.0), goal(0.0, 1.2);
+  BaseReachabilityOptions o;
+  o.goal_radius_m = 0.5;  // inside the map: only the pen's cells, none reached
+  EXPECT_TRUE(Certify(s, start, goal, o).certified_unreachable);
+  o.goal_radius_m = 0.95;  // leaves the map at the top, where the outside counts as reached
+  EXPECT_FALSE(Certify(s, start, goal, o).certified_unreachable);
+}
+
+TEST_F(BaseReachabilityTest, ATargetOnlyReachableFromTheFarSideIsCertified) {
+  const WholeBodyIk ik(kinematics_);
+  const double radius_m = ik.p_BS().head<2>().norm() + ik.shoulder_to_wrist_reach_m();
+  ASSERT_LT(radius_m, 2.0);
+  // Wrist centre at x: the goal disc spans [x - radius, x + radius].
+  auto target_at = [&](double x) {
+    Eigen::Isometry3d X_WE = Eigen::Isometry3d::Identity();
+    X_WE.translation() = Eigen::Vector3d(x, 0.0, 0.6);
+    X_WE.translation() -= X_WE.linear() * ik.p_EW();
+    return X_WE;
+  };
+  const Scene room = SplitRoom(0.70);
+  const double far_x = std::min(radius_m + 0.5, 2.8);
+  const BaseReachability far = CertifyTargetUnreachable(room, kinematics_, kLeft, target_at(far_x));
+  EXPECT_EQ(far.certified_unreachable, far_x - radius_m > 0.0) << far.reason;
+  EXPECT_TRUE(far.certified_unreachable) << "radius " << radius_m;
+  // Just beyond the divider: the arm reaches over it from the left.
+  EXPECT_FALSE(CertifyTargetUnreachable(room, kinematics_, kLeft, target_at(0.3))
+                   .certified_unreachable);
+  Eigen::Isometry3d bad = target_at(1.0);
+  bad.translation().x() = std::numeric_limits<double>::quiet_NaN();
+  EXPECT_THROW(CertifyTargetUnreachable(room, kinematics_, kLeft, bad), std::invalid_argument);
 }
 
 TEST_F(BaseReachabilityTest, OnlyWhatTheRigidLowerBodyMeetsBlocks) {
