@@ -48,6 +48,17 @@ Kinematics::Kinematics(const RobotModel& model) : model_(model) {
     if (link.parent >= 0) ancestor_links_with_joints_[i] = ancestor_links_with_joints_[link.parent];
     if (link.q_index >= 0) ancestor_links_with_joints_[i].push_back(i);
   }
+  rotation_sin_terms_.assign(num_links, Eigen::Matrix3d::Zero());
+  rotation_cos_terms_.assign(num_links, Eigen::Matrix3d::Zero());
+  for (int i = 0; i < num_links; ++i) {
+    const Link& link = model_.links[i];
+    if (link.joint_type != JointType::kRevolute) continue;
+    const Eigen::Vector3d a = link.axis_J.normalized();
+    Eigen::Matrix3d K;
+    K << 0.0, -a.z(), a.y(), a.z(), 0.0, -a.x(), -a.y(), a.x(), 0.0;
+    rotation_sin_terms_[i] = link.X_PJ.linear() * K;
+    rotation_cos_terms_[i] = rotation_sin_terms_[i] * K;
+  }
   for (const CollisionSphere& sphere : model_.spheres)
     CheckIndex(sphere.link, num_links, "sphere link");
   if (model_.end_effector_link >= 0)
@@ -76,9 +87,25 @@ void Kinematics::Update(const WholeBodyState& state, KinematicsCache* cache) con
   for (int i = 0; i < num_links; ++i) {
     const Link& link = model_.links[i];
     const Eigen::Isometry3d& X_WP = link.parent < 0 ? cache->X_WB : cache->X_WL[link.parent];
-    const double q = link.q_index >= 0 ? state.q_rad(link.q_index) : 0.0;
-    // X_WC = X_WP * X_PJ * X_JC(q)  (URDF joint convention, see Link).
-    cache->X_WL[i] = X_WP * link.X_PJ * JointMotion(link, q);
+    // X_WC = X_WP * X_PJ * X_JC(q)  (URDF joint convention, see Link), with X_PC = X_PJ X_JC.
+    Eigen::Isometry3d& X_WC = cache->X_WL[i];
+    switch (link.joint_type) {
+      case JointType::kRevolute: {
+        const double q = state.q_rad(link.q_index);
+        const double s = std::sin(q), one_minus_c = 1.0 - std::cos(q);
+        const Eigen::Matrix3d R_PC =
+            link.X_PJ.linear() + s * rotation_sin_terms_[i] + one_minus_c * rotation_cos_terms_[i];
+        X_WC.linear().noalias() = X_WP.linear() * R_PC;
+        X_WC.translation().noalias() = X_WP.linear() * link.X_PJ.translation();
+        X_WC.translation() += X_WP.translation();
+        break;
+      }
+      case JointType::kPrismatic:
+        X_WC = X_WP * link.X_PJ * JointMotion(link, state.q_rad(link.q_index));
+        break;
+      default:
+        X_WC = X_WP * link.X_PJ;
+    }
   }
   for (size_t s = 0; s < model_.spheres.size(); ++s) {
     const CollisionSphere& sphere = model_.spheres[s];

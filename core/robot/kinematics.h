@@ -72,6 +72,11 @@ class Kinematics {
   // For each link, the indices of the links on its path from the root (ancestors and itself)
   // whose joint is movable, so Jacobians visit only the joints that move it.
   std::vector<std::vector<int>> ancestor_links_with_joints_;
+  // For each revolute link, R_PJ K and R_PJ K^2 (K: the cross-product matrix of the unit joint
+  // axis), so that R_PC(q) = R_PJ R(q) = R_PJ + sin q R_PJ K + (1 - cos q) R_PJ K^2 (Rodrigues)
+  // costs two scaled additions instead of an axis-angle conversion and a 3x3 product.
+  std::vector<Eigen::Matrix3d> rotation_sin_terms_;
+  std::vector<Eigen::Matrix3d> rotation_cos_terms_;
 };
 
 }  // namespace topay

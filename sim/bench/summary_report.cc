@@ -75,8 +75,9 @@ std::string SummaryMarkdown(const std::vector<MethodSummary>& summaries, const B
       << " thread(s), time limit " << Cell(info.time_limit_ms, 0) << " ms, " << info.base_limits
       << " base limits, hint " << (info.use_hint ? "on" : "off")
       << ". T.P. and T.D. over each method's successful tasks; common: the " << common
-      << " task(s) every method solved. Unreachable: tasks no chassis motion can solve "
-         "(a planner-independent certificate); S.R. reachable excludes them.\n";
+      << " task(s) every method solved. Unreachable: tasks certified unsolvable (no motion "
+         "of the rigid lower body brings the target within the arm's reach, a planner-"
+         "independent test); S.R. reachable excludes them.\n";
   return out.str();
 }
 

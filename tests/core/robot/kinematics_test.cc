@@ -1,6 +1,8 @@
 #include <cmath>
+#include <cstdlib>
 #include <numbers>
 #include <stdexcept>
+#include <vector>
 
 #include <gtest/gtest.h>
 
@@ -111,6 +113,31 @@ TEST_F(KinematicsTest, JointOneTurnsTheArmAboutItsAxis) {
   EXPECT_NEAR(r.norm(), 0.256 + 0.21 + 0.144, 1e-12);
   // Horizontal direction: the mount's x axis (yaw -45 deg) turned by q1 = 0.5 rad.
   EXPECT_NEAR(std::atan2(r.y(), r.x()), -std::numbers::pi / 4 + 0.5, 1e-12);
+}
+
+// Update (Rodrigues terms precomputed per link) equals the URDF composition written out with
+// Eigen's axis-angle rotation, X_WC = X_WP X_PJ R(axis, q), at random configurations.
+TEST_F(KinematicsTest, UpdateMatchesTheAxisAngleComposition) {
+  std::srand(3);
+  for (int trial = 0; trial < 50; ++trial) {
+    const Eigen::VectorXd z = Eigen::VectorXd::Random(3 + model_.num_joints()) * 3.0;
+    const KinematicsCache cache = At(z);
+    const WholeBodyState state = WholeBodyState::FromVector(z);
+    std::vector<Eigen::Isometry3d> X_WL(model_.links.size());
+    for (std::size_t i = 0; i < model_.links.size(); ++i) {
+      const Link& link = model_.links[i];
+      const Eigen::Isometry3d& X_WP = link.parent < 0 ? state.BasePose() : X_WL[link.parent];
+      Eigen::Isometry3d X_JC = Eigen::Isometry3d::Identity();
+      if (link.joint_type == JointType::kRevolute) {
+        X_JC.linear() = Eigen::AngleAxisd(state.q_rad(link.q_index), link.axis_J).toRotationMatrix();
+      } else if (link.joint_type == JointType::kPrismatic) {
+        X_JC.translation() = link.axis_J * state.q_rad(link.q_index);
+      }
+      X_WL[i] = X_WP * link.X_PJ * X_JC;
+      EXPECT_LT((cache.X_WL[i].matrix() - X_WL[i].matrix()).norm(), 1e-12)
+          << "link " << link.name << ", trial " << trial;
+    }
+  }
 }
 
 TEST_F(KinematicsTest, SphereJacobiansMatchCentralDifferences) {
