@@ -37,13 +37,7 @@ TEST(BaseReachableRegionTest, AgreesWithJumpPointSearch) {
   Rng rng(7);
   int inside = 0, outside = 0;
   for (int room = 0; room < 5; ++room) {
-    std::vector<OrientedBox> boxes;
-    for (int k = 0; k < 30; ++k) {
-      boxes.push_back(MakeBox(Eigen::Vector3d(rng.Uniform(-7, 7), rng.Uniform(-5, 5), 0.5),
-                              Eigen::Vector3d(rng.Uniform(0.2, 3.0), rng.Uniform(0.2, 3.0), 1.0),
-                              rng.Uniform(0, 3.14)));
-    }
-    const SignedDistanceField2 field = BaseField(Room(boxes));
+    const SignedDistanceField2 field = BaseField(Room(RandomBoxes(rng, 30)));
     const BaseFreeSpace space(field, kRequired);
     Eigen::Vector2d start;
     do {

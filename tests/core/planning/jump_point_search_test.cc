@@ -66,13 +66,8 @@ TEST(JumpPointSearchTest, MatchesDijkstraOnRandomRooms) {
   Rng rng(42);
   int num_compared = 0, num_unreachable = 0;
   for (int room = 0; room < 6; ++room) {
-    std::vector<OrientedBox> boxes;
-    for (int k = 0; k < 25; ++k) {
-      boxes.push_back(MakeBox(Eigen::Vector3d(rng.Uniform(-7, 7), rng.Uniform(-5, 5), 0.5),
-                              Eigen::Vector3d(rng.Uniform(0.2, 3.0), rng.Uniform(0.2, 3.0), 1.0),
-                              rng.Uniform(0, 3.14)));
-    }
-    const SignedDistanceField2 field = BaseField(Room(boxes));
+    const Scene room_scene = Room(RandomBoxes(rng, 25));
+    const SignedDistanceField2 field = BaseField(room_scene);
     const BaseFreeSpace space(field, kRequired);
     const GridGeometry2& g = field.geometry();
     JumpPointSearchOptions options;
@@ -98,7 +93,7 @@ TEST(JumpPointSearchTest, MatchesDijkstraOnRandomRooms) {
       ++num_compared;
       ASSERT_TRUE(result.ok()) << result.reason;
       EXPECT_NEAR(result.grid_length_m, reference * g.resolution_m, 1e-9);
-      ExpectPathCollisionFree(Room(boxes), field, result.path_W_m);
+      ExpectPathCollisionFree(room_scene, field, result.path_W_m);
     }
   }
   EXPECT_GT(num_compared, 30);

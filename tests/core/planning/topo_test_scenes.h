@@ -11,6 +11,7 @@
 #include <limits>
 #include <vector>
 
+#include "core/common/random.h"
 #include "core/geometry/primitive_box_distance.h"
 #include "core/geometry/scene.h"
 #include "core/map/scene_distance_fields.h"
@@ -44,6 +45,17 @@ inline std::vector<OrientedBox> WallWithGap(double gap_center_y, double gap) {
   return {
       MakeBox(Eigen::Vector3d(0, 0.5 * (bottom + lo), 0.5), Eigen::Vector3d(0.2, lo - bottom, 1)),
       MakeBox(Eigen::Vector3d(0, 0.5 * (hi + top), 0.5), Eigen::Vector3d(0.2, top - hi, 1))};
+}
+
+/// `count` 1 m tall boxes at random positions, sizes (0.2-3 m) and yaws in the room.
+inline std::vector<OrientedBox> RandomBoxes(Rng& rng, int count) {
+  std::vector<OrientedBox> boxes;
+  for (int k = 0; k < count; ++k) {
+    boxes.push_back(MakeBox(Eigen::Vector3d(rng.Uniform(-7, 7), rng.Uniform(-5, 5), 0.5),
+                            Eigen::Vector3d(rng.Uniform(0.2, 3.0), rng.Uniform(0.2, 3.0), 1.0),
+                            rng.Uniform(0, 3.14)));
+  }
+  return boxes;
 }
 
 inline SignedDistanceField2 BaseField(const Scene& scene) {
