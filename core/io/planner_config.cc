@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "core/common/error.h"
+#include "core/io/optimizer_config.h"
 #include "core/io/yaml_section.h"
 
 namespace topay {
@@ -154,10 +155,12 @@ WholeBodyPlannerOptions ParsePlannerOptions(const std::string& yaml_text,
   YamlSection top(root, source);
   ReadPlanner(top.Section("planner"), &options);
   ReadFrontEnd(top.Section("front_end"), &options.front_end);
+  ReadOptimizerOptions(top.Section("optimizer"), &options.optimizer);
   ReadValidator(top.Section("validator"), &options.validator);
   top.Finish();
   try {
     CheckWholeBodyPlannerOptions(options);
+    CheckTrajectoryOptimizerOptions(options.optimizer);
     CheckFrontEndOptions(options.front_end);
   } catch (const std::invalid_argument& e) {
     throw ConfigError(source, "", e.what());

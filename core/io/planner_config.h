@@ -9,7 +9,8 @@ namespace topay {
 /// Loads the planner's options from YAML (config/planner/topay.yaml is the shipped file and
 /// documents every field). Sections: `planner` (WholeBodyPlannerOptions' own fields and an
 /// optional `base_limits`), `front_end` (FrontEndOptions, with goal, ik, topology (prm,
-/// enumeration, shortcut, pruning, jps), discretisation, rrt, validity) and `validator`
+/// enumeration, shortcut, pruning, jps), discretisation, rrt, validity), `optimizer`
+/// (TrajectoryOptimizerOptions: core/io/optimizer_config.h) and `validator`
 /// (TrajectoryValidatorOptions). Every field is optional: an absent one keeps the struct's
 /// default. Throws ConfigError naming the file and the dotted field for a malformed value or
 /// an unknown field, and for values the options' own checks reject.

@@ -1,5 +1,6 @@
 #include "core/optimization/sample_penalties.h"
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 #include <string>
@@ -184,7 +185,9 @@ double SamplePenalties::Evaluate(const SampleQuantities& sample, SampleQuantitie
 
 void SamplePenalties::EvaluateBase(const SampleQuantities& sample, SampleQuantities* gradient,
                                    double* total, PenaltyValues* costs) {
-  const double v_max = limits_.v_max_mps, w_max = limits_.omega_max_radps;
+  const double rate_scale = tightening_.rate_scale;
+  const double v_max = rate_scale * limits_.v_max_mps;
+  const double w_max = rate_scale * limits_.omega_max_radps;
   if (enabled(PenaltyTerm::kVelocityOmega)) {
     // Eq. (9), squared: (v_max omega +- omega_max v)^2 - (v_max omega_max)^2 <= 0.
     for (const double sign : {1.0, -1.0}) {
@@ -199,13 +202,13 @@ void SamplePenalties::EvaluateBase(const SampleQuantities& sample, SampleQuantit
   }
   if (enabled(PenaltyTerm::kAcceleration)) {
     // Eq. (10): a^2 - a_max^2 <= 0.
-    const double a = sample.a_mps2, a_max = limits_.a_max_mps2;
+    const double a = sample.a_mps2, a_max = rate_scale * limits_.a_max_mps2;
     const double slope = Add(PenaltyTerm::kAcceleration, a * a - a_max * a_max, total, costs);
     if (gradient) gradient->a_mps2 += slope * 2.0 * a;
   }
   if (enabled(PenaltyTerm::kYawAcceleration)) {
     // Eq. (10): beta^2 - beta_max^2 <= 0.
-    const double b = sample.beta_radps2, b_max = limits_.beta_max_radps2;
+    const double b = sample.beta_radps2, b_max = rate_scale * limits_.beta_max_radps2;
     const double slope = Add(PenaltyTerm::kYawAcceleration, b * b - b_max * b_max, total, costs);
     if (gradient) gradient->beta_radps2 += slope * 2.0 * b;
   }
@@ -215,7 +218,7 @@ void SamplePenalties::EvaluateBase(const SampleQuantities& sample, SampleQuantit
     const double distance = base_field_.DistanceAndGradient(
         Eigen::Vector2d(sample.x_m, sample.y_m), &field_gradient);
     const double slope =
-        Add(PenaltyTerm::kBaseObstacle, base_threshold_m_ + extra_base_m_ - distance, total, costs);
+        Add(PenaltyTerm::kBaseObstacle, base_threshold_m_ + tightening_.base_m - distance, total, costs);
     if (gradient && slope != 0.0) {
       gradient->x_m -= slope * field_gradient.x();
       gradient->y_m -= slope * field_gradient.y();
@@ -228,24 +231,26 @@ void SamplePenalties::EvaluateJoints(const SampleQuantities& sample, SampleQuant
   const bool position = enabled(PenaltyTerm::kJointPosition);
   const bool velocity = enabled(PenaltyTerm::kJointVelocity);
   const bool acceleration = enabled(PenaltyTerm::kJointAcceleration);
+  const double rate_scale = tightening_.rate_scale;
   for (int k = 0; k < num_joints(); ++k) {
     if (position) {
       // Eq. (11), q o q <= q_max2 for a range centred on m_k (h: half range - margin):
       // (q - m)^2 - h^2 <= 0.
-      const double e = sample.q_rad(k) - joint_middle_rad_(k), h = joint_half_range_rad_(k);
+      const double e = sample.q_rad(k) - joint_middle_rad_(k);
+      const double h = std::max(joint_half_range_rad_(k) - tightening_.joint_rad, 1e-3);
       const double slope = Add(PenaltyTerm::kJointPosition, e * e - h * h, total, costs);
       if (gradient) gradient->q_rad(k) += slope * 2.0 * e;
     }
     if (velocity) {
       // Eq. (11): q'^2 - q'_max^2 <= 0.
-      const double qd = sample.qd_radps(k), qd_max = qd_max_radps_(k);
+      const double qd = sample.qd_radps(k), qd_max = rate_scale * qd_max_radps_(k);
       const double slope =
           Add(PenaltyTerm::kJointVelocity, qd * qd - qd_max * qd_max, total, costs);
       if (gradient) gradient->qd_radps(k) += slope * 2.0 * qd;
     }
     if (acceleration) {
       // Eq. (12): q''^2 - q''_max^2 <= 0.
-      const double qdd = sample.qdd_radps2(k), qdd_max = qdd_max_radps2_(k);
+      const double qdd = sample.qdd_radps2(k), qdd_max = rate_scale * qdd_max_radps2_(k);
       const double slope =
           Add(PenaltyTerm::kJointAcceleration, qdd * qdd - qdd_max * qdd_max, total, costs);
       if (gradient) gradient->qdd_radps2(k) += slope * 2.0 * qdd;
@@ -272,7 +277,7 @@ void SamplePenalties::EvaluateGeometry(const SampleQuantities& sample,
       Eigen::Vector3d field_gradient;
       const double distance = arm_field_.DistanceAndGradient(cache_.p_WS[s], &field_gradient);
       const double slope =
-          Add(PenaltyTerm::kArmObstacle, sphere_thresholds_m_(s) + extra_arm_m_ - distance, total,
+          Add(PenaltyTerm::kArmObstacle, sphere_thresholds_m_(s) + tightening_.arm_m - distance, total,
               costs);
       if (gradient && slope != 0.0) {
         kinematics_.AddPointJacobianTransposeTimes(cache_, model.spheres[s].link, cache_.p_WS[s],

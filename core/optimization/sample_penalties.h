@@ -108,6 +108,16 @@ struct SamplePenaltyOptions {
   double Weight(PenaltyTerm term) const;
 };
 
+/// How much tighter than their options the penalties currently are: the optimizer tightens
+/// them when a result violates a hard limit between two samples, where raising a weight does
+/// not help (the samples already satisfy their constraint).
+struct PenaltyTightening {
+  double base_m = 0.0;     ///< Extra clearance of the base cylinder (m, >= 0).
+  double arm_m = 0.0;      ///< Extra clearance of every arm sphere (m, >= 0).
+  double joint_rad = 0.0;  ///< Extra joint position margin (rad, >= 0).
+  double rate_scale = 1.0; ///< Factor on every rate limit (v-omega, a, beta, q', q''), (0, 1].
+};
+
 /// The trajectory's quantities at one time sample, as far as the penalties read them; also
 /// used for the penalty's gradient with respect to each of them (same layout).
 struct SampleQuantities {
@@ -158,13 +168,11 @@ class SamplePenalties {
   /// constraints a result violates). Each must be finite and > 0 (not checked here).
   void set_weight_scales(const PenaltyValues& scales) { weight_scales_ = scales; }
   const PenaltyValues& weight_scales() const { return weight_scales_; }
-  /// Extra clearance (m, >= 0; not checked here) added to the base and to every sphere
-  /// threshold (0 by default; the optimizer raises it when the trajectory dips into a hard
-  /// clearance between samples).
-  void set_extra_clearances(double base_m, double arm_m) {
-    extra_base_m_ = base_m;
-    extra_arm_m_ = arm_m;
-  }
+  /// Tighter thresholds (none by default; values not checked here): the clearances grow by
+  /// base_m and arm_m, the joint ranges shrink by joint_rad on each side (to at least
+  /// 1 mrad of half range), every rate limit is multiplied by rate_scale.
+  void set_tightening(const PenaltyTightening& tightening) { tightening_ = tightening; }
+  const PenaltyTightening& tightening() const { return tightening_; }
   int num_joints() const { return kinematics_.num_joints(); }
 
   /// Quantities sized for this robot (allocates; reuse).
@@ -196,8 +204,7 @@ class SamplePenalties {
   BaseLimits limits_;  // rate_limit_fraction x the caller's
   SamplePenaltyOptions options_;
   PenaltyValues weight_scales_ = OnesPenaltyValues();
-  double extra_base_m_ = 0.0;
-  double extra_arm_m_ = 0.0;
+  PenaltyTightening tightening_;
   double base_threshold_m_ = 0.0;
   Eigen::VectorXd sphere_thresholds_m_;
   /// Spheres penalised on the 3D field: all but the rigid ones the base field covers

@@ -6,6 +6,9 @@
 #include <stdexcept>
 #include <string>
 
+#include <tbb/parallel_for.h>
+#include <tbb/task_arena.h>
+
 #include "core/optimization/joint_map.h"
 #include "core/optimization/time_map.h"
 #include "core/trajectory/quintic_basis.h"
@@ -38,12 +41,12 @@ TrajectoryObjective::TrajectoryObjective(const Kinematics& kinematics,
       options_(options),
       num_pieces_(num_pieces),
       num_joints_(kinematics.num_joints()),
-      penalties_(kinematics, base_field, arm_field, base_limits, options.penalties),
       end_effector_(kinematics, X_WE_goal),
       trajectory_(kinematics.num_joints(), std::max(num_pieces, 1),
                   TrajectoryOptions(std::max(options.panels_per_piece, 1))) {
   Require(num_pieces >= 1, "num_pieces = " + std::to_string(num_pieces) + " must be >= 1");
   Require(options.panels_per_piece >= 1, "panels_per_piece must be >= 1");
+  Require(options.sample_chunks >= 1, "sample_chunks must be >= 1");
   Require(std::isfinite(options.time_weight) && options.time_weight >= 0.0,
           "time_weight must be finite and >= 0");
   Require(options.path_fit_position_weight >= 0.0 && options.path_fit_angle_weight >= 0.0,
@@ -75,29 +78,34 @@ TrajectoryObjective::TrajectoryObjective(const Kinematics& kinematics,
   dC_dp_.setZero(2, M * K + 1);
   dC_dend_direct_.setZero(D);
   minco_gradient_.Resize(D, M);
-  sample_ = penalties_.MakeQuantities();
-  sample_gradient_ = penalties_.MakeQuantities();
-  values_.setZero(D, 4);
-  weights_.setZero(D, 3);
+  const PathFitWeights fit{options.path_fit_position_weight, options.path_fit_angle_weight};
+  const int chunks = std::min(options.sample_chunks, M);
+  for (int c = 0; c < chunks; ++c) {
+    samplers_.push_back(std::make_unique<PieceSampler>(
+        kinematics, base_field, arm_field, base_limits, options.penalties, fit, M, K));
+  }
+  sampler_finished_.assign(chunks, 0);
   end_state_.q_rad.setZero(num_joints_);
 }
 
 void TrajectoryObjective::set_terms(const ObjectiveTerms& terms) {
   terms_ = terms;
-  penalties_.set_enabled(terms.penalties);
+  for (auto& sampler : samplers_) sampler->penalties().set_enabled(terms.penalties);
 }
 
 void TrajectoryObjective::set_penalty_scales(const PenaltyValues& scales) {
   for (double scale : scales) {
     Require(std::isfinite(scale) && scale > 0.0, "penalty scales must be finite and > 0");
   }
-  penalties_.set_weight_scales(scales);
+  for (auto& sampler : samplers_) sampler->penalties().set_weight_scales(scales);
 }
 
-void TrajectoryObjective::set_extra_clearances(double base_m, double arm_m) {
-  Require(std::isfinite(base_m) && base_m >= 0.0 && std::isfinite(arm_m) && arm_m >= 0.0,
-          "extra clearances must be finite and >= 0");
-  penalties_.set_extra_clearances(base_m, arm_m);
+void TrajectoryObjective::set_tightening(const PenaltyTightening& t) {
+  Require(std::isfinite(t.base_m) && t.base_m >= 0.0 && std::isfinite(t.arm_m) &&
+              t.arm_m >= 0.0 && std::isfinite(t.joint_rad) && t.joint_rad >= 0.0,
+          "tightening clearances and joint margin must be finite and >= 0");
+  Require(t.rate_scale > 0.0 && t.rate_scale <= 1.0, "tightening rate_scale must be in (0, 1]");
+  for (auto& sampler : samplers_) sampler->penalties().set_tightening(t);
 }
 
 void TrajectoryObjective::set_multiplier(const Vector6d& lambda, double rho) {
@@ -242,100 +250,46 @@ bool TrajectoryObjective::AnyPenalty() const {
   return false;
 }
 
-void TrajectoryObjective::AddSamples(bool with_gradient) {
-  if (!AnyPenalty() && !(terms_.path_fit && has_reference_)) return;
-  for (int j = 0; j < num_pieces_; ++j) {
-    if (stop_.stop_requested()) {
-      stopped_ = true;
-      return;
-    }
-    AddPieceSamples(j, with_gradient);
+bool TrajectoryObjective::NeedsGeometry() const {
+  using T = PenaltyTerm;
+  for (const T term : {T::kArmObstacle, T::kSelfCollision, T::kChassis}) {
+    if (terms_.penalties[static_cast<int>(term)]) return true;
   }
+  return false;
 }
 
-// Eq. (23) for piece j: sum_l w_l T_j / K P(t_l), t_l = l T_j / K, plus the path fit.
-// With V the D x 4 values (position and derivatives 1-3 of every dimension) and G the D x 3
-// weighted dCost/d(position, 1st, 2nd derivative) of the sample:
-//   dCost/dc_j += [beta0 beta1 beta2] G^T,
-//   dCost/dT_j += w_l / K P + (l / K) sum_d (G_d0 V_d1 + G_d1 V_d2 + G_d2 V_d3)   (t moves with T),
-//   dCost/dp_g += the weighted dP/d(x, y) (the Simpson sample g = jK + l; its own dependence
-//   on c and T is ArcYawTrajectory::PropagateGradient's).
-void TrajectoryObjective::AddPieceSamples(int piece, bool with_gradient) {
-  const int K = panels_per_piece();
-  const int N = num_joints_;
-  const double T = durations_s_(piece);
-  const auto c = trajectory_.minco().coefficients().middleRows(kBlock * piece, kBlock);
-  const Eigen::Matrix2Xd& positions = trajectory_.positions().positions();
-  const bool penalties_on = AnyPenalty();
+// Eq. (23) over all pieces, chunk by chunk (PieceSampler), then the chunks' sums in order.
+void TrajectoryObjective::AddSamples(bool with_gradient) {
   const bool fit = terms_.path_fit && has_reference_;
-  Eigen::Matrix<double, kBlock, 4> basis;
-  for (int l = 0; l <= K; ++l) {
-    const double t = T * l / K;
-    for (int order = 0; order < 4; ++order) basis.col(order) = QuinticBasis(t, order);
-    values_.noalias() = c.transpose() * basis;
-    const int g = piece * K + l;
-    sample_.x_m = positions(0, g);
-    sample_.y_m = positions(1, g);
-    sample_.yaw_rad = values_(1, 0);
-    sample_.v_mps = values_(0, 1);
-    sample_.a_mps2 = values_(0, 2);
-    sample_.omega_radps = values_(1, 1);
-    sample_.beta_radps2 = values_(1, 2);
-    sample_.q_rad = values_.col(0).tail(N);
-    sample_.qd_radps = values_.col(1).tail(N);
-    sample_.qdd_radps2 = values_.col(2).tail(N);
-    const double trapezoid = (l == 0 || l == K) ? 0.5 : 1.0;
-    const double w_time = trapezoid * T / K;  // eq. (23): T_j / K, trapezoid weights
-    double penalty = 0.0;
-    if (penalties_on) {
-      PenaltyValues costs{};
-      penalty = penalties_.Evaluate(sample_, with_gradient ? &sample_gradient_ : nullptr, &costs);
-      for (int term = 0; term < kNumPenaltyTerms; ++term) {
-        breakdown_.penalties[term] += w_time * costs[term];
-      }
+  if (!AnyPenalty() && !fit) return;
+  PieceSampleContext context;
+  context.trajectory = &trajectory_;
+  context.durations_s = &durations_s_;
+  context.reference = fit ? &reference_ : nullptr;
+  context.penalties_on = AnyPenalty();
+  context.with_gradient = with_gradient;
+  context.dC_dc = &dC_dc_;
+  context.dC_dT = &dC_dT_;
+  const int chunks = static_cast<int>(samplers_.size());
+  const auto run_chunk = [&](int c) {
+    sampler_finished_[c] = samplers_[c]->Run(context, c * num_pieces_ / chunks,
+                                             (c + 1) * num_pieces_ / chunks, stop_);
+  };
+  if (chunks > 1 && NeedsGeometry()) {
+    // Isolated: while this thread waits for the other chunks it takes no other work of the
+    // arena (such as another candidate's whole optimization).
+    tbb::this_task_arena::isolate([&] { tbb::parallel_for(0, chunks, run_chunk); });
+  } else {
+    for (int c = 0; c < chunks; ++c) run_chunk(c);
+  }
+  for (int c = 0; c < chunks; ++c) {
+    const PieceSampler& sampler = *samplers_[c];
+    if (!sampler_finished_[c]) stopped_ = true;
+    for (int term = 0; term < kNumPenaltyTerms; ++term) {
+      breakdown_.penalties[term] += sampler.penalty_costs()[term];
     }
-    if (!with_gradient && !fit) continue;
-    if (with_gradient) {
-      weights_.setZero();
-      if (penalties_on) {
-        const SampleQuantities& d = sample_gradient_;
-        weights_(0, 1) = w_time * d.v_mps;
-        weights_(0, 2) = w_time * d.a_mps2;
-        weights_(1, 0) = w_time * d.yaw_rad;
-        weights_(1, 1) = w_time * d.omega_radps;
-        weights_(1, 2) = w_time * d.beta_radps2;
-        weights_.col(0).tail(N) = w_time * d.q_rad;
-        weights_.col(1).tail(N) = w_time * d.qd_radps;
-        weights_.col(2).tail(N) = w_time * d.qdd_radps2;
-        dC_dp_(0, g) += w_time * d.x_m;
-        dC_dp_(1, g) += w_time * d.y_m;
-      }
-    }
-    if (fit) {
-      // Stage 1: w_fit (|p - p_ref|^2 + w_angle ((yaw - yaw_ref)^2 + |q - q_ref|^2)) with the
-      // trapezoid weight / K.
-      const int r = piece * (K + 1) + l;
-      const double w_fit = trapezoid / K;
-      const Eigen::Vector2d dp = positions.col(g) - reference_.p_W.col(r);
-      const double dyaw = sample_.yaw_rad - reference_.yaw_rad(r);
-      const double a = options_.path_fit_angle_weight, b = options_.path_fit_position_weight;
-      double dq_sq = 0.0;
-      for (int k = 0; k < N; ++k) {
-        const double e = sample_.q_rad(k) - reference_.q_rad(k, r);
-        dq_sq += e * e;
-        if (with_gradient) weights_(2 + k, 0) += w_fit * 2.0 * a * e;
-      }
-      breakdown_.path_fit += w_fit * (b * dp.squaredNorm() + a * (dyaw * dyaw + dq_sq));
-      if (with_gradient) {
-        weights_(1, 0) += w_fit * 2.0 * a * dyaw;
-        dC_dp_.col(g) += w_fit * 2.0 * b * dp;
-      }
-    }
-    if (!with_gradient) continue;
-    dC_dc_.middleRows(kBlock * piece, kBlock).noalias() +=
-        basis.leftCols<3>() * weights_.transpose();
-    const double dcost_dt = (weights_.array() * values_.rightCols<3>().array()).sum();
-    dC_dT_(piece) += trapezoid / K * penalty + static_cast<double>(l) / K * dcost_dt;
+    breakdown_.path_fit += sampler.path_fit();
+    if (with_gradient) dC_dp_ += sampler.dC_dp();
   }
 }
 

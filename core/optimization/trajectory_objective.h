@@ -1,12 +1,15 @@
 #pragma once
 
+#include <memory>
 #include <stop_token>
+#include <vector>
 
 #include <Eigen/Core>
+#include <Eigen/Geometry>
 
 #include "core/optimization/end_effector_alm_term.h"
 #include "core/optimization/lbfgs_objective.h"
-#include <Eigen/Geometry>
+#include "core/optimization/piece_sampler.h"
 
 #include "core/map/signed_distance_field2.h"
 #include "core/map/signed_distance_field3.h"
@@ -38,6 +41,13 @@ struct TrajectoryObjectiveOptions {
   /// the time).
   double path_fit_position_weight = 1000.0;
   double path_fit_angle_weight = 100.0;
+  /// The pieces are split into this many contiguous chunks, each sampled by its own
+  /// PieceSampler; while the geometric terms are on (stage 2) the chunks run as parallel TBB
+  /// tasks in the caller's task arena (isolated, so a waiting thread only helps its own
+  /// evaluation). The partition is fixed and the chunks' sums are added in chunk order, so
+  /// the result does not depend on how many threads run them. 1 = serial. Not in the
+  /// reference code (one thread per candidate path only).
+  int sample_chunks = 2;
 };
 
 /// Which parts of the objective Evaluate includes (all but the path fit by default: stage 2).
@@ -57,15 +67,6 @@ struct ObjectiveBreakdown {
   double path_fit = 0.0;
   PenaltyValues penalties{};  ///< Time integral of each term's weighted penalty.
   double total = 0.0;
-};
-
-/// Stage 1's reference: for every sample (piece j, panel end l = 0..K, index j (K + 1) + l),
-/// the initial path's base position, yaw (unwrapped) and joints at the same fraction of the
-/// same piece of the warm start (core/optimization/warm_start.h).
-struct PathReference {
-  Eigen::Matrix2Xd p_W;   ///< 2 x M (K + 1).
-  Eigen::VectorXd yaw_rad;  ///< M (K + 1).
-  Eigen::MatrixXd q_rad;  ///< N x M (K + 1).
 };
 
 /// The objective of the TopAY trajectory optimization (paper Sec. III-C, eqs. (6)-(23)) as a
@@ -114,9 +115,10 @@ class TrajectoryObjective : public LbfgsObjective {
   /// Multiplies each sample penalty term's weight (SamplePenalties::set_weight_scales).
   /// Throws std::invalid_argument unless every scale is finite and > 0.
   void set_penalty_scales(const PenaltyValues& scales);
-  /// Extra clearance (m) for the base and the arm spheres (SamplePenalties::
-  /// set_extra_clearances). Throws std::invalid_argument unless both are finite and >= 0.
-  void set_extra_clearances(double base_m, double arm_m);
+  /// Tighter penalty thresholds (SamplePenalties::set_tightening). Throws
+  /// std::invalid_argument unless the clearances and the joint margin are finite and >= 0 and
+  /// the rate scale is in (0, 1].
+  void set_tightening(const PenaltyTightening& tightening);
   const ObjectiveTerms& terms() const { return terms_; }
   /// PHR-ALM multiplier lambda (6) and penalty rho > 0 of the end-effector term.
   void set_multiplier(const Vector6d& lambda, double rho);
@@ -155,8 +157,9 @@ class TrajectoryObjective : public LbfgsObjective {
  private:
   bool Decode(const double* x);
   bool AnyPenalty() const;
+  /// Any term that needs forward kinematics (arm obstacle, self collision, chassis).
+  bool NeedsGeometry() const;
   void AddSamples(bool with_gradient);
-  void AddPieceSamples(int piece, bool with_gradient);
   void AddEndEffector(bool with_gradient);
   void WriteGradient(double* gradient) const;
 
@@ -165,7 +168,9 @@ class TrajectoryObjective : public LbfgsObjective {
   int num_pieces_;
   int num_joints_;
   ObjectiveTerms terms_;
-  SamplePenalties penalties_;
+  /// One per chunk of pieces (sample_chunks, at most M), each with its own penalties.
+  std::vector<std::unique_ptr<PieceSampler>> samplers_;
+  std::vector<char> sampler_finished_;  // per chunk: Run returned true
   EndEffectorAlmTerm end_effector_;  ///< PHR-ALM term of eq. (7).
   Eigen::Vector2d p0_W_;
   Vector6d lambda_ = Vector6d::Zero();
@@ -190,10 +195,6 @@ class TrajectoryObjective : public LbfgsObjective {
   Eigen::Matrix2Xd dC_dp_;  // 2 x (MK + 1)
   Eigen::VectorXd dC_dend_direct_;  // D: the end-effector term's direct d/d(s_f, yaw_f, q_f)
   MincoGradient minco_gradient_;
-  // Sample scratch.
-  SampleQuantities sample_, sample_gradient_;
-  Eigen::MatrixXd values_;   // D x 4: position, 1st, 2nd, 3rd derivative
-  Eigen::MatrixXd weights_;  // D x 3: dCost/d(position, 1st, 2nd derivative) of the sample
   // End-effector scratch.
   WholeBodyState end_state_;
   ObjectiveBreakdown breakdown_;

@@ -96,6 +96,28 @@ void EscalateViolatedPenalties(const FieldFeasibilityReport& report,
   }
 }
 
+/// A hard limit violated between two samples (the samples themselves may all be clear, so a
+/// larger weight alone does not help): moves that threshold past the shortfall and a step
+/// more. Clearances grow by shortfall + clearance_escalation_step_m, the joint margin by
+/// excess + joint_escalation_step_rad, the rate limits shrink by 1 / ratio x (1 -
+/// rate_escalation_step).
+void TightenViolatedThresholds(const FieldFeasibilityReport& report,
+                               const TrajectoryOptimizerOptions& options,
+                               PenaltyTightening* tightening) {
+  if (report.min_base_clearance_m < 0.0) {
+    tightening->base_m += options.clearance_escalation_step_m - report.min_base_clearance_m;
+  }
+  if (report.min_arm_clearance_m < 0.0) {
+    tightening->arm_m += options.clearance_escalation_step_m - report.min_arm_clearance_m;
+  }
+  if (report.max_joint_excess_rad > options.feasibility.joint_position_tolerance_rad) {
+    tightening->joint_rad += options.joint_escalation_step_rad + report.max_joint_excess_rad;
+  }
+  if (report.max_rate_ratio > 1.0 + options.feasibility.rate_tolerance) {
+    tightening->rate_scale *= (1.0 - options.rate_escalation_step) / report.max_rate_ratio;
+  }
+}
+
 /// The flatness baseline's options from the driver's (the shared parts; its own sampling and
 /// minimum-speed defaults stay).
 FlatnessOptimizerOptions FlatnessOptionsFrom(const TrajectoryOptimizerOptions& o) {
@@ -161,7 +183,20 @@ void CheckTrajectoryOptimizerOptions(const TrajectoryOptimizerOptions& o) {
   require(o.penalty_escalation_factor >= 1.0, "penalty_escalation_factor must be >= 1");
   require(std::isfinite(o.clearance_escalation_step_m) && o.clearance_escalation_step_m >= 0.0,
           "clearance_escalation_step_m must be finite and >= 0");
+  require(std::isfinite(o.joint_escalation_step_rad) && o.joint_escalation_step_rad >= 0.0,
+          "joint_escalation_step_rad must be finite and >= 0");
+  require(o.rate_escalation_step >= 0.0 && o.rate_escalation_step < 1.0,
+          "rate_escalation_step must be in [0, 1)");
   require(o.objective.panels_per_piece >= 1, "objective.panels_per_piece must be >= 1");
+  require(o.objective.sample_chunks >= 1, "objective.sample_chunks must be >= 1");
+  require(o.warm_start.piece_duration_s > 0.0 && o.warm_start.min_pieces >= 1 &&
+              o.warm_start.max_pieces >= o.warm_start.min_pieces,
+          "warm_start: piece_duration_s must be > 0 and 1 <= min_pieces <= max_pieces");
+  require(o.warm_start.rate_fraction > 0.0 && o.warm_start.rate_fraction <= 1.0,
+          "warm_start.rate_fraction must be in (0, 1]");
+  require(o.warm_start.min_duration_s > 0.0, "warm_start.min_duration_s must be > 0");
+  require(o.feasibility.sample_period_s > 0.0 && o.feasibility.rate_tolerance >= 0.0,
+          "feasibility: sample_period_s must be > 0 and rate_tolerance >= 0");
   require(std::isfinite(o.objective.time_weight) && o.objective.time_weight >= 0.0,
           "objective.time_weight must be finite and >= 0");
   CheckLbfgsOptions(o.lbfgs);
@@ -402,7 +437,7 @@ void TrajectoryOptimizer::RunStages(Run* run) const {
   Vector6d lambda = Vector6d::Zero();
   double rho = options_.alm_rho_initial;
   PenaltyValues scales = OnesPenaltyValues();
-  double extra_base_m = 0.0, extra_arm_m = 0.0;
+  PenaltyTightening tightening;
   for (int escalation = 0;; ++escalation) {
     if (!RunAugmentedLagrangian(run, &lambda, &rho)) break;
     if (CheckResult(run)) break;  // success
@@ -411,15 +446,8 @@ void TrajectoryOptimizer::RunStages(Run* run) const {
     EscalateViolatedPenalties(report, options_.feasibility, options_.penalty_escalation_factor,
                               &scales);
     objective.set_penalty_scales(scales);
-    // A clearance violated between samples: keep the samples farther (by the shortfall and
-    // a step more).
-    if (report.min_base_clearance_m < 0.0) {
-      extra_base_m += options_.clearance_escalation_step_m - report.min_base_clearance_m;
-    }
-    if (report.min_arm_clearance_m < 0.0) {
-      extra_arm_m += options_.clearance_escalation_step_m - report.min_arm_clearance_m;
-    }
-    objective.set_extra_clearances(extra_base_m, extra_arm_m);
+    TightenViolatedThresholds(report, options_, &tightening);
+    objective.set_tightening(tightening);
     ++summary.penalty_escalations;
   }
   summary.stage2_s = SecondsSince(stage_start);

@@ -58,14 +58,18 @@ struct TrajectoryOptimizerOptions {
   double alm_orientation_tolerance_rad = 0.01;
 
   /// If the result is infeasible on the fields (a penalty's optimum lies beyond its hard
-  /// limit, pulled by the end-effector term or by another penalty), the weights of the
-  /// violated terms are multiplied by penalty_escalation_factor and the ALM continues, up to
-  /// max_penalty_escalations times. A base or arm clearance violated (typically between two
-  /// samples) also raises that part's penalty threshold by the shortfall plus
-  /// clearance_escalation_step_m. Not in the reference code.
+  /// limit, pulled by the end-effector term or by another penalty, or the trajectory peaks
+  /// between two samples), the weights of the violated terms are multiplied by
+  /// penalty_escalation_factor, the violated thresholds are tightened (PenaltyTightening:
+  /// a clearance by its shortfall + clearance_escalation_step_m, the joint margin by the
+  /// excess + joint_escalation_step_rad, the rate limits by 1 / ratio x (1 -
+  /// rate_escalation_step)) and the ALM continues, up to max_penalty_escalations times. Not
+  /// in the reference code.
   int max_penalty_escalations = 2;
   double penalty_escalation_factor = 10.0;
   double clearance_escalation_step_m = 0.005;
+  double joint_escalation_step_rad = 0.005;
+  double rate_escalation_step = 0.01;
 
   // ---- Success -----------------------------------------------------------------------------
   /// The end-effector tolerances of a success (the and the validator's).

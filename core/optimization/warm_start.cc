@@ -141,6 +141,30 @@ void TimeThePath(const BaseLimits& base, const JointLimits& joints, double fract
   }
 }
 
+/// The duration of one rest-to-rest trapezoid over the whole path for each quantity (arc
+/// length, yaw, every joint: total travel at its rate and acceleration limits), the longest:
+/// the path driven without stopping at its vertices, a closer estimate of the optimized
+/// duration than the rest-to-rest runs (which stop at every turn).
+double ContinuousProfileDuration(const PathArrays& a, const BaseLimits& base,
+                                 const JointLimits& joints, double fraction) {
+  const int n = a.size(), num_joints = static_cast<int>(a.q.rows());
+  double distance = 0.0, turn = 0.0;
+  Eigen::VectorXd joint_travel = Eigen::VectorXd::Zero(num_joints);
+  for (int k = 1; k < n; ++k) {
+    distance += std::abs(a.s(k) - a.s(k - 1));
+    turn += std::abs(a.yaw(k) - a.yaw(k - 1));
+    joint_travel += (a.q.col(k) - a.q.col(k - 1)).cwiseAbs();
+  }
+  double duration = std::max(
+      RunTime(distance, fraction * base.v_max_mps, fraction * base.a_max_mps2),
+      RunTime(turn, fraction * base.omega_max_radps, fraction * base.beta_max_radps2));
+  for (int j = 0; j < num_joints; ++j) {
+    duration = std::max(duration, RunTime(joint_travel(j), fraction * joints.qd_max_radps(j),
+                                          fraction * joints.qdd_max_radps2(j)));
+  }
+  return duration;
+}
+
 /// Linear interpolation of the path at time t: x, y, s, yaw, q into the outputs.
 struct PathPoint {
   double x = 0.0, y = 0.0, s = 0.0, yaw = 0.0;
@@ -221,9 +245,12 @@ WarmStart MakeWarmStart(const WholeBodyPath& path, const WholeBodyState& start,
   warm.path_arc_length_m = arrays.s;
   warm.path_times_s = arrays.t;
   warm.total_duration_s = std::max(profile_s, options.min_duration_s);
-  const int M =
-      std::clamp(static_cast<int>(std::ceil(warm.total_duration_s / options.piece_duration_s)),
-                 options.min_pieces, options.max_pieces);
+  warm.continuous_duration_s =
+      std::max(ContinuousProfileDuration(arrays, base_limits, joint_limits, options.rate_fraction),
+               options.min_duration_s);
+  const int M = std::clamp(
+      static_cast<int>(std::ceil(warm.continuous_duration_s / options.piece_duration_s)),
+      options.min_pieces, options.max_pieces);
   const int D = 2 + start.num_joints(), K = panels_per_piece;
   const double T = warm.total_duration_s / M;
   // Times on the path's profile for a time on the warm start's (they differ only when the

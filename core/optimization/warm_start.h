@@ -11,9 +11,15 @@ namespace topay {
 
 /// Options of MakeWarmStart. Defaults: the facts sheet's figures.
 struct WarmStartOptions {
-  /// Piece count M = ceil(profile duration / piece_duration_s), clamped to
-  /// [min_pieces, max_pieces] (facts sheet: total time / 1.5 s, at least 3 pieces).
-  double piece_duration_s = 1.5;
+  /// Piece count M = ceil(continuous profile duration / piece_duration_s), clamped to
+  /// [min_pieces, max_pieces] (facts sheet: total time / 1.5 s, at least 3 pieces). The
+  /// continuous profile drives the whole path without stopping at its vertices
+  /// (WarmStart::continuous_duration_s); the rest-to-rest profile that times the warm start
+  /// stops at every turn and gave about twice the pieces the optimized trajectory needs.
+  /// 1.0 s of the continuous profile: ~0.65 x the pieces of 1.5 s of the rest-to-rest one, at
+  /// the same success rate (1.5 s of the continuous profile lost a few points on Tables;
+  /// docs/benchmarks.md, "Sixth measurement").
+  double piece_duration_s = 1.0;
   int min_pieces = 3;
   int max_pieces = 64;  ///< A guard against runaway problem sizes.
   /// The trapezoidal profiles use this fraction of every rate limit (v, a, omega, beta, q',
@@ -38,6 +44,10 @@ struct WarmStart {
   Eigen::VectorXd path_arc_length_m;
   Eigen::VectorXd path_times_s;
   double total_duration_s = 0.0;
+  /// The piece count's duration: for each quantity (arc length, yaw, every joint) one
+  /// rest-to-rest trapezoid over its total travel along the path, the longest (at least
+  /// min_duration_s).
+  double continuous_duration_s = 0.0;
 };
 
 /// Builds the warm start from a front-end path (states with x, y, yaw, q) and the start state:
@@ -48,7 +58,8 @@ struct WarmStart {
 ///    the longest of the trapezoid times of its base distance (v_max, a_max), yaw change
 ///    (omega_max, beta_max) and every joint's travel (q'_max, q''_max), and its states are
 ///    timed along the trapezoid of the quantity that takes longest;
-///  - M from the total time (WarmStartOptions), equal durations, waypoints (s, yaw, q)
+///  - M from the continuous profile's duration (WarmStartOptions), equal durations (the
+///    rest-to-rest profile's total / M), waypoints (s, yaw, q)
 ///    interpolated linearly in time at the piece boundaries; head = start at rest (the path's
 ///    first state is replaced by the start), tail = the path's last state at rest;
 ///  - the reference for stage 1 at each sample time (j + l / K) T / M.

@@ -10,6 +10,9 @@
 #include <utility>
 #include <vector>
 
+#include <tbb/task_arena.h>
+#include <tbb/task_group.h>
+
 #include "core/planning/stop_deadline.h"
 
 namespace topay {
@@ -200,15 +203,22 @@ void WholeBodyPlanner::OptimizeCandidates(const WholeBodyState& start,
       }
     }
   };
-  if (options_.sequential) {
-    work();
-  } else {
-    const int hardware = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
-    const int workers = std::min(n, options_.num_threads > 0 ? options_.num_threads : hardware);
-    std::vector<std::jthread> threads;
-    for (int w = 1; w < workers; ++w) threads.emplace_back(work);
+  // The workers and the optimizers' parallel sample chunks share one arena of num_threads
+  // (1 in the sequential ablation): a worker without a candidate helps the others' chunks.
+  const int hardware = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+  const int threads =
+      options_.sequential ? 1 : (options_.num_threads > 0 ? options_.num_threads : hardware);
+  tbb::task_arena arena(threads);
+  arena.execute([&] {
+    if (options_.sequential) {
+      work();
+      return;
+    }
+    tbb::task_group group;
+    for (int w = 1; w < std::min(n, threads); ++w) group.run(work);
     work();  // the calling thread is a worker too
-  }  // jthreads join here
+    group.wait();
+  });
   const Clock::time_point t_end = Clock::now();
 
   double best = std::numeric_limits<double>::infinity();

@@ -29,10 +29,12 @@ struct WholeBodyPlannerOptions {
   /// the shortest-duration validated trajectory is returned.
   double early_termination_window_s = 0.05;
   /// The "Sequential" ablation: optimize every candidate, one after another on the calling
-  /// thread, no early termination.
+  /// thread (its sample chunks too), no early termination.
   bool sequential = false;
-  /// Optimization workers (candidates beyond this wait for a free worker). 0: the hardware's
-  /// thread count.
+  /// Threads of the optimization stage: candidates run on up to this many workers (more
+  /// wait for a free one), and a thread without a candidate helps the running optimizers'
+  /// sample chunks (TrajectoryObjectiveOptions::sample_chunks). 0: the hardware's thread
+  /// count.
   int num_threads = 0;
   /// Bound (s) on one Plan call, front end included: whatever is still running then is
   /// cancelled, and the plan fails unless a validated trajectory exists.

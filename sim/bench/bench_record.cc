@@ -18,6 +18,11 @@ void FillOutcome(const WholeBodyPlanResult& plan, double time_limit_ms, BenchRec
       chosen != nullptr && chosen->validation) {
     r->validation = plan::FiguresOf(*chosen->validation);
   }
+  if (const CandidateReport* chosen = plan.chosen_candidate()) {
+    const TrajectoryOptimizerSummary& o = chosen->optimization;
+    r->optimizer = OptimizerWork{o.num_pieces,       o.stage1_iterations,     o.stage2_iterations,
+                                 o.outer_iterations, o.objective_evaluations, o.penalty_escalations};
+  }
   if (r->success && r->tp_ms() > time_limit_ms) {
     std::ostringstream reason;
     reason << "time limit: T.P. " << r->tp_ms() << " ms > " << time_limit_ms << " ms";

@@ -12,6 +12,17 @@
 
 namespace topay::bench {
 
+/// The work of the optimizer run that produced the chosen trajectory (counts only, so that a
+/// deterministic run repeats them exactly).
+struct OptimizerWork {
+  int num_pieces = 0;
+  int stage1_iterations = 0;   ///< L-BFGS iterations of the path fit.
+  int stage2_iterations = 0;   ///< L-BFGS iterations over all ALM outer iterations.
+  int outer_iterations = 0;    ///< ALM outer iterations.
+  int evaluations = 0;         ///< Objective evaluations, both stages.
+  int penalty_escalations = 0;
+};
+
 /// One task run by one method: one line of tasks.jsonl (bench_record_json.h).
 struct BenchRecord {
   // The task.
@@ -50,6 +61,8 @@ struct BenchRecord {
   int num_base_paths = 0;  ///< Base paths, JPS included.
   /// The validator's figures of the chosen trajectory (unset: none).
   std::optional<plan::TrajectoryValidationFigures> validation;
+  /// The optimizer's work on the chosen trajectory (unset: none).
+  std::optional<OptimizerWork> optimizer;
 
   double tp_ms() const { return timings.total_ms; }
 };

@@ -47,6 +47,16 @@ Json ValidationJson(const std::optional<plan::TrajectoryValidationFigures>& figu
               {"end_orientation_error_rad", Number(v.end_orientation_error_rad)}};
 }
 
+Json OptimizerJson(const std::optional<OptimizerWork>& work) {
+  if (!work) return Json(nullptr);
+  return Json{{"pieces", work->num_pieces},
+              {"stage1_iterations", work->stage1_iterations},
+              {"stage2_iterations", work->stage2_iterations},
+              {"outer_iterations", work->outer_iterations},
+              {"evaluations", work->evaluations},
+              {"penalty_escalations", work->penalty_escalations}};
+}
+
 }  // namespace
 
 nlohmann::ordered_json RecordToJson(const BenchRecord& r) {
@@ -75,6 +85,7 @@ nlohmann::ordered_json RecordToJson(const BenchRecord& r) {
   json["num_classes"] = r.num_classes;
   json["num_base_paths"] = r.num_base_paths;
   json["validation"] = ValidationJson(r.validation);
+  json["optimizer"] = OptimizerJson(r.optimizer);
   return json;
 }
 

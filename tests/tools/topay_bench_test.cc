@@ -70,7 +70,7 @@ void ExpectLineKeys(const Json& line) {
        {"task",      "task_seed",      "scene_seed", "scene",  "range",           "method",
         "start",     "goal_hint",      "used_hint",  "target", "base_distance_m", "success",
         "status",    "failure_reason", "timings_ms", "map_ms", "duration_s",      "num_candidates",
-        "num_paths", "num_classes",    "validation", "base_unreachable"}) {
+        "num_paths", "num_classes",    "validation", "base_unreachable", "optimizer"}) {
     EXPECT_TRUE(line.contains(key)) << key << " in " << line.dump();
   }
   // A task certified unsolvable is never solved (the certificate and the validator agree).

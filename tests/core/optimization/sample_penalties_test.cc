@@ -144,6 +144,48 @@ TEST_F(SamplePenaltiesTest, VelocityOmegaTermIsTheCoupledConstraint) {
   EXPECT_EQ(penalties_.Evaluate(sample_, nullptr), 0.0);
 }
 
+// The feasible sample of FeasibleSampleHasNoPenalty becomes penalised in each tightened
+// term, and only there; the gradients of the tightened terms still match.
+TEST_F(SamplePenaltiesTest, TighteningMovesEachThreshold) {
+  sample_.x_m = -2.0;
+  sample_.y_m = -2.0;
+  sample_.v_mps = 0.5;
+  sample_.omega_radps = 0.3;
+  sample_.a_mps2 = 0.7;          // 0.98 x 0.8 = 0.784
+  sample_.q_rad(0) = 3.05;       // limit 3.1 - 0.01 margin (about z: no geometry change)
+  sample_.qd_radps(2) = 2.2;     // 0.98 x 2.35 = 2.303
+  ASSERT_EQ(penalties_.Evaluate(sample_, nullptr), 0.0);
+  const auto cost_of = [&](PenaltyTerm term) {
+    PenaltyValues costs{};
+    penalties_.Evaluate(sample_, nullptr, &costs);
+    return costs[static_cast<int>(term)];
+  };
+  PenaltyTightening tightening;
+  tightening.rate_scale = 0.85;  // a_max' = 0.666 < 0.7, q'_max' = 1.958 < 2.2
+  penalties_.set_tightening(tightening);
+  EXPECT_GT(cost_of(PenaltyTerm::kAcceleration), 0.0);
+  EXPECT_GT(cost_of(PenaltyTerm::kJointVelocity), 0.0);
+  EXPECT_EQ(cost_of(PenaltyTerm::kJointPosition), 0.0);
+  EXPECT_EQ(cost_of(PenaltyTerm::kVelocityOmega), 0.0);
+  ExpectActiveAndGradientMatches(PenaltyTerm::kAcceleration);
+  penalties_.set_enabled(AllPenalties());  // the gradient check enabled one term only
+  tightening = PenaltyTightening();
+  tightening.joint_rad = 0.1;  // half range 3.09 - 0.1 = 2.99 < 3.05
+  penalties_.set_tightening(tightening);
+  EXPECT_GT(cost_of(PenaltyTerm::kJointPosition), 0.0);
+  EXPECT_EQ(cost_of(PenaltyTerm::kAcceleration), 0.0);
+  ExpectActiveAndGradientMatches(PenaltyTerm::kJointPosition);
+  penalties_.set_enabled(AllPenalties());
+  // The base at (-2, -2) is 3.5 m from the box near the base: 5 m more clearance.
+  tightening = PenaltyTightening();
+  tightening.base_m = 5.0;
+  penalties_.set_tightening(tightening);
+  EXPECT_GT(cost_of(PenaltyTerm::kBaseObstacle), 0.0);
+  EXPECT_EQ(cost_of(PenaltyTerm::kJointPosition), 0.0);
+  penalties_.set_tightening(PenaltyTightening());
+  EXPECT_EQ(penalties_.Evaluate(sample_, nullptr), 0.0);
+}
+
 TEST_F(SamplePenaltiesTest, AccelerationTermsGradient) {
   sample_.x_m = -2.0;
   sample_.a_mps2 = -0.93;

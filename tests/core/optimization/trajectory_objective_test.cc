@@ -7,6 +7,7 @@
 #include <string>
 
 #include <gtest/gtest.h>
+#include <tbb/task_arena.h>
 
 #include "core/optimization/warm_start.h"
 #include "tests/core/optimization/optimization_test_world.h"
@@ -241,6 +242,46 @@ TEST_F(TrajectoryObjectiveTest, JointValuesStayInsideTheLimitsLessTheMargin) {
   EXPECT_LT(unpacked_end(3), 2.26 - 0.5);
 }
 
+// The pieces' chunks (sample_chunks) only change who computes what: 1, 2 or 3 chunks, run on
+// one or two threads, give the same cost and gradient up to the summation order.
+TEST_F(TrajectoryObjectiveTest, ChunkedSamplingEqualsSerialSampling) {
+  ASSERT_GE(warm_.num_pieces, 3) << "the test needs a chunk of more than one piece";
+  ObjectiveTerms terms;
+  terms.path_fit = true;
+  const auto evaluate = [&](int chunks, int threads, Eigen::VectorXd* gradient) {
+    TrajectoryObjectiveOptions options = options_;
+    options.sample_chunks = chunks;
+    TrajectoryObjective objective(*world_->kinematics, world_->base_field(), world_->arm_field(),
+                                  limits_, start_, X_WE_goal_, warm_.num_pieces, options);
+    objective.set_path_reference(warm_.reference);
+    Vector6d lambda;
+    lambda << 3.0, -2.0, 1.0, 0.5, -0.4, 0.2;
+    objective.set_multiplier(lambda, 50.0);
+    objective.set_terms(terms);
+    gradient->resize(objective.num_parameters());
+    double cost = 0.0;
+    tbb::task_arena arena(threads);
+    bool ok = false;
+    arena.execute([&] { ok = objective.Evaluate(x_.data(), &cost, gradient->data()); });
+    EXPECT_TRUE(ok);
+    return cost;
+  };
+  Eigen::VectorXd serial_gradient, gradient;
+  const double serial = evaluate(1, 1, &serial_gradient);
+  ASSERT_GT(serial, 0.0);
+  const double scale = serial_gradient.cwiseAbs().maxCoeff();
+  for (const auto& [chunks, threads] : {std::pair{2, 1}, std::pair{2, 2}, std::pair{3, 2}}) {
+    const double cost = evaluate(chunks, threads, &gradient);
+    EXPECT_NEAR(cost, serial, 1e-12 * serial) << chunks << " chunks, " << threads << " threads";
+    EXPECT_LE((gradient - serial_gradient).cwiseAbs().maxCoeff(), 1e-11 * scale)
+        << chunks << " chunks, " << threads << " threads";
+  }
+  // Two runs with the same chunks agree exactly, whatever the threads.
+  Eigen::VectorXd again;
+  EXPECT_EQ(evaluate(3, 1, &gradient), evaluate(3, 2, &again));
+  EXPECT_EQ(gradient, again);
+}
+
 TEST_F(TrajectoryObjectiveTest, EvaluateDoesNotAllocate) {
   ObjectiveTerms terms;
   terms.path_fit = true;
@@ -288,6 +329,11 @@ TEST_F(TrajectoryObjectiveTest, RejectsBadConstructionArguments) {
                std::invalid_argument);
   EXPECT_THROW(TrajectoryObjective(*world_->kinematics, world_->base_field(), world_->arm_field(),
                                    limits_, start_, X_WE_goal_, 0, options_),
+               std::invalid_argument);
+  TrajectoryObjectiveOptions no_chunks = options_;
+  no_chunks.sample_chunks = 0;
+  EXPECT_THROW(TrajectoryObjective(*world_->kinematics, world_->base_field(), world_->arm_field(),
+                                   limits_, start_, X_WE_goal_, 3, no_chunks),
                std::invalid_argument);
   PathReference wrong = warm_.reference;
   wrong.yaw_rad.resize(2);

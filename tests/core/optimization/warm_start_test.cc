@@ -23,8 +23,14 @@ constexpr int kPanels = 12;
 class WarmStartTest : public ::testing::Test {
  protected:
   WarmStartTest() : model_(testing::LoadTopayModel()) {}
+  // The facts sheet's 1.5 s pieces unless the test says otherwise (the default is 1.0 s).
+  static WarmStartOptions FactsSheetPieces() {
+    WarmStartOptions options;
+    options.piece_duration_s = 1.5;
+    return options;
+  }
   WarmStart Make(const WholeBodyPath& path, const WholeBodyState& start,
-                 const WarmStartOptions& options = {}) const {
+                 const WarmStartOptions& options = FactsSheetPieces()) const {
     return MakeWarmStart(path, start, limits_, model_.joint_limits, kPanels, options);
   }
   RobotModel model_;
@@ -90,14 +96,38 @@ TEST_F(WarmStartTest, ArmOnlyMotionIsTimedByTheSlowestJoint) {
   EXPECT_NEAR(warm.end(4), q(2), 1e-12);
 }
 
+// An L of two 4 m drives with a quarter turn in place at the corner: the warm start is timed
+// rest to rest (drive, turn, drive), but its piece count comes from the continuous profile,
+// one trapezoid over the 8 m (facts sheet: total time / 1.5 s).
+TEST_F(WarmStartTest, PieceCountFollowsTheContinuousProfile) {
+  const WholeBodyState start = MakeState(0.0, 0.0, 0.0, ReadyJoints());
+  const double half_pi = 0.5 * std::numbers::pi;
+  WholeBodyPath path;
+  path.states = {start, MakeState(4.0, 0.0, 0.0, ReadyJoints()),
+                 MakeState(4.0, 0.0, half_pi, ReadyJoints()),
+                 MakeState(4.0, 4.0, half_pi, ReadyJoints())};
+  path.times_s = {0.0, 1.0, 2.0, 3.0};
+  const WarmStart warm = Make(path, start);
+  const double drive = TrapezoidArrivalTime(4.0, 4.0, 1.0, 0.8);
+  const double turn = TrapezoidArrivalTime(half_pi, half_pi, 0.9, 1.0);
+  EXPECT_NEAR(warm.total_duration_s, 2.0 * drive + turn, 1e-9);
+  const double continuous = TrapezoidArrivalTime(8.0, 8.0, 1.0, 0.8);  // 9.25 s
+  EXPECT_NEAR(warm.continuous_duration_s, continuous, 1e-12);
+  ASSERT_EQ(warm.num_pieces, static_cast<int>(std::ceil(continuous / 1.5)));  // 7, not 9
+  EXPECT_TRUE(warm.durations_s.isApprox(
+      Eigen::VectorXd::Constant(warm.num_pieces, warm.total_duration_s / warm.num_pieces), 1e-12));
+  EXPECT_NEAR(warm.end(0), 8.0, 1e-12);
+  EXPECT_NEAR(warm.end(1), half_pi, 1e-12);
+}
+
 TEST_F(WarmStartTest, PieceCountOptions) {
   const WholeBodyState start = MakeState(0.0, 0.0, 0.0, ReadyJoints());
   const WholeBodyPath path = StraightPath(start, MakeState(20.0, 0.0, 0.0, ReadyJoints()));
-  WarmStartOptions options;
+  WarmStartOptions options = FactsSheetPieces();
   options.min_pieces = options.max_pieces = 10;
   EXPECT_EQ(Make(path, start, options).num_pieces, 10);
   const WarmStart slow = [&] {
-    WarmStartOptions half;
+    WarmStartOptions half = FactsSheetPieces();
     half.rate_fraction = 0.5;
     return Make(path, start, half);
   }();

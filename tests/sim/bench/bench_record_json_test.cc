@@ -112,7 +112,7 @@ TEST(BenchRecordJsonTest, TimingsAreUnderOneKeyAndFiguresAreThere) {
   // No other key holds a wall-clock figure: the top-level keys are exactly these.
   std::vector<std::string> keys;
   for (auto it = j.begin(); it != j.end(); ++it) keys.push_back(it.key());
-  EXPECT_EQ(keys.size(), 24u);
+  EXPECT_EQ(keys.size(), 25u);
 }
 
 TEST(BenchRecordJsonTest, AFailureHasNullDurationAndValidation) {
@@ -127,6 +127,7 @@ TEST(BenchRecordJsonTest, AFailureHasNullDurationAndValidation) {
   const nlohmann::json j = nlohmann::json::parse(line);
   EXPECT_TRUE(j["duration_s"].is_null());
   EXPECT_TRUE(j["validation"].is_null());
+  EXPECT_TRUE(j["optimizer"].is_null());
   EXPECT_EQ(j["failure_reason"], "no goal");
 }
 
@@ -161,6 +162,10 @@ TEST(BenchRecordTest, CopiesCountsAndTheChosenValidation) {
   report.worst_limit.ratio = 0.9;
   report.worst_limit.limit = Limit::kYawRate;
   plan.candidates[1].validation = report;
+  plan.candidates[1].optimization.num_pieces = 7;
+  plan.candidates[1].optimization.stage2_iterations = 140;
+  plan.candidates[1].optimization.outer_iterations = 3;
+  plan.candidates[0].optimization.outer_iterations = 5;
   plan.chosen = 1;
   SampledTrajectory sampled;
   sampled.duration_s = 8.5;
@@ -176,6 +181,13 @@ TEST(BenchRecordTest, CopiesCountsAndTheChosenValidation) {
   ASSERT_TRUE(r.validation.has_value());
   EXPECT_DOUBLE_EQ(r.validation->min_clearance_m, 0.07);
   EXPECT_DOUBLE_EQ(r.validation->worst_limit_ratio, 0.9);
+  ASSERT_TRUE(r.optimizer.has_value());
+  EXPECT_EQ(r.optimizer->num_pieces, 7);
+  EXPECT_EQ(r.optimizer->stage2_iterations, 140);
+  EXPECT_EQ(r.optimizer->outer_iterations, 3);  // the chosen candidate's, not the first's
+  const nlohmann::json j = RecordToJson(r);
+  EXPECT_EQ(j["optimizer"]["pieces"], 7);
+  EXPECT_EQ(j["optimizer"]["outer_iterations"], 3);
 }
 
 }  // namespace
