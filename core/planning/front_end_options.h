@@ -34,7 +34,7 @@ struct FrontEndOptions {
   /// passes the arm search's base check.
   /// Front-end departures from the search's own defaults (which follow the 2D field's cell
   /// size): shortcut resampling every 0.05 m and UVD at 0.1 m (the facts sheet's map
-  /// resolution), so that the 0.02 m base field does not make them 2.5-5x slower.
+  /// resolution), so that the fine (0.01 m) base field does not make them 2.5-5x slower.
   TopologicalPathSearchOptions topology = DefaultTopologyOptions();
   /// Clearance (m) beyond the base radius for a second base path search, run when the first
   /// one (at topology.clearance_m, the facts sheet's 0.1 m) finds no path or finds the start

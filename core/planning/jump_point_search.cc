@@ -5,6 +5,7 @@
 #include <cmath>
 #include <limits>
 #include <queue>
+#include <unordered_map>
 
 #include "core/planning/base_free_space.h"
 #include "core/planning/base_path.h"
@@ -124,20 +125,27 @@ Status SearchJumpPoints(const JpsGrid& grid, int start, int goal, std::int64_t m
                         std::int64_t* num_expanded) {
   const int nx = grid.nx();
   const int gx = goal % nx, gy = goal / nx;
-  std::vector<double> cost(grid.num_cells(), std::numeric_limits<double>::infinity());
-  std::vector<int> parent(grid.num_cells(), kNone);
-  std::vector<std::uint8_t> closed(grid.num_cells(), 0);
+  // Sparse node states: A* over jump points touches few of the grid's cells (a dense array
+  // per search would cost more than the search on a fine grid).
+  struct Node {
+    double cost = std::numeric_limits<double>::infinity();
+    int parent = kNone;
+    bool closed = false;
+  };
+  std::unordered_map<int, Node> nodes;
+  nodes.reserve(4096);
   std::priority_queue<OpenEntry, std::vector<OpenEntry>, std::greater<>> open;
-  cost[start] = 0.0;
+  nodes[start].cost = 0.0;
   open.push({Octile(gx - start % nx, gy - start / nx), start});
   *num_expanded = 0;
   while (!open.empty()) {
     const int current = open.top().index;
     open.pop();
-    if (closed[current]) continue;  // stale entry
-    closed[current] = 1;
+    Node& node = nodes[current];
+    if (node.closed) continue;  // stale entry
+    node.closed = true;
     if (current == goal) {
-      for (int c = goal; c != kNone; c = parent[c]) jump_points->push_back(c);
+      for (int c = goal; c != kNone; c = nodes[c].parent) jump_points->push_back(c);
       std::reverse(jump_points->begin(), jump_points->end());
       return Status::kSuccess;
     }
@@ -145,22 +153,26 @@ Status SearchJumpPoints(const JpsGrid& grid, int start, int goal, std::int64_t m
     if ((*num_expanded & 255) == 1 && stop.stop_requested()) return Status::kCancelled;
     const int x = current % nx, y = current / nx;
     int dx = 0, dy = 0;
-    if (parent[current] != kNone) {
-      dx = Sign(x - parent[current] % nx);
-      dy = Sign(y - parent[current] / nx);
+    const int current_parent = node.parent;
+    const double current_cost = node.cost;
+    if (current_parent != kNone) {
+      dx = Sign(x - current_parent % nx);
+      dy = Sign(y - current_parent / nx);
     }
     int dirs[8][2];
     const int num_dirs = SuccessorDirections(grid, x, y, dx, dy, dirs);
     for (int k = 0; k < num_dirs; ++k) {
       const int next = grid.Jump(x, y, dirs[k][0], dirs[k][1], goal);
-      if (next == kNone || closed[next]) continue;
+      if (next == kNone) continue;
+      Node& successor = nodes[next];  // may rehash: `node` is not used below
+      if (successor.closed) continue;
       const int ux = next % nx, uy = next / nx;
       // Runs between jump points are straight or diagonal: their cost is the
       // octile distance.
-      const double g = cost[current] + Octile(ux - x, uy - y);
-      if (g < cost[next]) {
-        cost[next] = g;
-        parent[next] = current;
+      const double g = current_cost + Octile(ux - x, uy - y);
+      if (g < successor.cost) {
+        successor.cost = g;
+        successor.parent = current;
         open.push({g + Octile(gx - ux, gy - uy), next});
       }
     }

@@ -10,7 +10,7 @@ namespace topay {
 SceneDistanceFieldsOptions PlannerFieldOptions(const Kinematics& kinematics) {
   SceneDistanceFieldsOptions options;
   options.resolution_m = 0.05;
-  options.base_resolution_m = 0.02;
+  options.base_resolution_m = 0.01;
   options.base_exact_cap_m = 1.0;
   const RigidLowerBody body = RigidLowerBodyOf(kinematics);
   options.base_band = HeightBand{0.0, body.chassis_top_m};

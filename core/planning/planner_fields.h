@@ -10,12 +10,15 @@ namespace topay {
 ///  - 3D arm field at 0.05 m: the arm's exactness margin (WholeBodyValidityOptions) is
 ///    sqrt(3) x 0.05 = 0.087 m. At the benchmark's 0.1 m it would be 0.173 m, too much to
 ///    work near table tops and floating boxes;
-///  - 2D base field at 0.02 m of exact footprint distances at the cell centres, capped at
+///  - 2D base field at 0.01 m of exact footprint distances at the cell centres, capped at
 ///    1.0 m (SceneDistanceFieldsOptions::base_exact_cap_m, above every distance the planner
-///    compares with): the base's margin is 0.02 / sqrt(2) = 0.014 m (an EDT field's would be
-///    sqrt(2) x 0.02 = 0.028 m). The base (radius 0.40 m) must pass gaps barely wider than
+///    compares with): the base's margin is 0.01 / sqrt(2) = 0.007 m (an EDT field's would be
+///    sqrt(2) x 0.01 = 0.014 m). The base (radius 0.40 m) must pass gaps barely wider than
 ///    itself in the Tables rooms: on 100 Tables medium tasks, start and goal were connected
-///    for 98 at the exact radius, 92 at +0.028 m and 74 at +0.071 m;
+///    for 98 at the exact radius, 92 at +0.028 m and 74 at +0.071 m; at 0.01 m instead of
+///    0.02 m cells the planner solved 95 instead of 92 of 100 Tables medium tasks and 79-80
+///    instead of 77 large ones, for +5 ms of front end (the map build doubles, outside T.P.;
+///    docs/benchmarks.md, "Sixth measurement");
 ///  - the 2D field in two bands (SceneDistanceFieldsOptions::base_upper_band): obstacles up
 ///    to the chassis top against the base cylinder, and obstacles up to the top of the rigid
 ///    lower body (chassis and the arm's rigid spheres, RigidLowerBodyOf) plus the 3D field's

@@ -14,12 +14,8 @@ constexpr double kCellMargin_m = 1e-6;
 TraversableGrid::TraversableGrid(const SignedDistanceField2& field, double safe_distance_m)
     : nx_(field.geometry().dims.x()),
       ny_(field.geometry().dims.y()),
-      free_(static_cast<std::size_t>(nx_) * ny_) {
-  const std::vector<float>& values = field.values();
-  for (std::size_t i = 0; i < free_.size(); ++i) {
-    free_[i] = values[i] >= safe_distance_m + kCellMargin_m ? 1 : 0;
-  }
-}
+      values_(field.values().data()),
+      threshold_m_(safe_distance_m + kCellMargin_m) {}
 
 int ConnectToGrid(const SignedDistanceField2& field, const TraversableGrid& grid,
                   const BaseFreeSpace& free_space, const Eigen::Vector2d& p_W_m) {

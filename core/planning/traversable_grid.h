@@ -11,7 +11,8 @@ namespace topay {
 
 /// The cells of the base's 2D field whose centre value is at least a safe distance (base
 /// radius + clearance) plus 1e-6 m, a guard against rounding in the bilinear interpolation
-/// between such cells. Moves are 8-connected without corner cutting: a diagonal step needs
+/// between such cells. Read from the field's values on demand (no copy: a search touches few
+/// cells of a fine grid); the field must outlive the grid. Moves are 8-connected without corner cutting: a diagonal step needs
 /// both orthogonal neighbours traversable, so two cells are connected exactly when they are
 /// 4-connected. Shared by JumpPointSearch and BaseReachableRegion, so that both agree on
 /// which positions the base can reach.
@@ -23,10 +24,11 @@ class TraversableGrid {
 
   int nx() const { return nx_; }
   int ny() const { return ny_; }
-  int num_cells() const { return static_cast<int>(free_.size()); }
+  int num_cells() const { return nx_ * ny_; }
   int Index(int x, int y) const { return y * nx_ + x; }
   bool Free(int x, int y) const {
-    return x >= 0 && y >= 0 && x < nx_ && y < ny_ && free_[Index(x, y)] != 0;
+    return x >= 0 && y >= 0 && x < nx_ && y < ny_ &&
+           static_cast<double>(values_[Index(x, y)]) >= threshold_m_;
   }
   /// A diagonal step needs the target and both orthogonal neighbours free (no corner cutting).
   bool CanStep(int x, int y, int dx, int dy) const {
@@ -37,7 +39,8 @@ class TraversableGrid {
  private:
   int nx_;
   int ny_;
-  std::vector<std::uint8_t> free_;
+  const float* values_;  // the field's, x fastest
+  double threshold_m_;   // safe distance + the rounding guard
 };
 
 /// Index of the traversable cell (p_W_m's own or one of the 8 around it) whose centre is

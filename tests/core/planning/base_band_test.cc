@@ -43,7 +43,7 @@ TEST_F(BaseBandTest, PlannerFieldOptionsUseTwoBands) {
   const SceneDistanceFieldsOptions options = PlannerFieldOptions(kinematics_);
   const double arm_margin_m = std::sqrt(3.0) * 0.05;
   EXPECT_EQ(options.resolution_m, 0.05);
-  EXPECT_EQ(options.base_resolution_m, 0.02);
+  EXPECT_EQ(options.base_resolution_m, 0.01);
   EXPECT_NEAR(options.base_band.z_max_m, 0.155, 1e-9);
   ASSERT_TRUE(options.base_upper_band.has_value());
   EXPECT_NEAR(options.base_upper_band->z_max_m, 0.4915 + arm_margin_m, 1e-6);
