@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include "core/common/error.h"
+#include "tests/core/io/planner_config_cases.h"
 #include "core/io/planner_config.h"
 
 namespace topay {
@@ -99,11 +100,7 @@ optimizer:
 }
 
 TEST(OptimizerConfigTest, BadValuesNameTheField) {
-  struct Case {
-    const char* yaml;
-    const char* field;
-  };
-  const Case cases[] = {
+  const testing::BadConfigCase cases[] = {
       {"optimizer: {alm: {rho_initial: big}}", "optimizer.alm.rho_initial"},
       {"optimizer: {lbfgs: {memory: 2.5}}", "optimizer.lbfgs.memory"},
       {"optimizer: {objective: {penalties: {arm_weight: 1}}}",
@@ -111,15 +108,7 @@ TEST(OptimizerConfigTest, BadValuesNameTheField) {
       {"optimizer: {warm_start: {pieces: 3}}", "optimizer.warm_start.pieces"},
       {"optimizer: {run_stage1: sometimes}", "optimizer.run_stage1"},
   };
-  for (const Case& c : cases) {
-    try {
-      ParsePlannerOptions(c.yaml, "bad.yaml");
-      ADD_FAILURE() << "no error for: " << c.yaml;
-    } catch (const ConfigError& e) {
-      EXPECT_EQ(e.file(), "bad.yaml") << c.yaml;
-      EXPECT_EQ(e.field(), c.field) << c.yaml << " -> " << e.what();
-    }
-  }
+  for (const testing::BadConfigCase& c : cases) testing::ExpectConfigErrorNamesTheField(c);
 }
 
 TEST(OptimizerConfigTest, OutOfRangeValuesAreConfigErrors) {

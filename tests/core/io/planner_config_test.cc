@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include "core/common/error.h"
+#include "tests/core/io/planner_config_cases.h"
 
 namespace topay {
 namespace {
@@ -86,11 +87,7 @@ validator: {sample_period_s: 0.005}
 
 // Each bad file names the file and the dotted field.
 TEST(PlannerConfigTest, BadValuesNameTheField) {
-  struct Case {
-    const char* yaml;
-    const char* field;
-  };
-  const Case cases[] = {
+  const testing::BadConfigCase cases[] = {
       {"front_end: {rrt: {goal_bias: high}}", "front_end.rrt.goal_bias"},
       {"front_end: {rrt: {goal_bais: 0.3}}", "front_end.rrt.goal_bais"},
       {"front_end: {topology: {prm: {max_samples: 2.5}}}", "front_end.topology.prm.max_samples"},
@@ -103,15 +100,7 @@ TEST(PlannerConfigTest, BadValuesNameTheField) {
       {"plnner: {}", "plnner"},
       {"front_end: 3", "front_end"},
   };
-  for (const Case& c : cases) {
-    try {
-      ParsePlannerOptions(c.yaml, "bad.yaml");
-      ADD_FAILURE() << "no error for: " << c.yaml;
-    } catch (const ConfigError& e) {
-      EXPECT_EQ(e.file(), "bad.yaml") << c.yaml;
-      EXPECT_EQ(e.field(), c.field) << c.yaml << " -> " << e.what();
-    }
-  }
+  for (const testing::BadConfigCase& c : cases) testing::ExpectConfigErrorNamesTheField(c);
 }
 
 TEST(PlannerConfigTest, RangeChecksAndFileErrorsAreConfigErrors) {
