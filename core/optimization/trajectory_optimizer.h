@@ -33,7 +33,7 @@ struct TrajectoryOptimizerOptions {
   /// Stage 2's objective: jerk weights, time weight 50, K = 12, the penalty weights, margins
   /// and smoothing (core/optimization/trajectory_objective.h, sample_penalties.h).
   TrajectoryObjectiveOptions objective;
-  /// Piece count and initial durations (total time / 1.5 s, >= 3 pieces).
+  /// Piece count and initial durations (continuous-profile time / 1.0 s, >= 3 pieces).
   WarmStartOptions warm_start;
   /// The inner solver (memory 256, relative decrease 1e-4 over 3, up to 8000 iterations).
   LbfgsOptions lbfgs;
