@@ -189,17 +189,12 @@ void CheckTrajectoryOptimizerOptions(const TrajectoryOptimizerOptions& o) {
           "rate_escalation_step must be in [0, 1)");
   require(o.objective.panels_per_piece >= 1, "objective.panels_per_piece must be >= 1");
   require(o.objective.sample_chunks >= 1, "objective.sample_chunks must be >= 1");
-  require(o.warm_start.piece_duration_s > 0.0 && o.warm_start.min_pieces >= 1 &&
-              o.warm_start.max_pieces >= o.warm_start.min_pieces,
-          "warm_start: piece_duration_s must be > 0 and 1 <= min_pieces <= max_pieces");
-  require(o.warm_start.rate_fraction > 0.0 && o.warm_start.rate_fraction <= 1.0,
-          "warm_start.rate_fraction must be in (0, 1]");
-  require(o.warm_start.min_duration_s > 0.0, "warm_start.min_duration_s must be > 0");
   require(o.feasibility.sample_period_s > 0.0 && o.feasibility.rate_tolerance >= 0.0,
           "feasibility: sample_period_s must be > 0 and rate_tolerance >= 0");
   require(std::isfinite(o.objective.time_weight) && o.objective.time_weight >= 0.0,
           "objective.time_weight must be finite and >= 0");
   CheckLbfgsOptions(o.lbfgs);
+  CheckWarmStartOptions(o.warm_start);
 }
 
 std::string_view ToString(TrajectoryOptimizerStatus status) {

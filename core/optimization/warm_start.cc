@@ -217,12 +217,7 @@ void CheckInputs(const WholeBodyPath& path, const WholeBodyState& start, const B
   Require((joints.qd_max_radps.array() > 0.0).all() && (joints.qdd_max_radps2.array() > 0.0).all(),
           "joint rate limits must be > 0");
   Require(panels >= 1, "panels_per_piece must be >= 1");
-  Require(options.piece_duration_s > 0.0 && options.min_pieces >= 1 &&
-              options.max_pieces >= options.min_pieces,
-          "piece_duration_s must be > 0 and 1 <= min_pieces <= max_pieces");
-  Require(options.rate_fraction > 0.0 && options.rate_fraction <= 1.0,
-          "rate_fraction must be in (0, 1]");
-  Require(options.min_duration_s > 0.0, "min_duration_s must be > 0");
+  CheckWarmStartOptions(options);
   const WholeBodyState& first = path.states.front();
   const double offset_m = std::hypot(first.x_m - start.x_m, first.y_m - start.y_m);
   const double offset_rad = std::max(std::abs(WrapAngle(first.yaw_rad - start.yaw_rad)),
@@ -233,6 +228,15 @@ void CheckInputs(const WholeBodyPath& path, const WholeBodyState& start, const B
 }
 
 }  // namespace
+
+void CheckWarmStartOptions(const WarmStartOptions& options) {
+  Require(options.piece_duration_s > 0.0 && options.min_pieces >= 1 &&
+              options.max_pieces >= options.min_pieces,
+          "piece_duration_s must be > 0 and 1 <= min_pieces <= max_pieces");
+  Require(options.rate_fraction > 0.0 && options.rate_fraction <= 1.0,
+          "rate_fraction must be in (0, 1]");
+  Require(options.min_duration_s > 0.0, "min_duration_s must be > 0");
+}
 
 WarmStart MakeWarmStart(const WholeBodyPath& path, const WholeBodyState& start,
                         const BaseLimits& base_limits, const JointLimits& joint_limits,

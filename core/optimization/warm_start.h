@@ -32,6 +32,10 @@ struct WarmStartOptions {
   double min_duration_s = 1.0;
 };
 
+/// Throws std::invalid_argument ("MakeWarmStart: <option> must ...") unless piece_duration_s
+/// > 0, 1 <= min_pieces <= max_pieces, rate_fraction in (0, 1] and min_duration_s > 0.
+void CheckWarmStartOptions(const WarmStartOptions& options);
+
 /// The optimizer's initial guess (paper Sec. III-C; issue item 4): piece durations,
 /// waypoints and the free end in the arc length-yaw variables, and stage 1's path reference.
 struct WarmStart {
