@@ -2,7 +2,7 @@
 // task) with one planner method or several on identical tasks, and writes tasks.jsonl (one
 // line per task and method), summary.json (one object per method) and, with
 // --dump-trajectories, each task's scene, task and trajectory JSON. Prints a Markdown table;
-// a progress bar on stderr when stderr is a terminal. Logic: sim/bench/bench_run.h.
+// a progress bar on stderr when stderr is a terminal. Logic: tools/topay_bench/bench_run.h.
 // Exit codes: 0 ran (whatever the success rate), 1 a file error, 2 a usage error.
 #include <unistd.h>
 
@@ -14,26 +14,22 @@
 #include <string>
 
 #include "core/common/heap_retention.h"
-#include "sim/bench/bench_run.h"
-#include "sim/bench/progress_line.h"
-#include "sim/plan/usage_error.h"
+#include "tools/common/tool_cli.h"
+#include "tools/topay_bench/bench_run.h"
+#include "tools/topay_bench/progress_line.h"
+#include "tools/topay_plan/usage_error.h"
 
 namespace {
 
 namespace bench = topay::bench;
-
-// The config folder: $TOPAY_CONFIG_DIR if set, else the repository's (compiled in).
-std::string ConfigDir() {
-  const char* from_env = std::getenv("TOPAY_CONFIG_DIR");
-  return from_env != nullptr && *from_env != '\0' ? from_env : TOPAY_CONFIG_DIR;
-}
 
 void AddTaskOptions(CLI::App* app, bench::BenchOptions* o) {
   app->add_option("--scene", o->scene, "Scene kind: cuboids | tables")->capture_default_str();
   app->add_option("--range", o->range, "Task range: small | medium | large")->capture_default_str();
   app->add_option("--tasks", o->num_tasks, "Number of tasks N")->capture_default_str();
   app->add_option("--seed", o->seed, "Base seed S (task i: DeriveSeed(S, i))")
-      ->capture_default_str();
+      ->capture_default_str()
+      ->check(topay::tools::NonNegativeInteger());
 }
 
 void AddMethodOptions(CLI::App* app, bench::BenchOptions* o, std::string* method,
@@ -44,19 +40,21 @@ void AddMethodOptions(CLI::App* app, bench::BenchOptions* o, std::string* method
   auto* many = app->add_option("--compare", *compare,
                                "Several methods on identical tasks, e.g. topay,flatness");
   one->excludes(many);
-  app->add_option("--threads", o->num_threads, "Planner workers (0: all cores; 1: deterministic)")
-      ->capture_default_str();
-  app->add_option("--time-limit-ms", o->time_limit_ms, "Per-task planning time limit (ms)")
-      ->capture_default_str();
+  // Unset flags leave the planner YAML's values (tools/topay_plan/planner_overrides.h).
+  app->add_option("--threads", o->num_threads,
+                  "Planner workers (0: all cores; 1: deterministic; default: the YAML's "
+                  "planner.num_threads)");
+  app->add_option("--time-limit-ms", o->time_limit_ms,
+                  "Per-task planning time limit (ms; default: the YAML's planner.time_limit_s)");
   app->add_option("--base-limits", o->base_limits,
-                  "Base limits: benchmark (paper's simulation) | robot (config)")
-      ->capture_default_str();
+                  "Base limits: benchmark (paper's simulation) | robot (robot config) | config "
+                  "(the planner YAML's); default: the YAML's if it sets them, else benchmark");
   app->add_flag("--use-hint,!--no-hint", o->use_hint,
                 "Pass the task's generating goal state as the planner's hint (default on)");
 }
 
 void AddFileOptions(CLI::App* app, bench::BenchOptions* o) {
-  const std::string config = ConfigDir();
+  const std::string config = topay::tools::ConfigDir(TOPAY_CONFIG_DIR);
   o->planner_config = config + "/planner/topay.yaml";
   o->robot_urdf = config + "/robot/topay_mm.urdf";
   o->robot_yaml = config + "/robot/topay_mm.yaml";
@@ -95,6 +93,8 @@ int main(int argc, char** argv) {
   AddTaskOptions(&app, &options);
   AddMethodOptions(&app, &options, &method, &compare);
   AddFileOptions(&app, &options);
+  app.footer(topay::tools::ExitCodesFooter(false) +
+             " A run exits 0 whatever its success rate.");
   try {
     app.parse(argc, argv);
     if (method.find(',') != std::string::npos) {
@@ -103,6 +103,8 @@ int main(int argc, char** argv) {
     if (!method.empty()) options.methods = bench::ParseMethodList(method, "--method");
     if (!compare.empty()) options.methods = bench::ParseMethodList(compare, "--compare");
   } catch (const CLI::CallForHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::CallForAllHelp& e) {
     return app.exit(e);
   } catch (const CLI::ParseError& e) {
     return Usage(e.what());

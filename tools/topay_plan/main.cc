@@ -1,6 +1,6 @@
 // topay-plan: one planning query on a scene (generated or from a JSON file) and a task
 // (generated, from a JSON file, or a start state and an end-effector target given here).
-// Prints a summary, writes the trajectory JSON and PNG plots. Logic: sim/plan/plan_tool.h.
+// Prints a summary, writes the trajectory JSON and PNG plots. Logic: tools/topay_plan/plan_tool.h.
 // Exit codes: 0 a validated trajectory, 1 an error (file, output), 2 a usage error, 3 the
 // planner found no validated trajectory (the reason is printed).
 #include <CLI/CLI.hpp>
@@ -10,22 +10,19 @@
 #include <string>
 
 #include "core/common/heap_retention.h"
-#include "sim/plan/plan_tool.h"
-#include "sim/plan/usage_error.h"
+#include "tools/common/tool_cli.h"
+#include "tools/topay_plan/plan_tool.h"
+#include "tools/topay_plan/usage_error.h"
 
 namespace {
-
-// The robot config folder: $TOPAY_CONFIG_DIR if set, else the repository's (compiled in).
-std::string ConfigDir() {
-  const char* from_env = std::getenv("TOPAY_CONFIG_DIR");
-  return from_env != nullptr && *from_env != '\0' ? from_env : TOPAY_CONFIG_DIR;
-}
 
 void AddInputOptions(CLI::App* app, topay::plan::PlanToolOptions* o) {
   auto* kind = app->add_option("--scene", o->scene_kind, "Generate a scene: cuboids | tables");
   auto* file = app->add_option("--scene-file", o->scene_file, "Load a scene JSON instead");
   kind->excludes(file);
-  app->add_option("--seed", o->seed, "Seed of the generated scene and task")->capture_default_str();
+  app->add_option("--seed", o->seed, "Seed of the generated scene and task")
+      ->capture_default_str()
+      ->check(topay::tools::NonNegativeInteger());
   auto* range = app->add_option("--range", o->range, "Generate a task: small | medium | large");
   auto* task = app->add_option("--task-file", o->task_file, "Load a task JSON instead");
   range->excludes(task);
@@ -46,28 +43,37 @@ void AddInputOptions(CLI::App* app, topay::plan::PlanToolOptions* o) {
                 "Give a generated or loaded task's goal state to the planner as a hint");
 }
 
-void AddPlanAndOutputOptions(CLI::App* app, topay::plan::PlanToolOptions* o) {
+void AddPlanAndOutputOptions(CLI::App* app, topay::plan::PlanToolOptions* o,
+                             bool* sequential_flag) {
   app->add_option("--json", o->trajectory_json_out, "Write the trajectory JSON here");
   app->add_option("--png", o->path_png_out, "Write the top-down path PNG here");
   app->add_option("--time-png", o->time_png_out, "Write the time plots PNG here");
-  app->add_option("--threads", o->num_threads, "Front-end and optimization workers (0: all cores)")
-      ->capture_default_str();
-  app->add_option("--time-limit", o->time_limit_s, "Bound on the plan (s)")->capture_default_str();
-  app->add_flag("--sequential", o->sequential, "Optimize candidates one after another");
-  app->add_option("--optimizer-time-limit", o->optimizer_time_limit_s,
-                  "Bound on one candidate's optimization (s; default: the planner's, 1 s)");
-  app->add_option("--acquisition-budget", o->acquisition_budget_s,
-                  "Bound on the front end's arm search (s; default: the planner's, 0.5 s)");
+  // Planner settings: unset flags leave the planner YAML's values (precedence: defaults, YAML,
+  // flags; tools/topay_plan/planner_overrides.h).
+  app->add_option("--threads", o->overrides.num_threads,
+                  "Front-end and optimization workers (0: all cores; default: the YAML's "
+                  "planner.num_threads)");
+  app->add_option("--time-limit", o->overrides.time_limit_s,
+                  "Bound on the whole plan (s; default: the YAML's planner.time_limit_s)");
+  app->add_flag("--sequential", *sequential_flag,
+                "Optimize candidates one after another (default: the YAML's planner.sequential)");
+  app->add_option("--optimizer-time-limit", o->overrides.optimizer_time_limit_s,
+                  "Bound on one candidate's optimization (s; default: the YAML's "
+                  "optimizer.time_limit_s)");
+  app->add_option("--acquisition-budget", o->overrides.acquisition_budget_s,
+                  "Bound on the front end's arm search (s; default: the YAML's "
+                  "front_end.acquisition_budget_s)");
   app->add_option("--base-limits", o->base_limits,
-                  "Base limits: benchmark (paper's simulation, omega_max 1.25) | robot (config)")
-      ->capture_default_str();
+                  "Base limits: benchmark (paper's simulation, omega_max 1.25) | robot (robot "
+                  "config) | config (the planner YAML's planner.base_limits); default: the "
+                  "YAML's if it sets them, else benchmark");
   app->add_option("--px-per-m", o->px_per_m, "Top-down PNG scale")->capture_default_str();
   app->add_option("--footprint-interval", o->footprint_interval_s,
                   "Time between drawn footprints (s)")
       ->capture_default_str();
   app->add_option("--sample-period", o->sample_period_s, "JSON and plot sample period (s)")
       ->capture_default_str();
-  const std::string config = ConfigDir();
+  const std::string config = topay::tools::ConfigDir(TOPAY_CONFIG_DIR);
   o->robot_urdf = config + "/robot/topay_mm.urdf";
   o->robot_yaml = config + "/robot/topay_mm.yaml";
   app->add_option("--robot", o->robot_urdf, "Robot URDF")->capture_default_str();
@@ -86,15 +92,13 @@ int main(int argc, char** argv) {
   CLI::App app{"Plan one TopAY whole-body query and write its summary, trajectory and plots."};
   plan::PlanToolOptions options;
   AddInputOptions(&app, &options);
-  AddPlanAndOutputOptions(&app, &options);
-  try {
-    app.parse(argc, argv);
-  } catch (const CLI::CallForHelp& e) {
-    return app.exit(e);
-  } catch (const CLI::ParseError& e) {
-    std::cerr << "topay-plan: " << e.what() << "\n(run with --help for usage)\n";
-    return plan::kExitUsage;
+  bool sequential = false;
+  AddPlanAndOutputOptions(&app, &options, &sequential);
+  app.footer(topay::tools::ExitCodesFooter(true));
+  if (const auto code = topay::tools::ParseCommandLine(app, argc, argv, "topay-plan")) {
+    return *code;
   }
+  if (sequential) options.overrides.sequential = true;
   try {
     const plan::PlanToolSummary summary = plan::RunPlanTool(options);
     std::cout << summary.Report();

@@ -1,0 +1,67 @@
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "tools/topay_bench/bench_method.h"
+
+namespace topay::bench {
+
+/// Exit codes of topay-bench.
+inline constexpr int kExitRan = 0;    ///< The benchmark ran (whatever the success rate).
+inline constexpr int kExitError = 1;  ///< A missing or malformed file, an unwritable output.
+inline constexpr int kExitUsage = 2;  ///< A command-line mistake (plan::UsageError, CLI11).
+
+/// What topay-bench does, as plain values (the CLI only fills this in). Defaults in brackets.
+struct BenchOptions {
+  /// Scene kind ("cuboids" | "tables") [cuboids] and task range ("small" | "medium" |
+  /// "large") [medium]. Task i is GenerateBenchmarkCase(kind, range, DeriveSeed(seed, i)):
+  /// a fresh scene per task, as in the paper.
+  std::string scene = "cuboids";
+  std::string range = "medium";
+  int num_tasks = 20;      ///< [20], in [1, 1000000].
+  std::uint64_t seed = 1;  ///< Base seed S [1].
+  /// Methods run on every task (BenchMethodName spellings), unique, at least one [topay].
+  /// Task i runs them starting with method i mod M, in rotation.
+  std::vector<std::string> methods = {"topay"};
+
+  std::string planner_config;  ///< Planner YAML (core/io/planner_config.h); required.
+  std::string robot_urdf;      ///< Robot description; required.
+  std::string robot_yaml;
+
+  /// Planner workers (both the planner's num_threads and front_end.num_threads); 0: all
+  /// cores. 1: MakeDeterministic (core/planner/deterministic_options.h), reproducible.
+  /// Unset: the planner YAML's planner.num_threads (config/planner/topay.yaml: 0).
+  std::optional<int> num_threads;
+  /// Per-task planning time limit (ms), in [10, 600000]: the planner's time_limit_s, and a
+  /// success whose T.P. exceeds it counts as a failure ("time limit"). Unset: the YAML's
+  /// planner.time_limit_s (config/planner/topay.yaml: 3 s).
+  std::optional<double> time_limit_ms;
+  /// "benchmark" (the paper's simulation limits) | "robot" (the robot YAML's) | "config"
+  /// (the planner YAML's planner.base_limits). Empty: the YAML's if it sets them, else
+  /// benchmark (plan::BaseLimitChoiceInForce).
+  std::string base_limits;
+  /// Give the task's generating goal state to the planner as its hint [true].
+  bool use_hint = true;
+
+  std::string out_dir;  ///< Output folder (created); required.
+  /// Also write, per task, the scene and task JSON and per method the trajectory JSON (and
+  /// the flatness baseline's pieces) [false].
+  bool dump_trajectories = false;
+};
+
+/// Splits "topay,flatness" at commas (blanks around names ignored). Throws plan::UsageError
+/// naming `option` for an empty list, an empty or unknown name or a repeated one.
+std::vector<std::string> ParseMethodList(const std::string& text, const std::string& option);
+
+/// Checks everything that needs no file: known names (scene, range, methods, base limits),
+/// unique methods, ranges of the numbers, required paths. Throws plan::UsageError naming the
+/// option as the CLI spells it.
+void CheckBenchOptions(const BenchOptions& options);
+
+/// The methods of checked options, parsed.
+std::vector<BenchMethod> MethodsOf(const BenchOptions& options);
+
+}  // namespace topay::bench

@@ -1,0 +1,47 @@
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "core/planner/whole_body_planner_options.h"
+#include "core/robot/kinematics.h"
+#include "tools/topay_bench/bench_method.h"
+#include "tools/topay_bench/bench_planner_options.h"
+#include "tools/topay_bench/bench_record.h"
+#include "tools/topay_plan/base_limit_choice.h"
+#include "sim/scenes/distance_range.h"
+#include "sim/scenes/scene_kind.h"
+
+namespace topay::bench {
+
+/// What every task of a run shares. The pointers must outlive RunBenchTask.
+struct BenchTaskContext {
+  const Kinematics* kinematics = nullptr;
+  const WholeBodyPlannerOptions* loaded_options = nullptr;  ///< From the planner YAML.
+  BenchPlannerSettings settings;
+  plan::BaseLimitChoice limit_choice = plan::BaseLimitChoice::kBenchmark;
+  SceneKind kind = SceneKind::kCuboids;
+  DistanceRange range = DistanceRange::kSmall;
+  std::uint64_t seed = 1;            ///< Base seed S.
+  std::vector<BenchMethod> methods;  ///< At least one.
+  bool use_hint = true;
+  /// Non-empty: write the task's scene and task JSON and each method's trajectory JSON here
+  /// (TaskFilePath names).
+  std::string dump_dir;
+};
+
+/// DIR/task_0007_<suffix>, e.g. suffix "scene.json", "task.json", "topay_trajectory.json",
+/// "flatness_pieces.json" (indices below 10000 have 4 digits).
+std::string TaskFilePath(const std::string& dir, int index, const std::string& suffix);
+
+/// Task `index`: GenerateBenchmarkCase(kind, range, DeriveSeed(seed, index)), its distance
+/// fields (PlannerFieldOptions, built once and timed: map_ms, not part of T.P.), then every
+/// method in rotation starting with method index mod M, each with its own planner
+/// (BenchPlannerOptions) and the task's goal state as hint when use_hint. One record per
+/// method, in run order. A task the generator cannot make gives records with status
+/// "generation_failed" and the generator's message. Throws ConfigError if a dump cannot be
+/// written.
+std::vector<BenchRecord> RunBenchTask(const BenchTaskContext& context, int index);
+
+}  // namespace topay::bench

@@ -1,0 +1,84 @@
+#include "tools/topay_bench/summary_report.h"
+
+#include <cmath>
+#include <iomanip>
+#include <sstream>
+
+namespace topay::bench {
+namespace {
+
+using Json = nlohmann::ordered_json;
+
+Json Number(double value) { return std::isfinite(value) ? Json(value) : Json(nullptr); }
+
+std::string Cell(double value, int decimals) {
+  if (!std::isfinite(value)) return "-";
+  std::ostringstream out;
+  out << std::fixed << std::setprecision(decimals) << value;
+  return out.str();
+}
+
+Json MethodJson(const MethodSummary& s, const BenchRunInfo& info) {
+  return Json{{"method", s.method},
+              {"scene", info.scene},
+              {"range", info.range},
+              {"seed", info.seed},
+              {"tasks", s.tasks},
+              {"successes", s.successes},
+              {"success_rate", s.success_rate},
+              {"unreachable_tasks", s.unreachable_tasks},
+              {"success_rate_reachable", Number(s.success_rate_reachable)},
+              {"tp_ms_mean", Number(s.tp_ms_mean)},
+              {"tp_ms_median", Number(s.tp_ms_median)},
+              {"tp_ms_p95", Number(s.tp_ms_p95)},
+              {"tp_ms_median_all", Number(s.tp_ms_median_all)},
+              {"td_s_mean", Number(s.td_s_mean)},
+              {"common_tasks", s.common_tasks},
+              {"common_tp_ms_mean", Number(s.common_tp_ms_mean)},
+              {"common_td_s_mean", Number(s.common_td_s_mean)},
+              {"map_ms_mean", Number(s.map_ms_mean)},
+              {"threads", info.threads},
+              {"time_limit_ms", info.time_limit_ms},
+              {"use_hint", info.use_hint},
+              {"base_limits", info.base_limits},
+              {"planner_config", info.planner_config},
+              {"tp_statistics",
+               "tp_ms_* and td_s_mean over successful tasks; tp_ms_median_all over all tasks; "
+               "common_* over the tasks every method solved"}};
+}
+
+}  // namespace
+
+nlohmann::ordered_json SummaryJson(const std::vector<MethodSummary>& summaries,
+                                   const BenchRunInfo& info) {
+  Json array = Json::array();
+  for (const MethodSummary& s : summaries) array.push_back(MethodJson(s, info));
+  return array;
+}
+
+std::string SummaryMarkdown(const std::vector<MethodSummary>& summaries, const BenchRunInfo& info) {
+  std::ostringstream out;
+  out << "| method | tasks | S.R. (%) | unreachable | S.R. reachable (%) | T.P. mean (ms) "
+         "| T.P. median (ms) | T.P. p95 (ms) | T.D. mean (s) | common T.P. mean (ms) "
+         "| common T.D. mean (s) |\n"
+      << "|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n";
+  for (const MethodSummary& s : summaries) {
+    out << "| " << s.method << " | " << s.tasks << " | " << Cell(100.0 * s.success_rate, 1) << " | "
+        << s.unreachable_tasks << " | " << Cell(100.0 * s.success_rate_reachable, 1) << " | "
+        << Cell(s.tp_ms_mean, 1) << " | " << Cell(s.tp_ms_median, 1) << " | "
+        << Cell(s.tp_ms_p95, 1) << " | " << Cell(s.td_s_mean, 2) << " | "
+        << Cell(s.common_tp_ms_mean, 1) << " | " << Cell(s.common_td_s_mean, 2) << " |\n";
+  }
+  const int common = summaries.empty() ? 0 : summaries.front().common_tasks;
+  out << "\n"
+      << info.scene << ", " << info.range << " range, seed " << info.seed << ", " << info.threads
+      << " thread(s), time limit " << Cell(info.time_limit_ms, 0) << " ms, " << info.base_limits
+      << " base limits, hint " << (info.use_hint ? "on" : "off")
+      << ". T.P. and T.D. over each method's successful tasks; common: the " << common
+      << " task(s) every method solved. Unreachable: tasks certified unsolvable (no motion "
+         "of the rigid lower body brings the target within the arm's reach, a planner-"
+         "independent test); S.R. reachable excludes them.\n";
+  return out.str();
+}
+
+}  // namespace topay::bench
