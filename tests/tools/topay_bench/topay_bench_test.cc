@@ -272,12 +272,30 @@ TEST_F(TopayBenchTest, UsageErrorsExitWithTwoAndNameTheOption) {
       {"--method remani" + out, "--method"},        {"--method topay,flatness" + out, "--compare"},
       {"--compare topay,topay" + out, "--compare"}, {"--tasks 0" + out, "--tasks"},
       {"--scene forest" + out, "--scene"},          {"--tasks 1", "--out"},
+      {"--seed -1" + out, "--seed"},                {"--time-limit-ms -5" + out, "--time-limit-ms"},
   };
   for (const Case& c : cases) {
     const RunResult run = Run(c.args);
     EXPECT_EQ(run.exit_code, bench::kExitUsage) << c.args << "\n" << run.err;
     EXPECT_NE(run.err.find(c.expected), std::string::npos) << c.args << "\n" << run.err;
   }
+}
+
+// The planner YAML's time limit and thread count hold unless a flag is given.
+TEST_F(TopayBenchTest, PlannerYamlFieldsHoldUnlessAFlagIsGiven) {
+  std::ofstream(Path("planner.yaml")) << "planner:\n  time_limit_s: 2.5\n  num_threads: 1\n";
+  const std::string args = "--scene cuboids --range small --tasks 1 --config '" +
+                           Path("planner.yaml") + "' --out '" + Path("out") + "'";
+  RunResult run = Run(args);
+  ASSERT_EQ(run.exit_code, bench::kExitRan) << run.err;
+  nlohmann::json summary = nlohmann::json::parse(ReadText(Path("out/summary.json")));
+  EXPECT_EQ(summary.at(0).at("time_limit_ms").get<double>(), 2500.0) << summary.dump();
+  EXPECT_EQ(summary.at(0).at("threads").get<int>(), 1) << summary.dump();
+  run = Run(args + " --time-limit-ms 4000 --threads 2");
+  ASSERT_EQ(run.exit_code, bench::kExitRan) << run.err;
+  summary = nlohmann::json::parse(ReadText(Path("out/summary.json")));
+  EXPECT_EQ(summary.at(0).at("time_limit_ms").get<double>(), 4000.0) << summary.dump();
+  EXPECT_EQ(summary.at(0).at("threads").get<int>(), 2) << summary.dump();
 }
 
 TEST_F(TopayBenchTest, AMissingConfigFileExitsWithOneAndNamesIt) {

@@ -101,5 +101,54 @@ TEST_F(TopayPlanTest, FileErrorsExitWithCode1AndNameTheFile) {
   EXPECT_NE(run.err.find(png), std::string::npos) << run.err;
 }
 
+// The planner YAML's fields hold unless a flag is given; the report shows the values in force.
+TEST_F(TopayPlanTest, PlannerYamlFieldsHoldUnlessAFlagIsGiven) {
+  std::ofstream(Path("planner.yaml")) << "planner:\n"
+                                         "  time_limit_s: 7.5\n"
+                                         "  sequential: true\n"
+                                         "  num_threads: 1\n"
+                                         "  base_limits:\n"
+                                         "    v_max_mps: 0.7\n"
+                                         "    a_max_mps2: 0.5\n"
+                                         "    omega_max_radps: 0.6\n"
+                                         "    beta_max_radps2: 0.9\n";
+  // An unreachable target: the plan fails at once, the report is printed all the same.
+  const std::string task = "--scene cuboids --seed 3 --start 0 0 0 0 0 0 0 0 0 0 "
+                           "--target 1 0 3 0 0 0 --config '" + Path("planner.yaml") + "'";
+  RunResult run = Run(task);
+  ASSERT_EQ(run.exit_code, plan::kExitPlanFailed) << run.out << run.err;
+  EXPECT_NE(run.out.find("sequential, 1 threads, time limit 7.5 s"), std::string::npos)
+      << run.out;
+  EXPECT_NE(run.out.find("v_max 0.7 m/s"), std::string::npos) << run.out;
+  EXPECT_NE(run.out.find("the planner config's limits"), std::string::npos) << run.out;
+
+  run = Run(task + " --time-limit 4 --threads 2 --base-limits benchmark");
+  ASSERT_EQ(run.exit_code, plan::kExitPlanFailed) << run.out << run.err;
+  EXPECT_NE(run.out.find("sequential, 2 threads, time limit 4.0 s"), std::string::npos)
+      << run.out;
+  EXPECT_NE(run.out.find("omega_max 1.25 rad/s"), std::string::npos) << run.out;
+}
+
+TEST_F(TopayPlanTest, NegativeSeedsAndLimitsAreUsageErrors) {
+  for (const std::string args : {"--scene tables --range small --seed -1",
+                                 "--scene tables --range small --seed 1.5",
+                                 "--scene tables --range small --time-limit -3"}) {
+    const RunResult run = Run(args);
+    EXPECT_EQ(run.exit_code, plan::kExitUsage) << args << "\n" << run.err;
+    EXPECT_NE(run.err.find(args.find("seed") != std::string::npos ? "--seed" : "--time-limit"),
+              std::string::npos)
+        << args << "\n" << run.err;
+  }
+}
+
+TEST_F(TopayPlanTest, HelpListsTheExitCodes) {
+  const RunResult run = Run("--help");
+  EXPECT_EQ(run.exit_code, 0);
+  EXPECT_NE(run.out.find("Exit codes: 0 success, 1 file or configuration error, 2 usage error, "
+                         "3 plan failed"),
+            std::string::npos)
+      << run.out;
+}
+
 }  // namespace
 }  // namespace topay
