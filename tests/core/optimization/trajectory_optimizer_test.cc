@@ -182,14 +182,11 @@ TEST_F(TrajectoryOptimizerTest, InvalidInputFailsCleanlyWithAReason) {
   add("NaN in the path", "path state 2 is not finite").path.states[2].y_m = nan;
   add("path not at the start", "away from the start").path.states[0].x_m = 1.0;
   for (const Case& c : cases) {
-    const auto begin = std::chrono::steady_clock::now();
     const TrajectoryOptimizerSummary summary = optimizer_.Optimize(c.problem, c.path);
-    const double elapsed_s =
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - begin).count();
     EXPECT_EQ(summary.status, TrajectoryOptimizerStatus::kInvalidInput) << c.name;
     EXPECT_NE(summary.reason.find(c.expected), std::string::npos)
         << c.name << ": reason \"" << summary.reason << "\"";
-    EXPECT_LT(elapsed_s, optimizer_.options().time_limit_s) << c.name;
+    EXPECT_EQ(summary.objective_evaluations, 0) << c.name;  // refused before any work
     EXPECT_FALSE(summary.success());
     EXPECT_NE(summary.Report().find("invalid input"), std::string::npos);
   }
@@ -208,8 +205,8 @@ TEST_F(TrajectoryOptimizerTest, UnreachableGoalIsNotConvergedWithAReason) {
   EXPECT_EQ(summary.status, TrajectoryOptimizerStatus::kNotConverged);
   EXPECT_NE(summary.reason.find("arm clearance short by"), std::string::npos) << summary.reason;
   // Infeasible after the ALM: the violated terms' weights were raised as often as allowed.
+  // (So it ended by the escalation count, not by its time limit.)
   EXPECT_EQ(summary.penalty_escalations, optimizer_.options().max_penalty_escalations);
-  EXPECT_LT(summary.total_s, optimizer_.options().time_limit_s + 0.1);
 }
 
 TEST_F(TrajectoryOptimizerTest, AlreadyCancelledReturnsAtOnce) {

@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include "tests/core/planning/stop_latency.h"
+
 #include <chrono>
 #include <cmath>
 #include <iostream>
@@ -215,26 +217,19 @@ TEST(ArmRrtStarTest, CancellationReturnsWithinMilliseconds) {
   const Corridor c(0.45);  // too low even for the folded arm: no solution exists
   ArmRrtStarOptions options;
   options.time_budget_s = 30.0;
-  std::stop_source source;
-  std::chrono::steady_clock::time_point stop_time;
-  std::jthread canceller([&] {
-    std::this_thread::sleep_for(std::chrono::milliseconds(50));
-    stop_time = std::chrono::steady_clock::now();
-    source.request_stop();
+  ArmRrtStarResult result;
+  const testing::StopLatency latency = testing::MeasureStopLatency(50, [&](std::stop_token stop) {
+    result = PlanArmRrtStar(c.base, c.q_start, c.q_goal, c.validity, options, stop);
   });
-  const ArmRrtStarResult result =
-      PlanArmRrtStar(c.base, c.q_start, c.q_goal, c.validity, options, source.get_token());
-  const auto returned = std::chrono::steady_clock::now();
-  canceller.join();
   EXPECT_EQ(result.status, ArmRrtStarStatus::kCancelled) << result.message;
   EXPECT_TRUE(result.stats.cancelled);
   EXPECT_GT(result.stats.iterations, 0);
-  const double latency_s = std::chrono::duration<double>(returned - stop_time).count();
-  // One edge check at 1 cm / 0.01 rad is the longest uninterruptible step (well under 1 ms);
-  // the bound leaves room for a loaded 2-core machine.
-  EXPECT_LT(latency_s, 0.02) << "latency " << latency_s * 1e3 << " ms";
-  std::cout << "cancellation latency " << latency_s * 1e3 << " ms after " << result.stats.iterations
-            << " iterations\n";
+  // One edge check at 1 cm / 0.01 rad is the longest uninterruptible step (well under 1 ms):
+  // the bound is on the CPU time the search spends after the stop (all on this thread), which
+  // a loaded machine does not inflate; the wall-clock latency is printed.
+  EXPECT_LT(latency.cpu_ms, 20.0) << "CPU after the stop " << latency.cpu_ms << " ms";
+  std::cout << "cancellation latency " << latency.wall_ms << " ms (" << latency.cpu_ms
+            << " ms CPU) after " << result.stats.iterations << " iterations\n";
 
   std::stop_source already;
   already.request_stop();

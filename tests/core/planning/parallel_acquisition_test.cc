@@ -84,8 +84,8 @@ TEST(ParallelAcquisitionTest, WindowStartsAtTheFirstSolutionOfAnyJob) {
     EXPECT_GE(job.finished_at_ms, result.first_success_ms + window_ms - 1e-6);
     EXPECT_LE(job.stats.final_cost, job.stats.first_cost);
   }
-  // Cancelled by the window, not by the 10 s budget (loose: scheduling on a loaded machine).
-  EXPECT_LT(result.wall_ms, 3000.0);
+  // stats.cancelled (asserted above) is set only by the stop token, never by the 10 s budget:
+  // so the window ended the jobs.
   for (const FrontEndPath& path : result.paths) {
     EXPECT_EQ(testing::ExactPathFailure(w.world, path.path.states), "");
     EXPECT_EQ(path.path.homotopy_class, w.jobs[path.job].base_path.homotopy_class);

@@ -106,8 +106,9 @@ TEST(PathShortcutTest, StoppedBeforeStartReturnsTheInputs) {
 
 // A stop while shortcutting is honoured: unstopped, this work takes seconds. The latency is a
 // speed figure (printed; 0.06-0.11 ms of CPU on one thread when measured), so the unit test
-// bounds it only loosely: CPU on the calling thread with all work on it (1-thread TBB arena),
-// and wall time with the default arena, which also depends on the scheduler.
+// bounds the CPU time spent after the stop (which a loaded machine does not inflate): the
+// calling thread's with all work on it (1-thread TBB arena), every thread's with the default
+// arena.
 TEST(PathShortcutTest, StopDuringShortcuttingIsHonoured) {
   const Scene scene = Room({Pillar(0, 0)});
   const SignedDistanceField2 field = BaseField(scene);
@@ -123,12 +124,9 @@ TEST(PathShortcutTest, StopDuringShortcuttingIsHonoured) {
       arena.execute([&] { out = ShortcutPaths(space, raws, options, stop); });
     });
     std::cout << (threads == 1 ? "1 thread" : "all threads") << ": shortcut stop latency "
-              << latency.wall_ms << " ms wall, " << latency.cpu_ms << " ms CPU\n";
-    if (threads == 1) {
-      EXPECT_LT(latency.cpu_ms, 20.0);
-    } else {
-      EXPECT_LT(latency.wall_ms, 50.0);  // scheduling on a loaded 2-core machine
-    }
+              << latency.wall_ms << " ms wall, " << latency.cpu_ms << " ms CPU (all threads "
+              << latency.process_cpu_ms << " ms)\n";
+    EXPECT_LT(threads == 1 ? latency.cpu_ms : latency.process_cpu_ms, 20.0);
     // Whatever was returned is still a free path between the same end points, never longer;
     // some paths were left as they came (the stop cut the work short).
     ASSERT_EQ(out.size(), raws.size());
