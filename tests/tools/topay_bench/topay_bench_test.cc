@@ -191,8 +191,15 @@ void CheckSmokeRun(const std::string& dir, const std::string& scene, int tasks) 
   }
   ExpectSummaryMatches(Json::parse(ReadText(dir + "/summary.json")), lines, tasks, scene);
   const int checked = CheckDumpsAndRevalidate(dir, lines);
-  // TopAY solves most small tasks; none at all would mean the harness is broken.
   EXPECT_GT(checked, 0) << "no success to validate in " << dir;
+  // A floor from the measured rate: TopAY solved 100 % (Cuboids) and 98.3 % (Tables) of the
+  // small tasks (docs/benchmarks.md, 60 tasks per cell). 8 of 10 leaves a margin for a loaded
+  // machine; a broken planner or harness falls below it.
+  int topay_successes = 0;
+  for (const Json& l : lines) {
+    topay_successes += l["method"] == "topay" && l["success"].get<bool>() ? 1 : 0;
+  }
+  EXPECT_GE(topay_successes, (8 * tasks) / 10) << dir;
 }
 
 TEST_F(TopayBenchTest, SmokeCuboidsEverySuccessValidatesAgain) {
