@@ -1,5 +1,6 @@
 #include "core/planner/deterministic_options.h"
 
+#include <algorithm>
 #include <limits>
 
 namespace topay {
@@ -17,6 +18,12 @@ void MakeDeterministic(WholeBodyPlannerOptions* options, const DeterministicBudg
   front_end.acquisition_budget_s = kUnbounded;
   options->num_threads = 1;
   options->early_termination_window_s = 0.0;
+  // One candidate's optimization is bounded by its iteration caps (L-BFGS, ALM outer loops,
+  // escalations), not by its own wall-clock limit, which a loaded machine would reach at a
+  // different iteration; only the plan's time limit still bounds the whole (and must be
+  // finite for the flatness baseline's check, hence the cap).
+  constexpr double kLongestOptimizationS = 1e6;
+  options->optimizer.time_limit_s = std::min(options->time_limit_s, kLongestOptimizationS);
 }
 
 }  // namespace topay

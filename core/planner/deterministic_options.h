@@ -22,8 +22,10 @@ struct DeterministicBudgets {
 ///    after another, in path order;
 ///  - the back end stops at the first validated trajectory (an early-termination window of 0:
 ///    with one worker, no other candidate has started by then).
-/// The outer bounds stay, as safety: the plan's time_limit_s and the optimizer's time limit.
-/// A plan that reaches one of them is a failure that may not repeat exactly.
+///  - each candidate's optimization is bounded by its iteration caps: its own wall-clock
+///    limit is raised to the plan's (a loaded machine would reach it at another iteration).
+/// The outer bound stays, as safety: the plan's time_limit_s. A plan that reaches it is a
+/// failure that may not repeat exactly.
 void MakeDeterministic(WholeBodyPlannerOptions* options, const DeterministicBudgets& budgets = {});
 
 }  // namespace topay

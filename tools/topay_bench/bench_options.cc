@@ -5,7 +5,7 @@
 #include <sstream>
 
 #include "tools/topay_plan/base_limit_choice.h"
-#include "tools/topay_plan/usage_error.h"
+#include "tools/common/usage_error.h"
 #include "sim/scenes/distance_range.h"
 #include "sim/scenes/scene_kind.h"
 

@@ -5,14 +5,15 @@
 #include <string>
 #include <vector>
 
+#include "tools/common/tool_cli.h"
 #include "tools/topay_bench/bench_method.h"
 
 namespace topay::bench {
 
 /// Exit codes of topay-bench.
-inline constexpr int kExitRan = 0;    ///< The benchmark ran (whatever the success rate).
-inline constexpr int kExitError = 1;  ///< A missing or malformed file, an unwritable output.
-inline constexpr int kExitUsage = 2;  ///< A command-line mistake (plan::UsageError, CLI11).
+inline constexpr int kExitRan = tools::kExitSuccess;  ///< Ran (whatever the success rate).
+inline constexpr int kExitError = tools::kExitFileError;  ///< A file, config or output error.
+inline constexpr int kExitUsage = tools::kExitUsageError;  ///< A command-line mistake.
 
 /// What topay-bench does, as plain values (the CLI only fills this in). Defaults in brackets.
 struct BenchOptions {

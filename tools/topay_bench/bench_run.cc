@@ -12,7 +12,7 @@
 #include "tools/topay_bench/bench_record_json.h"
 #include "tools/topay_bench/bench_task.h"
 #include "tools/topay_plan/planner_overrides.h"
-#include "tools/topay_plan/usage_error.h"
+#include "tools/common/usage_error.h"
 
 namespace topay::bench {
 namespace {

@@ -17,7 +17,7 @@
 #include "tools/common/tool_cli.h"
 #include "tools/topay_bench/bench_run.h"
 #include "tools/topay_bench/progress_line.h"
-#include "tools/topay_plan/usage_error.h"
+#include "tools/common/usage_error.h"
 
 namespace {
 

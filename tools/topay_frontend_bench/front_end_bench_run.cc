@@ -15,6 +15,9 @@
 namespace topay::frontend_bench {
 namespace {
 
+// The authors' simulation benchmark's yaw-rate limit (rad/s).
+constexpr double kBenchmarkOmegaMaxRadps = 1.25;
+
 SceneDistanceFieldsOptions FieldOptions(const FrontEndBenchOptions& o,
                                         const Kinematics& kinematics) {
   SceneDistanceFieldsOptions options = PlannerFieldOptions(kinematics);
@@ -64,7 +67,7 @@ FrontEndOptions TaskFrontEndOptions(const FrontEndBenchOptions& o,
                                     const FrontEndOptions& configured, int index,
                                     const Kinematics& kinematics) {
   FrontEndOptions options = configured;
-  options.num_threads = o.threads;
+  if (o.threads) options.num_threads = *o.threads;
   options.seed = DeriveSeed(o.seed, 1'000'000 + static_cast<std::uint64_t>(index));
   if (o.jps_only) options.topology.mode = BasePathMode::kJpsOnly;
   if (o.rrt_budget_s) options.rrt.time_budget_s = *o.rrt_budget_s;
@@ -72,8 +75,12 @@ FrontEndOptions TaskFrontEndOptions(const FrontEndBenchOptions& o,
   if (o.fallback_clearance_m) options.fallback_base_clearance_m = *o.fallback_clearance_m;
   if (o.first_solution) options.rrt.stop_at_first_solution = true;
   if (o.window_s) options.improvement_window_s = *o.window_s;
-  BaseLimits limits = kinematics.model().base_limits;
-  limits.omega_max_radps = o.omega_max_radps;
+  BaseLimits limits = options.base_limits.value_or(kinematics.model().base_limits);
+  if (o.omega_max_radps) {
+    limits.omega_max_radps = *o.omega_max_radps;
+  } else if (!options.base_limits) {
+    limits.omega_max_radps = kBenchmarkOmegaMaxRadps;
+  }
   options.base_limits = limits;
   return options;
 }

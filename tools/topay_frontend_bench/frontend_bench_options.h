@@ -13,9 +13,12 @@ struct FrontEndBenchOptions {
   std::string range = "medium";   ///< small | medium | large
   int tasks = 20;                 ///< number of tasks (>= 1)
   std::uint64_t seed = 1;         ///< task i uses DeriveSeed(seed, i)
-  int threads = 0;                ///< front-end workers (0: all cores)
-  bool jps_only = false;          ///< the JPS-only ablation
-  double omega_max_radps = 1.25;  ///< the paper's simulation benchmark (facts sheet)
+  /// Front-end workers (0: all cores); unset: the YAML's front_end.num_threads.
+  std::optional<int> threads;
+  bool jps_only = false;  ///< the JPS-only ablation
+  /// Base yaw-rate limit of the layer times; unset: the YAML's planner.base_limits if it
+  /// sets them, else the authors' simulation benchmark's 1.25 rad/s.
+  std::optional<double> omega_max_radps;
   std::string robot_urdf;
   std::string robot_yaml;
   std::string planner_config;  ///< planner YAML: its front_end section sets the options

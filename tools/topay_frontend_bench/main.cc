@@ -31,13 +31,13 @@ void AddTaskOptions(CLI::App* app, FrontEndBenchOptions* o) {
   app->add_option("--seed", o->seed, "Base seed S: task i uses DeriveSeed(S, i)")
       ->capture_default_str()
       ->check(topay::tools::NonNegativeInteger());
-  app->add_option("--threads", o->threads, "Front-end threads (0: all cores)")
-      ->capture_default_str()
+  app->add_option("--threads", o->threads,
+                  "Front-end threads (0: all cores; default: the YAML's front_end.num_threads)")
       ->check(CLI::NonNegativeNumber);
   app->add_flag("--jps-only", o->jps_only, "The JPS-only ablation (no topological PRM paths)");
   app->add_option("--omega-max", o->omega_max_radps,
-                  "Base yaw rate limit (rad/s) for the layer times (paper benchmark: 1.25)")
-      ->capture_default_str()
+                  "Base yaw rate limit (rad/s) for the layer times (default: the YAML's "
+                  "planner.base_limits if set, else the simulation benchmark's 1.25)")
       ->check(CLI::PositiveNumber);
   const std::string config = topay::tools::ConfigDir(TOPAY_CONFIG_DIR);
   o->robot_urdf = config + "/robot/topay_mm.urdf";
@@ -98,7 +98,9 @@ int main(int argc, char** argv) {
   try {
     const topay::RobotModel model = topay::LoadRobotModel(o.robot_urdf, o.robot_yaml);
     const topay::Kinematics kinematics(model);
-    const topay::FrontEndOptions configured = topay::LoadPlannerOptions(o.planner_config).front_end;
+    const topay::WholeBodyPlannerOptions loaded = topay::LoadPlannerOptions(o.planner_config);
+    topay::FrontEndOptions configured = loaded.front_end;
+    if (loaded.base_limits) configured.base_limits = loaded.base_limits;  // as the planner does
     topay::frontend_bench::FrontEndTally tally;
     for (int i = 0; i < o.tasks; ++i) {
       topay::frontend_bench::RunFrontEndTask(o, configured, *kind, *range, i, kinematics, &tally,

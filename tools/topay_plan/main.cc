@@ -12,7 +12,7 @@
 #include "core/common/heap_retention.h"
 #include "tools/common/tool_cli.h"
 #include "tools/topay_plan/plan_tool.h"
-#include "tools/topay_plan/usage_error.h"
+#include "tools/common/usage_error.h"
 
 namespace {
 

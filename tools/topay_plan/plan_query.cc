@@ -6,7 +6,7 @@
 #include <stdexcept>
 
 #include "tools/topay_plan/target_pose.h"
-#include "tools/topay_plan/usage_error.h"
+#include "tools/common/usage_error.h"
 #include "sim/scenes/benchmark_scene.h"
 #include "sim/scenes/scene_json.h"
 #include "sim/scenes/task_generator.h"

@@ -13,7 +13,7 @@
 #include "tools/topay_plan/plan_query.h"
 #include "tools/topay_plan/plan_summary_fill.h"
 #include "tools/topay_plan/trajectory_json.h"
-#include "tools/topay_plan/usage_error.h"
+#include "tools/common/usage_error.h"
 #include "sim/viz/png_io.h"
 #include "sim/viz/time_plot.h"
 #include "sim/viz/trajectory_view.h"

@@ -9,16 +9,17 @@
 #include "core/planner/whole_body_plan_result.h"
 #include "core/robot/robot_model.h"
 #include "core/robot/whole_body_state.h"
+#include "tools/common/tool_cli.h"
 #include "tools/topay_plan/base_limit_choice.h"
 #include "tools/topay_plan/planner_overrides.h"
 
 namespace topay::plan {
 
 /// Exit codes of topay-plan.
-inline constexpr int kExitSuccess = 0;     ///< A validated trajectory.
-inline constexpr int kExitError = 1;       ///< A missing or malformed file, an unwritable output.
-inline constexpr int kExitUsage = 2;       ///< A command-line mistake (UsageError, CLI11).
-inline constexpr int kExitPlanFailed = 3;  ///< The planner found no validated trajectory.
+inline constexpr int kExitSuccess = tools::kExitSuccess;        ///< A validated trajectory.
+inline constexpr int kExitError = tools::kExitFileError;        ///< A file, config or output error.
+inline constexpr int kExitUsage = tools::kExitUsageError;       ///< A command-line mistake.
+inline constexpr int kExitPlanFailed = tools::kExitPlanFailed;  ///< No validated trajectory.
 
 /// What the topay-plan command does, as plain values (the CLI only fills this in).
 struct PlanToolOptions {

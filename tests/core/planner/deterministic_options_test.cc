@@ -32,6 +32,7 @@ TEST(MakeDeterministicTest, ReplacesEveryWallClockBudgetByWork) {
   EXPECT_EQ(options.front_end.rrt.max_iterations, 567);
   EXPECT_TRUE(std::isinf(options.front_end.improvement_window_s));
   EXPECT_TRUE(std::isinf(options.front_end.acquisition_budget_s));
+  EXPECT_EQ(options.optimizer.time_limit_s, options.time_limit_s);  // only the plan's bound
   EXPECT_NO_THROW(CheckWholeBodyPlannerOptions(options));
 }
 

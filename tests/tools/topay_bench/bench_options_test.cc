@@ -2,7 +2,7 @@
 
 #include <gtest/gtest.h>
 
-#include "tools/topay_plan/usage_error.h"
+#include "tools/common/usage_error.h"
 
 namespace topay::bench {
 namespace {

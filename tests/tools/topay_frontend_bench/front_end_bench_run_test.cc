@@ -28,14 +28,24 @@ TEST_F(FrontEndBenchRunTest, OverridesApplyOnlyWhenGiven) {
   EXPECT_EQ(unchanged.rrt.time_budget_s, configured_.rrt.time_budget_s);
   EXPECT_EQ(unchanged.improvement_window_s, configured_.improvement_window_s);
   EXPECT_EQ(unchanged.topology.mode, configured_.topology.mode);
+  EXPECT_EQ(unchanged.num_threads, configured_.num_threads);
+  ASSERT_TRUE(unchanged.base_limits.has_value());
+  EXPECT_EQ(unchanged.base_limits->omega_max_radps, 1.25);  // no YAML limits: the benchmark's
+  FrontEndOptions with_limits = configured_;
+  BaseLimits yaml_limits = model_.base_limits;
+  yaml_limits.omega_max_radps = 0.55;
+  with_limits.base_limits = yaml_limits;
+  EXPECT_EQ(TaskFrontEndOptions(o, with_limits, 0, kinematics_).base_limits->omega_max_radps, 0.55);
   o.rrt_budget_s = 0.123;
   o.window_s = 0.0;
   o.jps_only = true;
   o.omega_max_radps = 0.7;
+  o.threads = 1;
   const FrontEndOptions changed = TaskFrontEndOptions(o, configured_, 0, kinematics_);
   EXPECT_EQ(changed.rrt.time_budget_s, 0.123);
   EXPECT_EQ(changed.improvement_window_s, 0.0);
   EXPECT_EQ(changed.topology.mode, BasePathMode::kJpsOnly);
+  EXPECT_EQ(changed.num_threads, 1);
   ASSERT_TRUE(changed.base_limits.has_value());
   EXPECT_EQ(changed.base_limits->omega_max_radps, 0.7);
   // Each task has its own seed.

@@ -13,7 +13,7 @@
 #include "core/robot/kinematics.h"
 #include "tools/topay_plan/target_pose.h"
 #include "tools/topay_plan/trajectory_json.h"
-#include "tools/topay_plan/usage_error.h"
+#include "tools/common/usage_error.h"
 #include "sim/scenes/scene_json.h"
 #include "sim/scenes/task_json.h"
 #include "sim/viz/png_io.h"
