@@ -31,12 +31,14 @@ void AddTaskOptions(CLI::App* app, FrontEndBenchOptions* o) {
   app->add_option("--seed", o->seed, "Base seed S: task i uses DeriveSeed(S, i)")
       ->capture_default_str()
       ->check(topay::tools::NonNegativeInteger());
-  app->add_option("--threads", o->threads, "Front-end threads (0: all cores)")
+  app->add_option("--threads", o->threads,
+                  "Front-end threads (0: all cores; replaces the YAML's front_end.num_threads)")
       ->capture_default_str()
       ->check(CLI::NonNegativeNumber);
   app->add_flag("--jps-only", o->jps_only, "The JPS-only ablation (no topological PRM paths)");
   app->add_option("--omega-max", o->omega_max_radps,
-                  "Base yaw rate limit (rad/s) for the layer times (paper benchmark: 1.25)")
+                  "Base yaw rate limit (rad/s) for the layer times (the authors' simulation "
+                  "benchmark: 1.25; replaces the robot config's)")
       ->capture_default_str()
       ->check(CLI::PositiveNumber);
   const std::string config = topay::tools::ConfigDir(TOPAY_CONFIG_DIR);
@@ -46,7 +48,8 @@ void AddTaskOptions(CLI::App* app, FrontEndBenchOptions* o) {
   app->add_option("--robot", o->robot_urdf, "Robot URDF")->capture_default_str();
   app->add_option("--robot-config", o->robot_yaml, "Robot YAML")->capture_default_str();
   app->add_option("--config", o->planner_config,
-                  "Planner YAML (its front_end section); the flags below override it")
+                  "Planner YAML (its front_end section); --threads, --jps-only, --omega-max "
+                  "and the flags below override it")
       ->capture_default_str();
   app->add_flag("-v,--verbose", o->verbose, "One line per task on stderr");
 }
@@ -77,7 +80,8 @@ void AddFrontEndOverrides(CLI::App* app, FrontEndBenchOptions* o) {
                   "Preferred base clearance (m) of the path search (default: the YAML's)")
       ->check(CLI::NonNegativeNumber);
   app->add_option("--fallback-clearance", o->fallback_clearance_m,
-                  "Base clearance (m) of the second search when the first finds nothing")
+                  "Base clearance (m) of the second search when the first finds nothing "
+                  "(default: the YAML's)")
       ->check(CLI::NonNegativeNumber);
 }
 
