@@ -46,7 +46,8 @@ void AddTaskOptions(CLI::App* app, FrontEndBenchOptions* o) {
   app->add_option("--robot", o->robot_urdf, "Robot URDF")->capture_default_str();
   app->add_option("--robot-config", o->robot_yaml, "Robot YAML")->capture_default_str();
   app->add_option("--config", o->planner_config,
-                  "Planner YAML (its front_end section); the flags below override it")
+                  "Planner YAML (its front_end section); --threads, --jps-only, --omega-max "
+                  "and the flags below override it")
       ->capture_default_str();
   app->add_flag("-v,--verbose", o->verbose, "One line per task on stderr");
 }
@@ -77,7 +78,8 @@ void AddFrontEndOverrides(CLI::App* app, FrontEndBenchOptions* o) {
                   "Preferred base clearance (m) of the path search (default: the YAML's)")
       ->check(CLI::NonNegativeNumber);
   app->add_option("--fallback-clearance", o->fallback_clearance_m,
-                  "Base clearance (m) of the second search when the first finds nothing")
+                  "Base clearance (m) of the second search when the first finds nothing "
+                  "(default: the YAML's)")
       ->check(CLI::NonNegativeNumber);
 }
 

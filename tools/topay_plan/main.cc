@@ -52,7 +52,7 @@ void AddPlanAndOutputOptions(CLI::App* app, topay::plan::PlanToolOptions* o,
   // flags; tools/topay_plan/planner_overrides.h).
   app->add_option("--threads", o->overrides.num_threads,
                   "Front-end and optimization workers (0: all cores; default: the YAML's "
-                  "planner.num_threads)");
+                  "planner.num_threads and front_end.num_threads)");
   app->add_option("--time-limit", o->overrides.time_limit_s,
                   "Bound on the whole plan (s; default: the YAML's planner.time_limit_s)");
   app->add_flag("--sequential", *sequential_flag,
