@@ -19,10 +19,11 @@ endfunction()
 
 # topay_add_gtest(SOURCE DEPS deps...)   (SOURCE: absolute path of a tests/**/*_test.cc)
 # One test executable per test file, named after the file; its tests are registered with
-# ctest one by one (gtest_discover_tests), labelled with the folder under tests/ and with
-# "fast" or "long": the cases matched by the gtest filter TOPAY_LONG_TESTS_<name> (set by
-# tests/CMakeLists.txt: the 100-task and soak-like cases) are "long", the others "fast".
-# `ctest -L fast` runs the fast suite; CI runs everything.
+# ctest one by one (gtest_discover_tests), labelled with the folder under tests/, e.g.
+# "core/planning"; the cases matched by the gtest filter TOPAY_LONG_TESTS_<name> (set by
+# tests/CMakeLists.txt: the 100-task runs and the harness's smoke runs) get "long/<folder>"
+# instead. `ctest -LE ^long` runs the fast suite, `ctest -L ^long` the long one; CI runs all.
+# (One label per test: gtest_discover_tests does not pass a list of labels through.)
 function(topay_add_gtest source)
   cmake_parse_arguments(ARG "" "" "DEPS" ${ARGN})
   get_filename_component(name ${source} NAME_WE)
@@ -36,10 +37,10 @@ function(topay_add_gtest source)
   if(DEFINED TOPAY_LONG_TESTS_${name})
     set(long_filter "${TOPAY_LONG_TESTS_${name}}")
     gtest_discover_tests(${name} TEST_FILTER "-${long_filter}"
-      PROPERTIES LABELS "${rel};fast" DISCOVERY_TIMEOUT 60)
+      PROPERTIES LABELS "${rel}" DISCOVERY_TIMEOUT 60)
     gtest_discover_tests(${name} TEST_FILTER "${long_filter}"
-      PROPERTIES LABELS "${rel};long" DISCOVERY_TIMEOUT 60)
+      PROPERTIES LABELS "long/${rel}" DISCOVERY_TIMEOUT 60)
   else()
-    gtest_discover_tests(${name} PROPERTIES LABELS "${rel};fast" DISCOVERY_TIMEOUT 60)
+    gtest_discover_tests(${name} PROPERTIES LABELS "${rel}" DISCOVERY_TIMEOUT 60)
   endif()
 endfunction()
