@@ -13,9 +13,9 @@
 #include "sim/plan/plan_query.h"
 #include "sim/plan/plan_summary_fill.h"
 #include "sim/plan/trajectory_json.h"
-#include "sim/viz/png_io.h"
-#include "sim/viz/time_plot.h"
-#include "sim/viz/trajectory_view.h"
+#include "tools/viz/png_io.h"
+#include "tools/viz/time_plot.h"
+#include "tools/viz/trajectory_view.h"
 
 namespace topay::plan {
 namespace {

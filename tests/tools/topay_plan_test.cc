@@ -8,7 +8,7 @@
 
 #include "sim/plan/plan_tool.h"
 #include "sim/plan/trajectory_json.h"
-#include "sim/viz/png_io.h"
+#include "tools/viz/png_io.h"
 #include "tests/common/tool_test.h"
 
 namespace topay {

@@ -9,7 +9,7 @@
 
 #include "sim/scenes/scene_json.h"
 #include "sim/scenes/task_json.h"
-#include "sim/viz/png_io.h"
+#include "tools/viz/png_io.h"
 #include "tests/common/tool_test.h"
 
 namespace topay {

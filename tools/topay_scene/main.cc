@@ -1,5 +1,5 @@
 // topay-scene: generates or loads a benchmark scene (and optionally a task), writes its JSON
-// files and a top-down PNG, and prints a one-paragraph summary. Logic: sim/viz/scene_tool.h.
+// files and a top-down PNG, and prints a one-paragraph summary. Logic: tools/topay_scene/scene_tool.h.
 #include <cstdlib>
 #include <exception>
 #include <iostream>
@@ -7,7 +7,7 @@
 
 #include <CLI/CLI.hpp>
 
-#include "sim/viz/scene_tool.h"
+#include "tools/topay_scene/scene_tool.h"
 
 namespace {
 
@@ -17,7 +17,7 @@ std::string ConfigDir() {
   return from_env != nullptr && *from_env != '\0' ? from_env : TOPAY_CONFIG_DIR;
 }
 
-void AddOptions(CLI::App* app, topay::viz::SceneToolOptions* o) {
+void AddOptions(CLI::App* app, topay::scene_tool::SceneToolOptions* o) {
   auto* kind = app->add_option("--scene", o->scene_kind, "Generate a scene: cuboids | tables");
   auto* file = app->add_option("--scene-file", o->scene_file, "Load a scene JSON instead");
   kind->excludes(file);
@@ -42,7 +42,7 @@ void AddOptions(CLI::App* app, topay::viz::SceneToolOptions* o) {
 
 int main(int argc, char** argv) {
   CLI::App app{"Generate or load a TopAY benchmark scene (and task) and draw it from above."};
-  topay::viz::SceneToolOptions options;
+  topay::scene_tool::SceneToolOptions options;
   AddOptions(&app, &options);
   try {
     app.parse(argc, argv);
@@ -53,7 +53,7 @@ int main(int argc, char** argv) {
     return 2;
   }
   try {
-    const topay::viz::SceneToolSummary summary = topay::viz::RunSceneTool(options);
+    const topay::scene_tool::SceneToolSummary summary = topay::scene_tool::RunSceneTool(options);
     std::cout << summary.Paragraph(options) << "\n";
   } catch (const std::exception& e) {
     std::cerr << "topay-scene: error: " << e.what() << "\n";

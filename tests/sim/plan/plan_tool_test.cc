@@ -16,8 +16,8 @@
 #include "sim/plan/usage_error.h"
 #include "sim/scenes/scene_json.h"
 #include "sim/scenes/task_json.h"
-#include "sim/viz/png_io.h"
-#include "sim/viz/time_plot.h"
+#include "tools/viz/png_io.h"
+#include "tools/viz/time_plot.h"
 #include "tests/common/make_box.h"
 #include "tests/common/temp_path.h"
 
