@@ -10,6 +10,7 @@
 #include "sim/scenes/scene_json.h"
 #include "sim/scenes/task_json.h"
 #include "tools/viz/png_io.h"
+#include "tools/viz/scene_renderer.h"
 #include "tests/common/tool_test.h"
 
 namespace topay {
@@ -32,8 +33,9 @@ TEST_F(TopaySceneTest, GeneratesSceneTaskAndPng) {
   EXPECT_NE(run.out.find("base distance"), std::string::npos) << run.out;
 
   const viz::Image png = viz::ReadPng(Path("scene.png"));
-  // The map covers the 20 x 20 m room plus 0.25 m margins at 10 px/m; the legend lies below.
-  EXPECT_EQ(png.width(), 205);
+  // The map covers the 20 x 20 m room plus 0.25 m margins at 10 px/m, right of the y axis;
+  // the legend lies below.
+  EXPECT_EQ(png.width(), viz::SceneImageWidth(205));
   EXPECT_GT(png.height(), 205);
 
   const Scene scene = ReadSceneJson(Path("scene.json"));

@@ -16,7 +16,7 @@ void DrawOneBox(WorldCanvas* canvas, const OrientedBox& box, const BoxDrawingOpt
   const Rgb shade = GreyRamp(options.top_height_m.Normalize(TopHeight(box)));
   if (IsRaised(box, options)) {
     canvas->FillPolygon(corners, shade, options.raised_fill_alpha);
-    canvas->HatchPolygon(corners, Lerp(shade, colors::kInk, 0.4), options.hatch_spacing_px, 1);
+    canvas->HatchPolygon(corners, Lerp(shade, colors::kInk, 0.4), options.hatch_spacing_px, 1.0);
     canvas->DrawPolyline(corners, /*closed=*/true, Lerp(shade, colors::kInk, 0.4),
                          1.5 * options.outline_px);
     return;

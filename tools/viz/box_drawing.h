@@ -17,7 +17,7 @@ struct BoxDrawingOptions {
   double raised_above_m = 0.01;
   double outline_px = 1.0;
   double raised_fill_alpha = 0.35;
-  int hatch_spacing_px = 5;
+  double hatch_spacing_px = 5.0;
 };
 
 /// True if the box's bottom face is above options.raised_above_m.

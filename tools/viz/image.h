@@ -1,19 +1,32 @@
 #pragma once
 
-#include <cstdint>
-#include <vector>
+#include <cairo.h>
+
+#include <functional>
+#include <optional>
+#include <string>
 
 #include "tools/viz/color.h"
 
 namespace topay::viz {
 
-/// An RGB raster image, row-major, top row first (the PNG order). Pixel (x, y) covers the square
-/// [x, x + 1) x [y, y + 1) in pixel coordinates, x to the right, y down. Writes outside the image
-/// are ignored, so drawing code never needs to clip.
+/// An RGB raster image held by a cairo image surface (CAIRO_FORMAT_RGB24), top row first (the
+/// PNG order). Pixel (x, y) covers the square [x, x + 1) x [y, y + 1) in pixel coordinates,
+/// x to the right, y down. Drawing goes through a Painter (tools/viz/painter.h) on the surface;
+/// the image itself only creates, copies and reads pixels.
 class Image {
  public:
   /// Throws std::invalid_argument unless 0 < width, height <= kMaxSidePx.
   Image(int width_px, int height_px, Rgb fill = colors::kWhite);
+  /// Takes over `surface` (one reference), converted to RGB24 over white if it has another
+  /// format. Throws std::runtime_error "<what>: <cairo's reason>" if the surface is in error.
+  static Image Adopt(cairo_surface_t* surface, const std::string& what);
+
+  Image(const Image& other);
+  Image& operator=(const Image& other);
+  Image(Image&& other) noexcept;
+  Image& operator=(Image&& other) noexcept;
+  ~Image();
 
   static constexpr int kMaxSidePx = 16384;
 
@@ -23,23 +36,19 @@ class Image {
 
   /// Colour at (x, y); throws std::out_of_range outside the image.
   Rgb At(int x, int y) const;
-  /// Sets (x, y) if it is inside the image.
-  void Set(int x, int y, const Rgb& colour);
-  /// Composites colour with opacity alpha onto (x, y) if it is inside (see Blend).
-  void Paint(int x, int y, const Rgb& colour, double alpha);
-  void Fill(const Rgb& colour);
+  /// Sets every pixel for which colour_of(x, y) gives a colour (one pass, for per-pixel maps
+  /// such as a distance field).
+  void SetPixels(const std::function<std::optional<Rgb>(int x, int y)>& colour_of);
 
-  /// Interleaved RGB bytes, 3 * width * height, row-major from the top row.
-  const std::vector<std::uint8_t>& bytes() const { return bytes_; }
+  /// The cairo surface, owned by the image (a cairo_t made on it holds its own reference).
+  cairo_surface_t* surface() const { return surface_; }
 
  private:
-  std::size_t Offset(int x, int y) const {
-    return 3 * (static_cast<std::size_t>(y) * width_ + static_cast<std::size_t>(x));
-  }
+  explicit Image(cairo_surface_t* surface);
 
-  int width_;
-  int height_;
-  std::vector<std::uint8_t> bytes_;
+  cairo_surface_t* surface_ = nullptr;
+  int width_ = 0;
+  int height_ = 0;
 };
 
 }  // namespace topay::viz

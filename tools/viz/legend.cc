@@ -4,9 +4,6 @@
 #include <cmath>
 #include <sstream>
 
-#include "tools/viz/bitmap_font.h"
-#include "tools/viz/raster.h"
-
 namespace topay::viz {
 namespace {
 
@@ -18,14 +15,16 @@ std::string FormatMetres(double length_m) {
 
 }  // namespace
 
-LegendLayout::LegendLayout(Image* image, int x0, int y0, int width_px, int text_scale)
-    : image_(image), x0_(x0), y0_(y0), width_(width_px), scale_(std::max(text_scale, 1)),
+LegendLayout::LegendLayout(Painter* painter, double x0, double y0, double width_px,
+                           double font_px)
+    : painter_(painter), x0_(x0), y0_(y0), width_(width_px), font_(std::max(font_px, 4.0)),
       pen_x_(x0) {}
 
-int LegendLayout::RowHeight() const { return (BitmapFont::kLineHeight + 4) * scale_; }
-int LegendLayout::Gap() const { return 4 * BitmapFont::kAdvance * scale_ / 2; }
+double LegendLayout::RowHeight() const { return LineHeight(font_) + 0.5 * font_; }
+double LegendLayout::Gap() const { return 1.5 * font_; }
+double LegendLayout::Top() const { return y0_ + row_ * RowHeight(); }
 
-int LegendLayout::height() const { return (row_ + (row_empty_ ? 0 : 1)) * RowHeight(); }
+double LegendLayout::height() const { return (row_ + (row_empty_ ? 0 : 1)) * RowHeight(); }
 
 void LegendLayout::NewRow() {
   if (row_empty_) return;
@@ -34,67 +33,69 @@ void LegendLayout::NewRow() {
   row_empty_ = true;
 }
 
-int LegendLayout::Place(int width) {
+double LegendLayout::Place(double width) {
   if (!row_empty_ && pen_x_ + width > x0_ + width_) NewRow();
-  const int left = pen_x_;
+  const double left = pen_x_;
   pen_x_ += width + Gap();
   row_empty_ = false;
   return left;
 }
 
 void LegendLayout::Text(const std::string& text, const Rgb& colour) {
-  const int left = Place(BitmapFont::TextWidth(text, scale_));
-  if (image_) DrawText(image_, left, y0_ + row_ * RowHeight(), text, colour, scale_);
+  const double left = Place(TextWidth(text, font_));
+  if (painter_) painter_->Text(left, Top(), text, colour, font_);
 }
 
 void LegendLayout::Swatch(const Rgb& fill, const Rgb& outline, const std::string& label,
                           bool hatched) {
-  const int side = BitmapFont::TextHeight(scale_) + 2;
-  const int text_x = side + BitmapFont::kAdvance * scale_;
-  const int left = Place(text_x + BitmapFont::TextWidth(label, scale_));
-  if (!image_) return;
-  const int top = y0_ + row_ * RowHeight() - 1;
-  FillRect(image_, left, top, left + side, top + side, fill, hatched ? 0.35 : 1.0);
-  if (hatched) {
-    for (int y = top; y < top + side; ++y) {
-      for (int x = left; x < left + side; ++x) {
-        if ((x + y) % 5 == 0) image_->Set(x, y, outline);
-      }
-    }
-  }
-  const Eigen::Vector2d corners[] = {{left + 0.5, top + 0.5}, {left + side - 0.5, top + 0.5},
-                                     {left + side - 0.5, top + side - 0.5},
-                                     {left + 0.5, top + side - 0.5}};
-  DrawPolyline(image_, corners, /*closed=*/true, outline, 1.0);
-  DrawText(image_, left + text_x, y0_ + row_ * RowHeight(), label, colors::kInk, scale_);
+  const double side = std::round(0.9 * font_);
+  const double text_x = side + 0.5 * font_;
+  const double left = std::round(Place(text_x + TextWidth(label, font_)));
+  if (!painter_) return;
+  const double top = std::round(Top() + 0.5 * (LineHeight(font_) - side));
+  const Eigen::Vector2d corners[] = {
+      {left, top}, {left + side, top}, {left + side, top + side}, {left, top + side}};
+  painter_->FillPolygon(corners, fill, hatched ? 0.35 : 1.0);
+  if (hatched) painter_->HatchPolygon(corners, outline, 4.0, 1.0);
+  painter_->StrokeRect(left, top, left + side, top + side, outline, 1.0);
+  painter_->Text(left + text_x, Top(), label, colors::kInk, font_);
 }
 
-void LegendLayout::ColourBar(const std::string& caption,
-                             const std::function<Rgb(double)>& colour_of, const std::string& low,
-                             const std::string& high) {
-  const int space = BitmapFont::kAdvance * scale_;
-  const int bar = 20 * space;
-  const int caption_w = BitmapFont::TextWidth(caption, scale_);
-  const int low_w = BitmapFont::TextWidth(low, scale_);
-  const int high_w = BitmapFont::TextWidth(high, scale_);
-  const int left = Place(caption_w + low_w + bar + high_w + 3 * space);
-  if (!image_) return;
-  const int text_y = y0_ + row_ * RowHeight();
-  int x = left;
-  DrawText(image_, x, text_y, caption, colors::kInk, scale_);
-  x += caption_w + space;
-  DrawText(image_, x, text_y, low, colors::kInk, scale_);
-  x += low_w + space / 2;
-  const int bar_top = text_y - 1;
-  const int bar_bottom = text_y + BitmapFont::TextHeight(scale_) + 1;
-  for (int i = 0; i < bar; ++i) {
-    FillRect(image_, x + i, bar_top, x + i + 1, bar_bottom, colour_of((i + 0.5) / bar));
-  }
-  x += bar + space / 2;
-  DrawText(image_, x, text_y, high, colors::kInk, scale_);
+void LegendLayout::LineKey(const Rgb& colour, double width_px, const std::string& label) {
+  const double key = 1.6 * font_;
+  const double left = Place(key + 0.4 * font_ + TextWidth(label, font_));
+  if (!painter_) return;
+  const double mid = Top() + 0.65 * font_;
+  painter_->DrawLine({left, mid}, {left + key, mid}, colour, width_px);
+  painter_->Text(left + key + 0.4 * font_, Top(), label, colors::kInk, font_);
 }
 
-double LegendLayout::ScaleBarLength(const ViewTransform& view, int target_px) {
+LegendBox LegendLayout::ColourBar(const std::string& caption,
+                                  const std::function<Rgb(double)>& colour_of,
+                                  const std::string& low, const std::string& high) {
+  const double space = 0.5 * font_;
+  const double bar = std::round(10.0 * font_);
+  const double caption_w = TextWidth(caption, font_);
+  const double low_w = TextWidth(low, font_);
+  const double high_w = TextWidth(high, font_);
+  const double left = Place(caption_w + low_w + bar + high_w + 4 * space);
+  double x = left + caption_w + space;
+  LegendBox box;
+  box.x0 = std::round(x + low_w + space);
+  box.x1 = box.x0 + bar;
+  box.y0 = std::round(Top() + 0.1 * font_);
+  box.y1 = std::round(Top() + 1.2 * font_);
+  if (!painter_) return box;
+  painter_->Text(left, Top(), caption, colors::kInk, font_);
+  painter_->Text(x, Top(), low, colors::kInk, font_);
+  for (int i = 0; i < static_cast<int>(bar); ++i) {
+    painter_->FillRect(box.x0 + i, box.y0, box.x0 + i + 1, box.y1, colour_of((i + 0.5) / bar));
+  }
+  painter_->Text(box.x1 + space, Top(), high, colors::kInk, font_);
+  return box;
+}
+
+double LegendLayout::ScaleBarLength(const ViewTransform& view, double target_px) {
   const double target_m = std::max(target_px / view.px_per_m(), 0.01);
   const double decade = std::pow(10.0, std::floor(std::log10(target_m)));
   double best = decade;
@@ -104,23 +105,21 @@ double LegendLayout::ScaleBarLength(const ViewTransform& view, int target_px) {
   return best;
 }
 
-void LegendLayout::ScaleBar(const ViewTransform& view, int target_px) {
+LegendBox LegendLayout::ScaleBar(const ViewTransform& view, double target_px) {
   const double length_m = ScaleBarLength(view, target_px);
-  const int length_px = static_cast<int>(std::lround(view.ToPixels(length_m)));
+  const double length_px = std::round(view.ToPixels(length_m));
   const std::string label = FormatMetres(length_m);
-  const int space = BitmapFont::kAdvance * scale_;
-  const int left = Place(length_px + space + BitmapFont::TextWidth(label, scale_));
-  if (!image_) return;
-  const int text_y = y0_ + row_ * RowHeight();
-  const int bar_y = text_y + BitmapFont::TextHeight(scale_) / 2;
-  const int thickness = std::max(2, scale_);
-  FillRect(image_, left, bar_y - thickness / 2, left + length_px, bar_y - thickness / 2 + thickness,
-           colors::kInk);
-  const int tick = BitmapFont::TextHeight(scale_) / 2 + 1;
-  FillRect(image_, left, bar_y - tick, left + thickness, bar_y + tick, colors::kInk);
-  FillRect(image_, left + length_px - thickness, bar_y - tick, left + length_px, bar_y + tick,
-           colors::kInk);
-  DrawText(image_, left + length_px + space, text_y, label, colors::kInk, scale_);
+  const double space = 0.5 * font_;
+  const double left = std::round(Place(length_px + space + TextWidth(label, font_)));
+  const double mid = std::round(Top() + 0.65 * font_);
+  LegendBox box{left, mid - 1.0, left + length_px, mid + 1.0};
+  if (!painter_) return box;
+  const double tick = 0.4 * font_;
+  painter_->FillRect(box.x0, box.y0, box.x1, box.y1, colors::kInk);
+  painter_->FillRect(left, mid - tick, left + 2.0, mid + tick, colors::kInk);
+  painter_->FillRect(box.x1 - 2.0, mid - tick, box.x1, mid + tick, colors::kInk);
+  painter_->Text(box.x1 + space, Top(), label, colors::kInk, font_);
+  return box;
 }
 
 }  // namespace topay::viz

@@ -6,9 +6,7 @@
 #include <stdexcept>
 #include <tuple>
 
-#include "tools/viz/bitmap_font.h"
 #include "tools/viz/chart_ticks.h"
-#include "tools/viz/raster.h"
 
 namespace topay::viz {
 namespace {
@@ -72,13 +70,27 @@ std::pair<double, double> YRange(const LineChart& chart, const ChartStyle& style
   return CheckedRange(PaddedRange(extent.lo, extent.hi, style.y_padding), "y", chart);
 }
 
-int HeaderHeight(const ChartStyle& s) { return (BitmapFont::kLineHeight + 4) * s.text_scale; }
-int TickLength(const ChartStyle& s) { return 3 * s.text_scale; }
+double HeaderHeight(const ChartStyle& s) { return LineHeight(s.font_px) + 0.4 * s.font_px; }
+double TickLength(const ChartStyle& s) { return 0.35 * s.font_px; }
 
-int FooterHeight(const LineChart& chart, const ChartStyle& s) {
-  const int ticks = TickLength(s) + 2 * s.text_scale + BitmapFont::TextHeight(s.text_scale);
-  const int label = chart.x_label.empty() ? 0 : BitmapFont::kLineHeight * s.text_scale + 2;
-  return ticks + label + 3 * s.text_scale;
+double FooterHeight(const LineChart& chart, const ChartStyle& s) {
+  const double ticks = TickLength(s) + 0.2 * s.font_px + LineHeight(s.font_px);
+  const double label = chart.x_label.empty() ? 0.0 : LineHeight(s.font_px);
+  return ticks + label + 0.3 * s.font_px;
+}
+
+// The x ticks to draw: the named ones inside the range, or the numeric ones.
+std::vector<std::pair<double, std::string>> XTickLabels(const LineChart& chart,
+                                                        const ChartLayout& l) {
+  std::vector<std::pair<double, std::string>> ticks;
+  if (!chart.x_tick_labels.empty()) {
+    for (const auto& tick : chart.x_tick_labels) {
+      if (tick.first >= l.x_min && tick.first <= l.x_max) ticks.push_back(tick);
+    }
+    return ticks;
+  }
+  for (double x : l.x_ticks) ticks.emplace_back(x, FormatTick(x, l.x_step));
+  return ticks;
 }
 
 // Liang-Barsky: clips segment a-b to the rectangle; false if nothing is left.
@@ -126,83 +138,95 @@ std::vector<Eigen::Vector2d> ClippedPolyline(const ChartSeries& s, const ChartLa
   return out;
 }
 
-void DrawGridAndTicks(Image* image, const ChartLayout& l, const ChartStyle& s) {
+void DrawGridAndTicks(Painter* painter, const LineChart& chart, const ChartLayout& l,
+                      const ChartStyle& s) {
   const PixelRect& p = l.plot;
-  const int scale = s.text_scale;
-  const int glyph_h = BitmapFont::TextHeight(scale);
-  for (double x : l.x_ticks) {
-    const int u = static_cast<int>(std::lround(l.ToPixel(x, l.y_min).x()));
-    FillRect(image, u, p.y0, u + 1, p.y1, s.grid);
-    FillRect(image, u, p.y1, u + 1, p.y1 + TickLength(s), s.frame);
-    const std::string text = FormatTick(x, l.x_step);
-    DrawText(image, u - BitmapFont::TextWidth(text, scale) / 2, p.y1 + TickLength(s) + 2 * scale,
-             text, colors::kInk, scale);
+  const double f = s.font_px;
+  for (const auto& [x, text] : XTickLabels(chart, l)) {
+    const double u = std::round(l.ToPixel(x, l.y_min).x()) + 0.5;
+    painter->DrawLine({u, p.y0 + 0.0}, {u, p.y1 + 0.0}, s.grid, 1.0);
+    painter->DrawLine({u, p.y1 + 1.0}, {u, p.y1 + 1.0 + TickLength(s)}, s.frame, 1.0);
+    // Named ticks may span lines ("tables\nmedium").
+    double y = p.y1 + TickLength(s) + 0.2 * f;
+    std::size_t begin = 0;
+    while (begin <= text.size()) {
+      const std::size_t end = std::min(text.find('\n', begin), text.size());
+      painter->Text(u, y, text.substr(begin, end - begin), colors::kInk, f, TextAlign::kCentre);
+      y += LineHeight(f);
+      begin = end + 1;
+    }
   }
   for (double y : l.y_ticks) {
-    const int v = static_cast<int>(std::lround(l.ToPixel(l.x_min, y).y()));
-    FillRect(image, p.x0, v, p.x1, v + 1, s.grid);
-    FillRect(image, p.x0 - TickLength(s), v, p.x0, v + 1, s.frame);
-    const std::string text = FormatTick(y, l.y_step);
-    DrawText(image, p.x0 - TickLength(s) - 2 * scale - BitmapFont::TextWidth(text, scale),
-             v - glyph_h / 2, text, colors::kInk, scale);
+    const double v = std::round(l.ToPixel(l.x_min, y).y()) + 0.5;
+    painter->DrawLine({p.x0 + 0.0, v}, {p.x1 + 0.0, v}, s.grid, 1.0);
+    painter->DrawLine({p.x0 - 1.0 - TickLength(s), v}, {p.x0 - 1.0, v}, s.frame, 1.0);
+    painter->Text(p.x0 - TickLength(s) - 0.2 * f, v - 0.65 * f, FormatTick(y, l.y_step),
+                  colors::kInk, f, TextAlign::kRight);
   }
 }
 
 // The dashed lines (labels: false) or their labels (true), for the limits inside the y range.
-void DrawLimitLines(Image* image, const LineChart& chart, const ChartLayout& l, const ChartStyle& s,
-                    bool labels) {
+void DrawLimitLines(Painter* painter, const LineChart& chart, const ChartLayout& l,
+                    const ChartStyle& s, bool labels) {
   const PixelRect& p = l.plot;
-  const int scale = s.text_scale;
+  const double f = s.font_px;
   for (const ChartLimitLine& line : chart.limit_lines) {
     if (!(line.y >= l.y_min && line.y <= l.y_max)) continue;
     const double v = l.ToPixel(l.x_min, line.y).y();
     if (!labels) {
-      DrawDashedLine(image, {p.x0 + 1.0, v}, {p.x1 - 1.0, v}, line.colour, line.width_px,
-                     line.dash);
+      painter->DrawDashedLine({p.x0 + 1.0, v}, {p.x1 - 1.0, v}, line.colour, line.width_px,
+                              line.dash);
       continue;
     }
     if (line.label.empty()) continue;
-    const int w = BitmapFont::TextWidth(line.label, scale);
-    const int h = BitmapFont::TextHeight(scale);
-    const int x = p.x1 - w - 3 * scale;
-    int y = static_cast<int>(std::lround(v)) - h - 3 * scale;                // above the line...
-    if (y < p.y0 + scale) y = static_cast<int>(std::lround(v)) + 3 * scale;  // ...or below
-    FillRect(image, x - scale, y - scale, x + w + scale, y + h + scale, s.background, 0.8);
-    DrawText(image, x, y, line.label, line.colour, scale);
+    const double w = TextWidth(line.label, f);
+    const double x = p.x1 - w - 0.3 * f;
+    double y = v - LineHeight(f) - 0.1 * f;        // above the line...
+    if (y < p.y0) y = v + 0.1 * f;                 // ...or below
+    painter->FillRect(x - 2.0, y, x + w + 2.0, y + LineHeight(f), s.background, 0.8);
+    painter->Text(x, y, line.label, line.colour, f);
   }
 }
 
-void DrawHeader(Image* image, const PixelRect& area, const LineChart& chart, const ChartLayout& l,
-                const ChartStyle& s) {
-  const int scale = s.text_scale;
-  const int y = area.y0 + 2 * scale;
-  int x = l.plot.x0;
-  if (!chart.title.empty()) {
-    DrawText(image, x, y, chart.title, colors::kInk, scale);
-    x += BitmapFont::TextWidth(chart.title, scale) + 3 * BitmapFont::kAdvance * scale;
+void DrawSeries(Painter* painter, const ChartSeries& series, const ChartLayout& l) {
+  if (series.marker_radius_px > 0.0) {
+    for (std::size_t i = 0; i < series.x.size(); ++i) {
+      const Eigen::Vector2d p = l.ToPixel(series.x[i], series.y[i]);
+      if (p.allFinite()) painter->FillCircle(p, series.marker_radius_px, series.colour, 0.85);
+    }
+    return;
   }
-  if (!chart.y_label.empty()) DrawText(image, x, y, chart.y_label, colors::kInk, scale);
+  painter->DrawPolyline(ClippedPolyline(series, l), /*closed=*/false, series.colour,
+                        series.width_px);
+}
+
+void DrawHeader(Painter* painter, const PixelRect& area, const LineChart& chart,
+                const ChartLayout& l, const ChartStyle& s) {
+  const double f = s.font_px;
+  const double y = area.y0 + 0.2 * f;
+  double x = l.plot.x0;
+  if (!chart.title.empty()) {
+    painter->Text(x, y, chart.title, colors::kInk, f);
+    x += TextWidth(chart.title, f) + 2.0 * f;
+  }
+  if (!chart.y_label.empty()) painter->Text(x, y, chart.y_label, {90, 90, 90}, f);
   if (!chart.show_legend) return;
-  // Legend, right-aligned: a short line in the series' colour, then its label.
-  const int key = 4 * BitmapFont::kAdvance * scale / 2;
-  const int gap = 2 * BitmapFont::kAdvance * scale;
-  int right = l.plot.x1;
+  // Legend, right-aligned: a short line (or a dot) in the series' colour, then its label.
+  const double key = 1.6 * f;
+  double right = l.plot.x1;
   for (auto it = chart.series.rbegin(); it != chart.series.rend(); ++it) {
     if (it->label.empty()) continue;
-    const int w = BitmapFont::TextWidth(it->label, scale);
-    const int left = right - w - key - scale * 2;
-    const double mid = y + BitmapFont::TextHeight(scale) / 2.0;
-    DrawLine(image, {left + 0.0, mid}, {left + key + 0.0, mid}, it->colour, it->width_px + 1.0);
-    DrawText(image, left + key + 2 * scale, y, it->label, colors::kInk, scale);
-    right = left - gap;
+    const double w = TextWidth(it->label, f);
+    const double left = right - w - key - 0.3 * f;
+    const double mid = y + 0.65 * f;
+    if (it->marker_radius_px > 0.0) {
+      painter->FillCircle({left + 0.5 * key, mid}, it->marker_radius_px, it->colour);
+    } else {
+      painter->DrawLine({left, mid}, {left + key, mid}, it->colour, it->width_px + 1.0);
+    }
+    painter->Text(left + key + 0.3 * f, y, it->label, colors::kInk, f);
+    right = left - 1.2 * f;
   }
-}
-
-void DrawFrame(Image* image, const PixelRect& p, const ChartStyle& s) {
-  FillRect(image, p.x0 - 1, p.y0 - 1, p.x1 + 1, p.y0, s.frame);
-  FillRect(image, p.x0 - 1, p.y1, p.x1 + 1, p.y1 + 1, s.frame);
-  FillRect(image, p.x0 - 1, p.y0 - 1, p.x0, p.y1 + 1, s.frame);
-  FillRect(image, p.x1, p.y0 - 1, p.x1 + 1, p.y1 + 1, s.frame);
 }
 
 }  // namespace
@@ -215,33 +239,38 @@ Eigen::Vector2d ChartLayout::ToPixel(double x, double y) const {
 ChartLayout LayOutLineChart(const PixelRect& area, const LineChart& chart,
                             const ChartStyle& style) {
   CheckSeries(chart);
-  if (style.text_scale < 1 || style.text_scale > 8) {
-    throw std::invalid_argument("line chart '" + chart.title + "': text_scale " +
-                                std::to_string(style.text_scale) + " is outside [1, 8]");
+  if (!(style.font_px >= 4.0 && style.font_px <= 64.0)) {
+    throw std::invalid_argument("line chart '" + chart.title + "': font_px " +
+                                std::to_string(style.font_px) + " is outside [4, 64]");
   }
   ChartLayout l;
   std::tie(l.x_min, l.x_max) = XRange(chart);
   std::tie(l.y_min, l.y_max) = YRange(chart, style);
   l.x_step = NiceTickStep(l.x_max - l.x_min, std::max(style.target_x_ticks, 1));
-  l.y_step = NiceTickStep(l.y_max - l.y_min, std::max(style.target_y_ticks, 1));
+  l.y_step = chart.y_step && *chart.y_step > 0.0
+                 ? *chart.y_step
+                 : NiceTickStep(l.y_max - l.y_min, std::max(style.target_y_ticks, 1));
   l.x_ticks = TicksIn(l.x_min, l.x_max, l.x_step);
   l.y_ticks = TicksIn(l.y_min, l.y_max, l.y_step);
 
-  const int scale = style.text_scale;
-  int label_w = 0;
-  for (double y : l.y_ticks) {
-    label_w = std::max(label_w, BitmapFont::TextWidth(FormatTick(y, l.y_step), scale));
+  const double f = style.font_px;
+  double label_w = 0.0;
+  for (double y : l.y_ticks) label_w = std::max(label_w, TextWidth(FormatTick(y, l.y_step), f));
+  double last_x_label_w = 0.0;
+  int x_label_lines = 1;
+  for (const auto& [x, text] : XTickLabels(chart, l)) {
+    last_x_label_w = std::max(last_x_label_w, TextWidth(text, f));
+    x_label_lines = std::max(
+        x_label_lines, 1 + static_cast<int>(std::count(text.begin(), text.end(), '\n')));
   }
-  int last_x_label_w = 0;
-  for (double x : l.x_ticks) {
-    last_x_label_w =
-        std::max(last_x_label_w, BitmapFont::TextWidth(FormatTick(x, l.x_step), scale));
-  }
-  l.plot.x0 = area.x0 + (style.plot_left_inset_px > 0 ? style.plot_left_inset_px
-                                                      : label_w + TickLength(style) + 4 * scale);
-  l.plot.x1 = area.x1 - std::max(last_x_label_w / 2 + 2 * scale, 4 * scale);
-  l.plot.y0 = area.y0 + HeaderHeight(style);
-  l.plot.y1 = area.y1 - FooterHeight(chart, style);
+  if (!chart.x_tick_labels.empty()) last_x_label_w = 0.0;  // Categories sit inside the plot.
+  l.plot.x0 = area.x0 + (style.plot_left_inset_px > 0
+                             ? style.plot_left_inset_px
+                             : static_cast<int>(std::ceil(label_w + TickLength(style) + 0.6 * f)));
+  l.plot.x1 = area.x1 - static_cast<int>(std::ceil(std::max(last_x_label_w / 2 + 0.2 * f, 0.4 * f)));
+  l.plot.y0 = area.y0 + static_cast<int>(std::ceil(HeaderHeight(style)));
+  l.plot.y1 = area.y1 - static_cast<int>(std::ceil(FooterHeight(chart, style) +
+                                                   (x_label_lines - 1) * LineHeight(f)));
   if (l.plot.width() < 10 || l.plot.height() < 10) {
     throw std::invalid_argument("line chart '" + chart.title + "': area " +
                                 std::to_string(area.width()) + " x " +
@@ -250,26 +279,31 @@ ChartLayout LayOutLineChart(const PixelRect& area, const LineChart& chart,
   return l;
 }
 
-ChartLayout DrawLineChart(Image* image, const PixelRect& area, const LineChart& chart,
+ChartLayout DrawLineChart(Painter* painter, const PixelRect& area, const LineChart& chart,
                           const ChartStyle& style) {
   const ChartLayout l = LayOutLineChart(area, chart, style);
-  FillRect(image, area.x0, area.y0, area.x1, area.y1, style.background);
-  DrawGridAndTicks(image, l, style);
-  DrawLimitLines(image, chart, l, style, /*labels=*/false);
-  for (const ChartSeries& s : chart.series) {
-    const std::vector<Eigen::Vector2d> points = ClippedPolyline(s, l);
-    DrawLongPolyline(image, points, s.colour, s.width_px);
-  }
-  DrawLimitLines(image, chart, l, style, /*labels=*/true);
-  DrawFrame(image, l.plot, style);
-  DrawHeader(image, area, chart, l, style);
+  painter->FillRect(area.x0, area.y0, area.x1, area.y1, style.background);
+  DrawGridAndTicks(painter, chart, l, style);
+  DrawLimitLines(painter, chart, l, style, /*labels=*/false);
+  painter->PushClip(l.plot.x0, l.plot.y0, l.plot.x1, l.plot.y1);
+  for (const ChartSeries& s : chart.series) DrawSeries(painter, s, l);
+  painter->PopClip();
+  DrawLimitLines(painter, chart, l, style, /*labels=*/true);
+  painter->StrokeRect(l.plot.x0 - 1, l.plot.y0 - 1, l.plot.x1 + 1, l.plot.y1 + 1, style.frame);
+  DrawHeader(painter, area, chart, l, style);
   if (!chart.x_label.empty()) {
-    const int scale = style.text_scale;
-    const int w = BitmapFont::TextWidth(chart.x_label, scale);
-    const int y = l.plot.y1 + TickLength(style) + 2 * scale + BitmapFont::TextHeight(scale) + 3;
-    DrawText(image, (l.plot.x0 + l.plot.x1 - w) / 2, y, chart.x_label, colors::kInk, scale);
+    const double f = style.font_px;
+    const double y = area.y1 - LineHeight(f) - 0.2 * f;
+    painter->Text(0.5 * (l.plot.x0 + l.plot.x1), y, chart.x_label, colors::kInk, f,
+                  TextAlign::kCentre);
   }
   return l;
+}
+
+ChartLayout DrawLineChart(Image* image, const PixelRect& area, const LineChart& chart,
+                          const ChartStyle& style) {
+  Painter painter(image);
+  return DrawLineChart(&painter, area, chart, style);
 }
 
 }  // namespace topay::viz

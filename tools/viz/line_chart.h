@@ -8,7 +8,7 @@
 
 #include "tools/viz/color.h"
 #include "tools/viz/image.h"
-#include "tools/viz/strokes.h"
+#include "tools/viz/painter.h"
 
 namespace topay::viz {
 
@@ -19,6 +19,8 @@ struct ChartSeries {
   Rgb colour = colors::kInk;
   std::string label;  ///< Legend entry; empty: none.
   double width_px = 2.0;
+  /// Draw each point as a dot of this radius (px) instead of joining them (a scatter plot).
+  double marker_radius_px = 0.0;
 };
 
 /// A horizontal reference line y = value across the plot (a limit), dashed.
@@ -41,10 +43,14 @@ struct LineChart {
   std::optional<std::pair<double, double>> x_range;
   std::optional<std::pair<double, double>> y_range;
   bool show_legend = false;  ///< Series labels, right-aligned in the title row.
+  /// Named x positions (e.g. categories) drawn instead of the numeric x ticks; empty: numbers.
+  std::vector<std::pair<double, std::string>> x_tick_labels;
+  /// Fixed y tick step (e.g. 20 for percentages); unset: NiceTickStep.
+  std::optional<double> y_step;
 };
 
 struct ChartStyle {
-  int text_scale = 1;       ///< Bitmap-font pixel size.
+  double font_px = 12.0;    ///< Text height (Painter::Text size).
   int target_x_ticks = 10;  ///< About this many intervals (NiceTickStep).
   int target_y_ticks = 4;
   double y_padding = 0.06;  ///< Fraction of the fitted y span added at each end.
@@ -81,15 +87,17 @@ struct ChartLayout {
 
 /// Lays out the chart in `area` without drawing: a title row (title, y label, legend), y tick
 /// labels on the left, x tick labels (and x_label) below. Throws std::invalid_argument for series
-/// of unequal x and y sizes, an empty or non-finite range (nothing finite to fit), or an area too
-/// small for a plot of at least 10 x 10 pixels.
+/// of unequal x and y sizes, an empty or non-finite range (nothing finite to fit), a font_px
+/// outside [4, 64], or an area too small for a plot of at least 10 x 10 pixels.
 ChartLayout LayOutLineChart(const PixelRect& area, const LineChart& chart,
                             const ChartStyle& style = {});
 
-/// Draws the chart into `area` of the image (as laid out by LayOutLineChart): background,
-/// grid at the ticks, tick labels, dashed limit lines with their labels, the series clipped to
-/// the plot in order (later series on top), the frame, the title and y label, the x label and
-/// the legend.
+/// Draws the chart into `area` (as laid out by LayOutLineChart): background, grid at the
+/// ticks, tick labels, dashed limit lines with their labels, the series clipped to the plot in
+/// order (later series on top), the frame, the title and y label, the x label and the legend.
+ChartLayout DrawLineChart(Painter* painter, const PixelRect& area, const LineChart& chart,
+                          const ChartStyle& style = {});
+/// The same on a fresh painter of the image.
 ChartLayout DrawLineChart(Image* image, const PixelRect& area, const LineChart& chart,
                           const ChartStyle& style = {});
 

@@ -4,11 +4,7 @@
 #include <sstream>
 #include <stdexcept>
 
-#include "tools/viz/bitmap_font.h"
 #include "tools/viz/color_map.h"
-#include "tools/viz/legend.h"
-#include "tools/viz/raster.h"
-#include "tools/viz/world_canvas.h"
 
 namespace topay::viz {
 namespace {
@@ -16,6 +12,14 @@ namespace {
 std::string FormatNumber(double value) {
   std::ostringstream out;
   out << value;
+  return out.str();
+}
+
+std::string FormatMetres(double value) {
+  std::ostringstream out;
+  out.setf(std::ios::fixed);
+  out.precision(2);
+  out << value << " m";
   return out.str();
 }
 
@@ -33,16 +37,14 @@ void CheckInput(const SceneDrawing& drawing) {
   }
 }
 
-ViewTransform MapView(const Scene& scene, const SceneRenderOptions& options) {
-  const Eigen::Vector2d margin = Eigen::Vector2d::Constant(options.margin_m);
-  const Eigen::AlignedBox2d region(scene.bounds_W_m.min().head<2>() - margin,
-                                   scene.bounds_W_m.max().head<2>() + margin);
-  return ViewTransform(region, options.px_per_m);
+int LeftPx(const SceneRenderOptions& options) {
+  return static_cast<int>(std::ceil(MapAxesLeftPx(options.axes)));
 }
 
-// The legend items, in order; with a null image this only measures.
+// The legend items, in order; with a null painter this only measures.
 void LayOutLegend(const SceneDrawing& drawing, const SceneRenderOptions& options,
-                  const ViewTransform& view, LegendLayout* legend) {
+                  const SceneOverlay& overlay, const ViewTransform& view, LegendLayout* legend,
+                  SceneRenderReport* report) {
   for (const std::string& line : drawing.title_lines) legend->Text(line);
   legend->NewRow();
   for (const RobotPoseDrawing& robot : drawing.robots) {
@@ -61,9 +63,19 @@ void LayOutLegend(const SceneDrawing& drawing, const SceneRenderOptions& options
                       FormatNumber(options.robot.sphere_height_m.max) + " m");
   }
   if (drawing.base_field != nullptr) {
-    legend->ColourBar("base clearance", Viridis, "0", FormatNumber(options.field.clip_m) + " m");
+    const ScalarRange range = DistanceColourRange(*drawing.base_field, options.field);
+    const LegendBox bar = legend->ColourBar("base clearance", Viridis, FormatMetres(range.min),
+                                            FormatMetres(range.max));
+    if (report != nullptr) {
+      report->field_range_m = range;
+      report->clearance_bar = bar;
+    }
   }
   legend->ScaleBar(view);
+  if (overlay.legend) {
+    legend->NewRow();
+    overlay.legend(legend);
+  }
 }
 
 void DrawMap(const SceneDrawing& drawing, const SceneRenderOptions& options,
@@ -86,29 +98,49 @@ void DrawMap(const SceneDrawing& drawing, const SceneRenderOptions& options,
 
 }  // namespace
 
-Image RenderScene(const SceneDrawing& drawing, const SceneRenderOptions& options_in) {
+ViewTransform SceneMapView(const Scene& scene, const SceneRenderOptions& options) {
+  const Eigen::Vector2d margin = Eigen::Vector2d::Constant(options.margin_m);
+  const Eigen::AlignedBox2d region(scene.bounds_W_m.min().head<2>() - margin,
+                                   scene.bounds_W_m.max().head<2>() + margin);
+  return ViewTransform(region, options.px_per_m,
+                       Eigen::Vector2d(LeftPx(options), std::round(options.top_px)));
+}
+
+int SceneImageWidth(int map_width_px, const SceneRenderOptions& options) {
+  return LeftPx(options) + map_width_px + static_cast<int>(std::round(options.right_px));
+}
+
+Image RenderScene(const SceneDrawing& drawing, const SceneRenderOptions& options_in,
+                  SceneRenderReport* report, const SceneOverlay& overlay) {
   CheckInput(drawing);
   SceneRenderOptions options = options_in;
   const Eigen::AlignedBox3d& bounds = drawing.scene->bounds_W_m;
   options.boxes.top_height_m = {bounds.min().z(), bounds.max().z()};
 
-  const ViewTransform map_view = MapView(*drawing.scene, options);
-  const int pad = 4 * options.text_scale;
-  const int width = map_view.width_px();
-  LegendLayout measure(nullptr, pad, 0, width - 2 * pad, options.text_scale);
-  LayOutLegend(drawing, options, map_view, &measure);
-  const int height = map_view.height_px() + measure.height() + 2 * pad;
+  const ViewTransform view = SceneMapView(*drawing.scene, options);
+  const double pad = 0.5 * options.font_px;
+  const int width = SceneImageWidth(view.width_px(), options);
+  const double legend_top =
+      view.offset_px().y() + view.height_px() + std::ceil(MapAxesBottomPx(options.axes));
+  LegendLayout measure(nullptr, pad, 0.0, width - 2.0 * pad, options.font_px);
+  LayOutLegend(drawing, options, overlay, view, &measure, nullptr);
+  const int height = static_cast<int>(std::ceil(legend_top + measure.height() + pad));
 
-  WorldCanvas canvas(Image(width, height, colors::kPaper), map_view);
+  WorldCanvas canvas(Image(width, height, colors::kPaper), view, /*clip_to_view=*/true);
   DrawMap(drawing, options, &canvas);
-  // Whatever the map drew past its block (thick outlines at the border) is covered by the
-  // legend strip's paper.
-  FillRect(&canvas.image(), 0, map_view.height_px(), width, height, colors::kPaper);
-  FillRect(&canvas.image(), 0, map_view.height_px(), width, map_view.height_px() + 1,
-           colors::kInk);
-  LegendLayout legend(&canvas.image(), pad, map_view.height_px() + pad + options.text_scale,
-                      width - 2 * pad, options.text_scale);
-  LayOutLegend(drawing, options, map_view, &legend);
+  if (overlay.draw) overlay.draw(&canvas);
+
+  Painter painter(&canvas.image());
+  DrawMapAxes(&painter, view, options.axes);
+  painter.FillRect(0.0, legend_top - 2.0, width, legend_top - 1.0, Lerp(colors::kPaper, colors::kInk, 0.3));
+  LegendLayout legend(&painter, pad, legend_top + 0.25 * options.font_px, width - 2.0 * pad,
+                      options.font_px);
+  if (report != nullptr) {
+    *report = {};
+    const Eigen::Vector2d& o = view.offset_px();
+    report->map_px = {o.x(), o.y(), o.x() + view.width_px(), o.y() + view.height_px()};
+  }
+  LayOutLegend(drawing, options, overlay, view, &legend, report);
   return std::move(canvas.image());
 }
 

@@ -5,8 +5,7 @@
 #include <sstream>
 #include <stdexcept>
 
-#include "tools/viz/bitmap_font.h"
-#include "tools/viz/raster.h"
+#include "tools/viz/painter.h"
 
 namespace topay::viz {
 namespace {
@@ -60,7 +59,7 @@ LineChart BaseChart(const std::string& title, const std::string& unit, const std
                     const std::vector<double>& t, const std::vector<double>& values, double bound) {
   LineChart chart;
   chart.title = title + " " + symbol + " (" + unit + ")";
-  chart.y_label = "dashed: +-" + symbol + "_max = " + Number(bound) + " " + unit;
+  chart.y_label = "dashed: ±" + symbol + "_max = " + Number(bound) + " " + unit;
   chart.series.push_back({t, values, kSeriesColour, symbol, 2.0});
   ChartLimitLine upper;
   upper.y = bound;
@@ -84,7 +83,7 @@ void AddCoupledSpeedBound(const TimePlotData& data, const BaseLimits& b, LineCha
   }
   ChartSeries lower = upper;
   for (double& v : lower.y) v = -v;
-  upper.label = "v bound from omega, eq. (9)";
+  upper.label = "v bound from ω, eq. (9)";
   chart->series.insert(chart->series.begin(), {upper, lower});
   chart->show_legend = true;
 }
@@ -108,9 +107,17 @@ LineChart JointChart(const TimePlotData& data, const TimePlotLimits& limits) {
   return chart;
 }
 
+std::vector<std::string> Lines(const std::string& text) {
+  std::vector<std::string> lines;
+  std::istringstream in(text);
+  for (std::string line; std::getline(in, line);) lines.push_back(line);
+  if (lines.empty()) lines.emplace_back();
+  return lines;
+}
+
 int TitleHeight(const TimePlotOptions& o) {
-  const int lines = 1 + static_cast<int>(std::count(o.title.begin(), o.title.end(), '\n'));
-  return (BitmapFont::kLineHeight * lines + 6) * o.style.text_scale;
+  const double f = o.style.font_px;
+  return static_cast<int>(std::ceil(LineHeight(f) * Lines(o.title).size() + 0.6 * f));
 }
 
 }  // namespace
@@ -161,10 +168,10 @@ std::vector<LineChart> TimePlotCharts(const TimePlotData& data, const TimePlotLi
   charts.push_back(BaseChart("linear velocity", "m/s", "v", data.t_s, data.v_mps, b.v_max_mps));
   AddCoupledSpeedBound(data, b, &charts.back());
   charts.push_back(
-      BaseChart("yaw rate", "rad/s", "omega", data.t_s, data.omega_radps, b.omega_max_radps));
+      BaseChart("yaw rate", "rad/s", "ω", data.t_s, data.omega_radps, b.omega_max_radps));
   charts.push_back(
-      BaseChart("linear acceleration", "m/s/s", "a", data.t_s, data.a_mps2, b.a_max_mps2));
-  charts.push_back(BaseChart("yaw acceleration", "rad/s/s", "beta", data.t_s, data.beta_radps2,
+      BaseChart("linear acceleration", "m/s²", "a", data.t_s, data.a_mps2, b.a_max_mps2));
+  charts.push_back(BaseChart("yaw acceleration", "rad/s²", "β", data.t_s, data.beta_radps2,
                              b.beta_max_radps2));
   charts.push_back(JointChart(data, limits));
   // One time axis for every panel.
@@ -204,10 +211,14 @@ Image RenderTimePlots(const TimePlotData& data, const TimePlotLimits& limits,
     style.plot_left_inset_px = std::max(style.plot_left_inset_px, layout.plot.x0 - panels[i].x0);
   }
   Image image(options.width_px, panels.back().y1 + 4, style.background);
-  DrawText(&image, 4 * style.text_scale, 3 * style.text_scale, options.title, colors::kInk,
-           style.text_scale);
+  Painter painter(&image);
+  double y = 0.3 * style.font_px;
+  for (const std::string& line : Lines(options.title)) {
+    painter.Text(0.5 * style.font_px, y, line, colors::kInk, style.font_px);
+    y += LineHeight(style.font_px);
+  }
   for (std::size_t i = 0; i < charts.size(); ++i) {
-    DrawLineChart(&image, panels[i], charts[i], style);
+    DrawLineChart(&painter, panels[i], charts[i], style);
   }
   return image;
 }

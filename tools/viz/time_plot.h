@@ -40,7 +40,7 @@ struct TimePlotOptions {
   int width_px = 1100;
   int base_panel_height_px = 190;   ///< Each of v, omega, a, beta.
   int joint_panel_height_px = 300;  ///< The joint angles.
-  ChartStyle style{.text_scale = 2};
+  ChartStyle style{.font_px = 15.0};
 };
 
 /// The distinct colour of joint k (0-based; the palette of Okabe and Ito, 2008, without its

@@ -5,7 +5,6 @@
 #include <string>
 
 #include "tools/viz/robot_drawing.h"
-#include "tools/viz/strokes.h"
 
 namespace topay::viz {
 namespace {
@@ -23,13 +22,10 @@ void CheckTrajectory(const ArcYawTrajectory& trajectory, const Kinematics& kinem
 
 void DrawPath(WorldCanvas* canvas, const std::vector<Eigen::Vector2d>& path_W,
               const TrajectoryDrawingStyle& style) {
-  std::vector<Eigen::Vector2d> path_px;
-  path_px.reserve(path_W.size());
-  for (const Eigen::Vector2d& p : path_W) path_px.push_back(canvas->view().ToPixel(p));
   if (style.path_halo) {
-    DrawLongPolyline(&canvas->image(), path_px, colors::kWhite, style.path_width_px + 2.5);
+    canvas->DrawPolyline(path_W, /*closed=*/false, colors::kWhite, style.path_width_px + 2.5);
   }
-  DrawLongPolyline(&canvas->image(), path_px, style.path_colour, style.path_width_px);
+  canvas->DrawPolyline(path_W, /*closed=*/false, style.path_colour, style.path_width_px);
 }
 
 }  // namespace

@@ -5,7 +5,6 @@
 
 #include "tools/viz/color_map.h"
 #include "tools/viz/legend.h"
-#include "tools/viz/raster.h"
 #include "tools/viz/robot_drawing.h"
 #include "tools/viz/world_canvas.h"
 
@@ -31,7 +30,7 @@ std::string Seconds(double value) {
   return out.str();
 }
 
-// The keys of the trajectory layer; with a null image this only measures.
+// The keys of the trajectory layer.
 void LayOutTrajectoryLegend(const TrajectoryView& view, const TrajectoryViewOptions& options,
                             LegendLayout* legend) {
   legend->Swatch(colors::kWhite, colors::kStart, "start");
@@ -41,7 +40,7 @@ void LayOutTrajectoryLegend(const TrajectoryView& view, const TrajectoryViewOpti
   }
   const TrajectoryDrawingStyle& style = options.trajectory;
   legend->Swatch(colors::kWhite, colors::kGoal, "end");
-  legend->Swatch(style.path_colour, style.path_colour, "base path");
+  legend->LineKey(style.path_colour, style.path_width_px, "base path");
   const double duration_s = view.trajectory->duration_s();
   std::ostringstream caption;
   caption << "footprints every " << style.footprint_interval_s << " s, time";
@@ -65,61 +64,35 @@ void DrawPose(WorldCanvas* canvas, const Kinematics& kinematics, const WholeBody
   DrawRobot(canvas, kinematics.model(), cache, style);
 }
 
-// Draws the trajectory layer over the map part of `image` (RenderScene's output).
-void DrawLayer(const TrajectoryView& view, const TrajectoryViewOptions& options, Image* image) {
-  WorldCanvas canvas(std::move(*image), SceneMapView(*view.scene, options.scene));
+// Draws the trajectory layer over the map.
+void DrawLayer(const TrajectoryView& view, const TrajectoryViewOptions& options,
+               WorldCanvas* canvas) {
   if (view.trajectory != nullptr) {
-    DrawTrajectory(&canvas, *view.trajectory, *view.kinematics, options.trajectory);
+    DrawTrajectory(canvas, *view.trajectory, *view.kinematics, options.trajectory);
   }
-  DrawPose(&canvas, *view.kinematics, view.start, colors::kStart, options);
+  DrawPose(canvas, *view.kinematics, view.start, colors::kStart, options);
   if (view.trajectory != nullptr) {
     ArcYawPoint end = view.trajectory->MakePoint();
     view.trajectory->Evaluate(view.trajectory->duration_s(), &end);
-    DrawPose(&canvas, *view.kinematics, end.state, colors::kGoal, options);
+    DrawPose(canvas, *view.kinematics, end.state, colors::kGoal, options);
   }
-  DrawEndEffectorTarget(&canvas, view.X_WE_goal, colors::kTarget);
-  *image = std::move(canvas.image());
+  DrawEndEffectorTarget(canvas, view.X_WE_goal, colors::kTarget);
 }
 
 }  // namespace
 
-ViewTransform SceneMapView(const Scene& scene, const SceneRenderOptions& options) {
-  const Eigen::Vector2d margin = Eigen::Vector2d::Constant(options.margin_m);
-  return ViewTransform(Eigen::AlignedBox2d(scene.bounds_W_m.min().head<2>() - margin,
-                                           scene.bounds_W_m.max().head<2>() + margin),
-                       options.px_per_m);
-}
-
-Image RenderTrajectoryView(const TrajectoryView& view, const TrajectoryViewOptions& options) {
+Image RenderTrajectoryView(const TrajectoryView& view, const TrajectoryViewOptions& options,
+                           SceneRenderReport* report) {
   CheckView(view);
   SceneDrawing drawing;
   drawing.scene = view.scene;
   drawing.base_field = view.base_field;
   drawing.targets.push_back({view.X_WE_goal, colors::kTarget, "end-effector target"});
   drawing.title_lines = view.title_lines;
-  Image scene_image = RenderScene(drawing, options.scene);
-  const int map_height = SceneMapView(*view.scene, options.scene).height_px();
-
-  // The map without RenderScene's legend, the trajectory layer over it (anything drawn past
-  // the map's bottom edge is then covered by the legend, as in RenderScene).
-  Image layer = scene_image;
-  DrawLayer(view, options, &layer);
-
-  const int scale = options.scene.text_scale;
-  const int pad = 4 * scale;
-  const int width = scene_image.width();
-  LegendLayout measure(nullptr, pad, 0, width - 2 * pad, scale);
-  LayOutTrajectoryLegend(view, options, &measure);
-  const int strip = measure.height() + 2 * pad;
-  Image out(width, scene_image.height() + strip, colors::kPaper);
-  for (int y = 0; y < scene_image.height(); ++y) {
-    const Image& from = y < map_height ? layer : scene_image;
-    for (int x = 0; x < width; ++x) out.Set(x, y, from.At(x, y));
-  }
-  FillRect(&out, 0, scene_image.height(), width, scene_image.height() + 1, colors::kInk);
-  LegendLayout legend(&out, pad, scene_image.height() + pad + scale, width - 2 * pad, scale);
-  LayOutTrajectoryLegend(view, options, &legend);
-  return out;
+  SceneOverlay overlay;
+  overlay.draw = [&](WorldCanvas* canvas) { DrawLayer(view, options, canvas); };
+  overlay.legend = [&](LegendLayout* legend) { LayOutTrajectoryLegend(view, options, legend); };
+  return RenderScene(drawing, options.scene, report, overlay);
 }
 
 }  // namespace topay::viz

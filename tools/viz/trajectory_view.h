@@ -33,17 +33,14 @@ struct TrajectoryViewOptions {
   TrajectoryDrawingStyle trajectory;  ///< Path, footprints, arm silhouettes.
 };
 
-/// The map view of RenderScene for this scene and options: the scene's xy bounds plus
-/// margin_m at px_per_m, its top-left corner at pixel (0, 0).
-ViewTransform SceneMapView(const Scene& scene, const SceneRenderOptions& options);
-
 /// The scene exactly as RenderScene draws it (distance field, boxes, the end-effector target
-/// and its legend), then over the map: the trajectory (DrawTrajectory: base path, footprints
-/// and arm silhouettes at regular times), the start pose (blue) and the end pose (vermilion)
-/// with their arms, and the target again on top; under RenderScene's legend a second strip
+/// and its legend, metric axes), then over the map: the trajectory (DrawTrajectory: base path,
+/// footprints and arm silhouettes at regular times), the start pose (blue) and the end pose
+/// (vermilion) with their arms, and the target again on top; after RenderScene's legend a row
 /// with the keys of the trajectory layer (start, end, base path, footprint time, arm height).
 /// Throws std::invalid_argument for a missing scene or kinematics, a start state of the
 /// wrong size or not finite, or what RenderScene and DrawTrajectory reject.
-Image RenderTrajectoryView(const TrajectoryView& view, const TrajectoryViewOptions& options = {});
+Image RenderTrajectoryView(const TrajectoryView& view, const TrajectoryViewOptions& options = {},
+                           SceneRenderReport* report = nullptr);
 
 }  // namespace topay::viz

@@ -7,6 +7,7 @@
 
 #include "tools/viz/color.h"
 #include "tools/viz/image.h"
+#include "tools/viz/painter.h"
 #include "tools/viz/view_transform.h"
 
 namespace topay::viz {
@@ -14,19 +15,20 @@ namespace topay::viz {
 /// An image with a view of the floor plane: drawing primitives in world coordinates (metres,
 /// y up). Sizes of shapes are in metres; stroke widths and arrow heads in pixels, so outlines
 /// stay visible at any scale. This is the surface every top-down drawing (scenes, tasks,
-/// trajectories) paints on.
+/// trajectories) paints on. With `clip_to_view`, nothing is drawn outside the view's block.
 class WorldCanvas {
  public:
-  WorldCanvas(Image image, const ViewTransform& view) : image_(std::move(image)), view_(view) {}
+  WorldCanvas(Image image, const ViewTransform& view, bool clip_to_view = false);
 
   Image& image() { return image_; }
   const Image& image() const { return image_; }
   const ViewTransform& view() const { return view_; }
+  Painter& painter() { return painter_; }
 
   void FillPolygon(std::span<const Eigen::Vector2d> vertices_W_m, const Rgb& colour,
                    double alpha = 1.0);
   void HatchPolygon(std::span<const Eigen::Vector2d> vertices_W_m, const Rgb& colour,
-                    int spacing_px, int stripe_px, double alpha = 1.0);
+                    double spacing_px, double stripe_px, double alpha = 1.0);
   void DrawPolyline(std::span<const Eigen::Vector2d> points_W_m, bool closed, const Rgb& colour,
                     double width_px, double alpha = 1.0);
   void DrawLine(const Eigen::Vector2d& a_W_m, const Eigen::Vector2d& b_W_m, const Rgb& colour,
@@ -42,6 +44,7 @@ class WorldCanvas {
  private:
   Image image_;
   ViewTransform view_;
+  Painter painter_;
 };
 
 }  // namespace topay::viz

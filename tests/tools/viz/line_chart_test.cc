@@ -167,7 +167,7 @@ TEST(LineChartTest, BadChartsAreRejectedByName) {
   reversed.x_range = std::make_pair(2.0, 1.0);
   EXPECT_THROW(LayOutLineChart({0, 0, 600, 200}, reversed), std::invalid_argument);
   ChartStyle style;
-  style.text_scale = 0;
+  style.font_px = 0.0;
   EXPECT_THROW(LayOutLineChart({0, 0, 600, 200}, ConstantChart(), style), std::invalid_argument);
 }
 

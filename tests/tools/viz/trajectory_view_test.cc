@@ -80,17 +80,21 @@ TEST_F(TrajectoryViewTest, TheSceneIsDrawnAsTopayScene) {
   const Image scene = SceneOnly(options.scene);
   const ViewTransform map = SceneMapView(scene_, options.scene);
   ASSERT_EQ(image.width(), scene.width());
-  ASSERT_GT(image.height(), scene.height());  // the trajectory legend strip below
-  // RenderScene's legend rows are copied unchanged.
-  for (int y = map.height_px(); y < scene.height(); ++y) {
+  ASSERT_GT(image.height(), scene.height());  // the trajectory legend row below
+  // The axes and RenderScene's legend rows are the same (the last few rows of the scene's
+  // image are its bottom padding, where the trajectory keys begin).
+  const int map_top = static_cast<int>(map.offset_px().y());
+  const int map_bottom = map_top + map.height_px();
+  for (int y = map_bottom; y < scene.height() - 8; ++y) {
     for (int x = 0; x < scene.width(); ++x) {
       ASSERT_EQ(image.At(x, y), scene.At(x, y)) << x << ", " << y;
     }
   }
   // Away from the trajectory layer the map is RenderScene's, pixel for pixel.
   int compared = 0;
-  for (int y = 0; y < map.height_px(); y += 3) {
-    for (int x = 0; x < map.width_px(); x += 3) {
+  const int map_left = static_cast<int>(map.offset_px().x());
+  for (int y = map_top; y < map_bottom; y += 3) {
+    for (int x = map_left; x < map_left + map.width_px(); x += 3) {
       const Eigen::Vector2d p_W = map.ToWorld({x + 0.5, y + 0.5});
       if (p_W.y() < 0.0 || p_W.x() > 2.0) continue;  // path at y = -2, target at x = 3.5
       ASSERT_EQ(image.At(x, y), scene.At(x, y)) << x << ", " << y;

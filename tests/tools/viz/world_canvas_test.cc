@@ -41,7 +41,7 @@ TEST(WorldCanvasTest, ArrowHasAHeadAtItsTip) {
   WorldCanvas canvas = MakeCanvas();
   canvas.DrawArrow({2, 5}, {8, 5}, kRed, 2.0, 10.0);
   EXPECT_EQ(canvas.image().At(30, 49), kRed);  // Shaft.
-  EXPECT_EQ(canvas.image().At(72, 47), kRed);  // Head, 2.5 px off the axis.
+  EXPECT_EQ(canvas.image().At(72, 48), kRed);  // Head, 1.5 px off the axis.
   EXPECT_EQ(canvas.image().At(30, 46), kBg);   // Beside the thin shaft.
   EXPECT_EQ(canvas.image().At(85, 50), kBg);   // Past the tip.
 }
