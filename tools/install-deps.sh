@@ -10,7 +10,6 @@ packages=(
   liburdfdom-dev libyaml-cpp-dev nlohmann-json3-dev
   libcli11-dev libspdlog-dev libcairo2-dev libtbb-dev libceres-dev
   googletest libgtest-dev libbenchmark-dev
-  python3 python3-matplotlib
 )
 
 missing=()

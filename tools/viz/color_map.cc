@@ -58,4 +58,11 @@ Rgb GreyRamp(double t) {
 
 Rgb WarmRamp(double t) { return Interpolate(kWarmAnchors, t); }
 
+Rgb CategoryColour(int k) {
+  static constexpr Rgb kPalette[] = {{0, 114, 178}, {213, 94, 0},   {0, 158, 115}, {204, 121, 167},
+                                     {230, 159, 0}, {86, 180, 233}, {0, 0, 0}};
+  const int n = static_cast<int>(std::size(kPalette));
+  return kPalette[((k % n) + n) % n];
+}
+
 }  // namespace topay::viz

@@ -29,4 +29,8 @@ Rgb GreyRamp(double t);
 /// decreasing), distinct from both the viridis field and the grey obstacles.
 Rgb WarmRamp(double t);
 
+/// The distinct colour of category k (0-based; the palette of Okabe and Ito, 2008, without its
+/// yellow, repeating after 7): joints of a plot, methods of a benchmark.
+Rgb CategoryColour(int k);
+
 }  // namespace topay::viz

@@ -45,7 +45,7 @@ std::pair<double, double> CheckedRange(const std::pair<double, double>& range,
   return range;
 }
 
-std::pair<double, double> XRange(const LineChart& chart) {
+std::pair<double, double> XRange(const LineChart& chart, const ChartStyle& style) {
   if (chart.x_range) return CheckedRange(*chart.x_range, "x", chart);
   Extent extent;
   for (const ChartSeries& s : chart.series) {
@@ -54,7 +54,11 @@ std::pair<double, double> XRange(const LineChart& chart) {
     }
   }
   if (extent.empty()) CheckedRange({kInf, kInf}, "x", chart);
-  return CheckedRange(PaddedRange(extent.lo, extent.hi, 0.0), "x", chart);
+  // Dots are not cut by the frame: scatter plots get the y padding on x too.
+  bool markers = false;
+  for (const ChartSeries& s : chart.series) markers = markers || s.marker_radius_px > 0.0;
+  return CheckedRange(PaddedRange(extent.lo, extent.hi, markers ? style.y_padding : 0.0), "x",
+                      chart);
 }
 
 std::pair<double, double> YRange(const LineChart& chart, const ChartStyle& style) {
@@ -192,7 +196,7 @@ void DrawSeries(Painter* painter, const ChartSeries& series, const ChartLayout& 
   if (series.marker_radius_px > 0.0) {
     for (std::size_t i = 0; i < series.x.size(); ++i) {
       const Eigen::Vector2d p = l.ToPixel(series.x[i], series.y[i]);
-      if (p.allFinite()) painter->FillCircle(p, series.marker_radius_px, series.colour, 0.85);
+      if (p.allFinite()) painter->FillCircle(p, series.marker_radius_px, series.colour);
     }
     return;
   }
@@ -222,7 +226,10 @@ void DrawHeader(Painter* painter, const PixelRect& area, const LineChart& chart,
     if (it->marker_radius_px > 0.0) {
       painter->FillCircle({left + 0.5 * key, mid}, it->marker_radius_px, it->colour);
     } else {
-      painter->DrawLine({left, mid}, {left + key, mid}, it->colour, it->width_px + 1.0);
+      // Round caps reach half the width past the ends: keep them inside the key.
+      const double cap = 0.5 * (it->width_px + 1.0);
+      painter->DrawLine({left + cap, mid}, {left + key - cap, mid}, it->colour,
+                        it->width_px + 1.0);
     }
     painter->Text(left + key + 0.3 * f, y, it->label, colors::kInk, f);
     right = left - 1.2 * f;
@@ -244,7 +251,7 @@ ChartLayout LayOutLineChart(const PixelRect& area, const LineChart& chart,
                                 std::to_string(style.font_px) + " is outside [4, 64]");
   }
   ChartLayout l;
-  std::tie(l.x_min, l.x_max) = XRange(chart);
+  std::tie(l.x_min, l.x_max) = XRange(chart, style);
   std::tie(l.y_min, l.y_max) = YRange(chart, style);
   l.x_step = NiceTickStep(l.x_max - l.x_min, std::max(style.target_x_ticks, 1));
   l.y_step = chart.y_step && *chart.y_step > 0.0

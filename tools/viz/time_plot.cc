@@ -5,6 +5,7 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "tools/viz/color_map.h"
 #include "tools/viz/painter.h"
 
 namespace topay::viz {
@@ -154,12 +155,7 @@ TimePlotData SampleTimePlotData(const ArcYawTrajectory& trajectory, double perio
   return data;
 }
 
-Rgb JointColour(int joint) {
-  static constexpr Rgb kPalette[] = {{0, 114, 178}, {213, 94, 0},   {0, 158, 115}, {204, 121, 167},
-                                     {230, 159, 0}, {86, 180, 233}, {0, 0, 0}};
-  const int n = static_cast<int>(std::size(kPalette));
-  return kPalette[((joint % n) + n) % n];
-}
+Rgb JointColour(int joint) { return CategoryColour(joint); }
 
 std::vector<LineChart> TimePlotCharts(const TimePlotData& data, const TimePlotLimits& limits) {
   CheckData(data, limits);
