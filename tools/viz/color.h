@@ -47,7 +47,6 @@ inline constexpr Rgb kInk{30, 30, 30};            ///< Text and outlines.
 inline constexpr Rgb kStart{0, 90, 181};          ///< Start pose (blue).
 inline constexpr Rgb kGoal{213, 94, 0};           ///< Goal pose (vermilion).
 inline constexpr Rgb kTarget{204, 0, 102};        ///< End-effector target (magenta).
-inline constexpr Rgb kObstacleCore{20, 8, 28};    ///< Inside obstacles of the distance field.
 }  // namespace colors
 
 }  // namespace topay::viz
