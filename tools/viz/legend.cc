@@ -74,10 +74,12 @@ LegendBox LegendLayout::ColourBar(const std::string& caption,
                                   const std::function<Rgb(double)>& colour_of,
                                   const std::string& low, const std::string& high) {
   const double space = 0.5 * font_;
-  const double bar = std::round(10.0 * font_);
   const double caption_w = TextWidth(caption, font_);
   const double low_w = TextWidth(low, font_);
   const double high_w = TextWidth(high, font_);
+  // 10 em long, shorter (down to 3 em) where the strip is narrow, so the labels fit.
+  const double room = width_ - (caption_w + low_w + high_w + 4 * space);
+  const double bar = std::round(std::clamp(room, 3.0 * font_, 10.0 * font_));
   const double left = Place(caption_w + low_w + bar + high_w + 4 * space);
   double x = left + caption_w + space;
   LegendBox box;

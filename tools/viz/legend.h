@@ -30,7 +30,7 @@ class LegendLayout {
   /// A short line in `colour`, then a label (a series of a chart).
   void LineKey(const Rgb& colour, double width_px, const std::string& label);
   /// "caption low [colour bar] high": the bar samples colour_of(t) for t in [0, 1], t = 0 at
-  /// its left end. Returns the bar's box.
+  /// its left end; 10 font heights long, shorter (to 3) in a narrow strip. Returns its box.
   LegendBox ColourBar(const std::string& caption, const std::function<Rgb(double)>& colour_of,
                       const std::string& low, const std::string& high);
   /// A bar of a round length in metres (1, 2 or 5 x 10^k) close to `target_px` at the view's
