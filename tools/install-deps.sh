@@ -8,9 +8,8 @@ packages=(
   libeigen3-dev
   liblcm-dev liblcm-bin liblcm-java libglib2.0-dev default-jdk-headless
   liburdfdom-dev libyaml-cpp-dev nlohmann-json3-dev
-  libcli11-dev libspdlog-dev libpng-dev libtbb-dev libceres-dev
+  libcli11-dev libspdlog-dev libcairo2-dev libtbb-dev libceres-dev
   googletest libgtest-dev libbenchmark-dev
-  python3 python3-matplotlib
 )
 
 missing=()

@@ -16,7 +16,7 @@ namespace topay::bench {
 std::vector<plan::TrajectorySample> SampleForFile(const SampledTrajectory& trajectory,
                                                   double period_s);
 
-/// The trajectory file (sim/plan/trajectory_json.h) of a plan with the given metadata: for
+/// The trajectory file (tools/topay_plan/trajectory_json.h) of a plan with the given metadata: for
 /// the arc length-yaw trajectory its pieces and plan::SampleTrajectory's samples, as
 /// topay-plan writes them; for the flatness baseline no pieces (trajectory null) and
 /// SampleForFile's samples; for a failure, metadata only.

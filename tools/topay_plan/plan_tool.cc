@@ -9,14 +9,14 @@
 #include "core/planner/whole_body_planner.h"
 #include "core/planning/planner_fields.h"
 #include "core/robot/kinematics.h"
+#include "tools/common/usage_error.h"
 #include "tools/topay_plan/candidate_table.h"
 #include "tools/topay_plan/plan_query.h"
 #include "tools/topay_plan/plan_summary_fill.h"
 #include "tools/topay_plan/trajectory_json.h"
-#include "tools/common/usage_error.h"
-#include "sim/viz/png_io.h"
-#include "sim/viz/time_plot.h"
-#include "sim/viz/trajectory_view.h"
+#include "tools/viz/png_io.h"
+#include "tools/viz/time_plot.h"
+#include "tools/viz/trajectory_view.h"
 
 namespace topay::plan {
 namespace {

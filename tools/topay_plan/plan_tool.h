@@ -132,7 +132,7 @@ struct PlanToolSummary {
 
 /// Loads the robot, gets the scene and the task, builds the distance fields
 /// (PlannerFieldOptions, timed), plans one query (WholeBodyPlanner) and writes the requested
-/// outputs: the trajectory JSON (sim/plan/trajectory_json.h; on a failure, metadata only),
+/// outputs: the trajectory JSON (tools/topay_plan/trajectory_json.h; on a failure, metadata only),
 /// the top-down PNG (always, with the trajectory if there is one) and the time plots (only
 /// with a trajectory). A planning failure is not an exception: see summary.ExitCode().
 /// Throws UsageError for bad options (naming the option as the CLI spells it),

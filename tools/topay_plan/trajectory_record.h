@@ -17,7 +17,7 @@
 namespace topay::plan {
 
 /// A planned trajectory as a record: what it came from (metadata), its pieces and its
-/// samples. Files: sim/plan/trajectory_json.h.
+/// samples. Files: tools/topay_plan/trajectory_json.h.
 
 /// The validator's figures for the chosen trajectory (see ValidationReport).
 struct TrajectoryValidationFigures {

@@ -26,6 +26,7 @@
 #include "sim/scenes/scene_json.h"
 #include "sim/scenes/task_json.h"
 #include "tests/common/tool_test.h"
+#include "tools/viz/png_io.h"
 
 namespace topay {
 namespace {
@@ -238,33 +239,31 @@ TEST_F(TopayBenchTest, OneThreadGivesTheSameTasksJsonlTwice) {
   EXPECT_EQ(a, b);
 }
 
-// ---- Plot script ------------------------------------------------------------------------------
+// ---- Plots (topay-bench-plot) ----------------------------------------------------------------
 
-// Debian's interpreter, where python3-matplotlib installs (a `python3` earlier on PATH, e.g.
-// pyenv's, does not see it); `python3` where there is none.
-std::string Python() { return fs::exists("/usr/bin/python3") ? "/usr/bin/python3" : "python3"; }
-
-TEST_F(TopayBenchTest, PlotScriptWritesPngs) {
-  if (ExitCodeOf(Python() + " -c 'import matplotlib' > /dev/null 2>&1") != 0) {
-    GTEST_SKIP() << "python3-matplotlib is not importable by " << Python()
-                 << " (tools/install-deps.sh installs it)";
-  }
+TEST_F(TopayBenchTest, BenchPlotWritesDecodablePngsOfTheRuns) {
   RunCompare("cuboids", 2, "run_cuboids");
   RunCompare("tables", 2, "run_tables");
-  const std::string plot = Python() + " '" TOPAY_SOURCE_DIR "/tools/plot_bench.py' --out '" +
+  const std::string plot = "'" TOPAY_BINARY_DIR "/bin/topay-bench-plot' --out '" +
                            Path("plots") + "' '" + Path("run_cuboids") + "' '" +
                            Path("run_tables") + "' > '" + Path("plot.txt") + "' 2>&1";
   ASSERT_EQ(ExitCodeOf(plot), 0) << ReadText(Path("plot.txt"));
   for (const char* name : {"success_rate.png", "planning_time.png", "duration_vs_distance.png"}) {
-    const std::string png = ReadText(dir_ / "plots" / name);
-    ASSERT_GE(png.size(), 8u) << name;
-    EXPECT_EQ(png.substr(0, 8), std::string("\x89PNG\r\n\x1a\n", 8)) << name;
+    const viz::Image png = viz::ReadPng((dir_ / "plots" / name).string());
+    EXPECT_GE(png.width(), 400) << name;
+    EXPECT_GE(png.height(), 400) << name;
   }
-  // A malformed summary is named in a clear error, with a non-zero exit code.
+  // Two cells (cuboids small, tables small): one planning-time panel each, 420 px wide.
+  EXPECT_EQ(viz::ReadPng((dir_ / "plots" / "planning_time.png").string()).width(), 2 * 420);
+  // A malformed summary is named in a clear error, with exit code 1.
   std::ofstream(Path("run_tables") + "/summary.json") << "[{\"method\": ";
-  EXPECT_NE(ExitCodeOf(plot), 0);
+  EXPECT_EQ(ExitCodeOf(plot), 1);
   const std::string message = ReadText(Path("plot.txt"));
   EXPECT_NE(message.find("summary.json"), std::string::npos) << message;
+  // No run folder is a usage error.
+  EXPECT_EQ(ExitCodeOf("'" TOPAY_BINARY_DIR "/bin/topay-bench-plot' --out '" + Path("p2") +
+                       "' > /dev/null 2>&1"),
+            2);
 }
 
 // ---- Exit codes -------------------------------------------------------------------------------

@@ -16,8 +16,9 @@
 #include "tools/common/usage_error.h"
 #include "sim/scenes/scene_json.h"
 #include "sim/scenes/task_json.h"
-#include "sim/viz/png_io.h"
-#include "sim/viz/time_plot.h"
+#include "tools/viz/png_io.h"
+#include "tools/viz/scene_renderer.h"
+#include "tools/viz/time_plot.h"
 #include "tests/common/make_box.h"
 #include "tests/common/temp_path.h"
 
@@ -96,9 +97,10 @@ TEST_F(PlanToolTest, PlansAndWritesTheTrajectoryAndBothPlots) {
   EXPECT_EQ(summary.ExitCode(), kExitSuccess);
   const ArcYawTrajectory& trajectory = *summary.plan.trajectory;
 
-  // The top-down PNG: the 10 x 10 m room plus 0.25 m margins at 40 px/m, legends below.
+  // The top-down PNG: the 10 x 10 m room plus 0.25 m margins at 40 px/m beside the y axis,
+  // legends below.
   const viz::Image path = viz::ReadPng(o.path_png_out);
-  EXPECT_EQ(path.width(), 420);
+  EXPECT_EQ(path.width(), viz::SceneImageWidth(420));
   EXPECT_GT(path.height(), 420);
   EXPECT_EQ(summary.path_png_width_px, path.width());
   EXPECT_EQ(summary.path_png_height_px, path.height());
@@ -183,7 +185,7 @@ TEST_F(PlanToolTest, AFailedPlanIsAResultWithItsReason) {
   EXPECT_EQ(file.metadata.base_limits_source, "robot");
   EXPECT_FALSE(file.pieces.has_value());
   EXPECT_TRUE(file.samples.empty());
-  EXPECT_EQ(viz::ReadPng(o.path_png_out).width(), 420);
+  EXPECT_EQ(viz::ReadPng(o.path_png_out).width(), viz::SceneImageWidth(420));
   EXPECT_FALSE(fs::exists(o.time_png_out));
   EXPECT_NE(report.find("not written: time plots"), std::string::npos) << report;
 }

@@ -8,7 +8,8 @@
 
 #include "tools/topay_plan/plan_tool.h"
 #include "tools/topay_plan/trajectory_json.h"
-#include "sim/viz/png_io.h"
+#include "tools/viz/png_io.h"
+#include "tools/viz/scene_renderer.h"
 #include "tests/common/tool_test.h"
 
 namespace topay {
@@ -43,7 +44,7 @@ TEST_F(TopayPlanTest, PlansABenchmarkTaskAndWritesItsOutputs) {
   EXPECT_EQ(file.metadata.scene_kind, "tables");
   EXPECT_EQ(file.metadata.task_range, "small");
   EXPECT_EQ(file.metadata.task_seed, 7u);
-  EXPECT_EQ(viz::ReadPng(Path("path.png")).width(), 205);
+  EXPECT_EQ(viz::ReadPng(Path("path.png")).width(), viz::SceneImageWidth(205));
   if (run.exit_code == plan::kExitSuccess) {
     EXPECT_EQ(file.metadata.status, "success");
     EXPECT_NE(run.out.find("SUCCESS"), std::string::npos) << run.out;

@@ -9,7 +9,8 @@
 
 #include "sim/scenes/scene_json.h"
 #include "sim/scenes/task_json.h"
-#include "sim/viz/png_io.h"
+#include "tools/viz/png_io.h"
+#include "tools/viz/scene_renderer.h"
 #include "tests/common/tool_test.h"
 
 namespace topay {
@@ -32,8 +33,9 @@ TEST_F(TopaySceneTest, GeneratesSceneTaskAndPng) {
   EXPECT_NE(run.out.find("base distance"), std::string::npos) << run.out;
 
   const viz::Image png = viz::ReadPng(Path("scene.png"));
-  // The map covers the 20 x 20 m room plus 0.25 m margins at 10 px/m; the legend lies below.
-  EXPECT_EQ(png.width(), 205);
+  // The map covers the 20 x 20 m room plus 0.25 m margins at 10 px/m, right of the y axis;
+  // the legend lies below.
+  EXPECT_EQ(png.width(), viz::SceneImageWidth(205));
   EXPECT_GT(png.height(), 205);
 
   const Scene scene = ReadSceneJson(Path("scene.json"));
@@ -96,11 +98,11 @@ TEST_F(TopaySceneTest, MalformedTaskJsonIsNamed) {
 
 TEST_F(TopaySceneTest, UnknownSceneKindAndRangeAreNamed) {
   RunResult run = Run("--scene forest");
-  EXPECT_NE(run.exit_code, 0);
+  EXPECT_EQ(run.exit_code, 2);  // usage errors exit 2, as in every tool
   EXPECT_NE(run.err.find("--scene"), std::string::npos) << run.err;
   EXPECT_NE(run.err.find("forest"), std::string::npos) << run.err;
   run = Run("--scene tables --range huge");
-  EXPECT_NE(run.exit_code, 0);
+  EXPECT_EQ(run.exit_code, 2);
   EXPECT_NE(run.err.find("huge"), std::string::npos) << run.err;
 }
 
@@ -117,7 +119,7 @@ TEST_F(TopaySceneTest, MissingRobotFilesAreNamed) {
 
 TEST_F(TopaySceneTest, BadFlagValuesAndUnwritableOutputsAreReported) {
   RunResult run = Run("--scene cuboids --resolution -1");
-  EXPECT_NE(run.exit_code, 0);
+  EXPECT_EQ(run.exit_code, 2);
   EXPECT_NE(run.err.find("--resolution"), std::string::npos) << run.err;
   run = Run("--scene cuboids --resolution abc");
   EXPECT_EQ(run.exit_code, 2);
@@ -125,8 +127,16 @@ TEST_F(TopaySceneTest, BadFlagValuesAndUnwritableOutputsAreReported) {
   run = Run("--scene cuboids --scene-file x.json");
   EXPECT_EQ(run.exit_code, 2);
   run = Run("");
-  EXPECT_EQ(run.exit_code, 1);
+  EXPECT_EQ(run.exit_code, 2);
   EXPECT_NE(run.err.find("--scene"), std::string::npos) << run.err;
+  run = Run("--scene cuboids --seed -1");  // would wrap to 2^64 - 1
+  EXPECT_EQ(run.exit_code, 2);
+  EXPECT_NE(run.err.find("--seed"), std::string::npos) << run.err;
+  run = Run("--help");
+  EXPECT_EQ(run.exit_code, 0);
+  EXPECT_NE(run.out.find("Exit codes: 0 success, 1 file or configuration error, 2 usage error"),
+            std::string::npos)
+      << run.out;
   const std::string png = Path("no_such_folder/out.png");
   run = Run("--scene cuboids --png '" + png + "'");
   EXPECT_EQ(run.exit_code, 1);
