@@ -9,8 +9,8 @@
 
 namespace topay {
 
-// Seeded generators of the paper's benchmark rooms (Sec. VI-A; facts sheet "Benchmark
-// protocol"). Same seed and options, same scene (every number on the 1e-6 grid, so the same
+// Seeded generators of the paper's benchmark rooms (Sec. IV-C, with the authors'
+// code's figures). Same seed and options, same scene (every number on the 1e-6 grid, so the same
 // JSON bytes). Boxes come in this order: 4 walls, then the objects in the order listed below.
 // All obstacles have a random yaw, uniform in [-pi, pi) (the paper's figure shows rotated
 // obstacles; the protocol does not say). No obstacle enters `keep_out`, and every obstacle's

@@ -5,7 +5,7 @@
 
 namespace topay {
 
-/// The benchmark's start-goal base distance ranges (paper Sec. VI-B): small 3-8 m, medium
+/// The benchmark's start-goal base distance ranges (paper Sec. IV-C): small 3-8 m, medium
 /// 8-15 m, large 15-30 m. The distance is the straight-line distance between the start and
 /// goal base positions (not a path length through the room). In the 20 x 20 m room with the
 /// 2 m wall margin the largest possible is 16 sqrt(2) = 22.6 m, so "large" is in effect

@@ -3,7 +3,7 @@
 namespace topay {
 
 // Options of the benchmark room generators. Defaults are the paper's benchmark protocol
-// (topay-facts.md, "Benchmark protocol"; paper Sec. VI-A).
+// (paper Sec. IV-C, with the authors' code's figures).
 
 /// The walled room, centred at W's origin, floor at z = 0.
 struct RoomOptions {

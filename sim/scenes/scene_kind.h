@@ -5,7 +5,7 @@
 
 namespace topay {
 
-/// The paper's two benchmark rooms (Sec. VI-A): Cuboids and Tables.
+/// The paper's two benchmark rooms (Sec. IV-C): Cuboids and Tables.
 enum class SceneKind { kCuboids, kTables };
 
 /// "cuboids" or "tables" (the Scene::kind strings).

@@ -43,7 +43,7 @@ struct BenchmarkCase {
 /// |p_PJ| on the path from the root to its link, plus |p_LS| + r (triangle inequality).
 double ArmReachBound(const RobotModel& model);
 
-/// The benchmark protocol (facts sheet) for one task: from `seed`, draw the start and goal
+/// The paper's benchmark protocol (Sec. IV-C, with the authors' code's figures) for one task: from `seed`, draw the start and goal
 /// base poses (uniform, see TaskGeneratorOptions) until their straight-line distance is in
 /// `range`; then generate a fresh `kind` scene with seed DeriveSeed(seed, 1) and keep-out
 /// cylinders around both base positions; then draw the start and goal arm configurations

@@ -21,7 +21,7 @@
 namespace topay::bench {
 namespace {
 
-constexpr double kSamplePeriodS = 0.01;  // the 10 ms samples
+constexpr double kSamplePeriodS = 0.01;  // the validator's 10 ms samples
 
 BenchRecord TaskRecord(const BenchTaskContext& c, int index, const PlanningTask& task,
                        std::uint64_t scene_seed) {

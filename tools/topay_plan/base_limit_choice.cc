@@ -53,7 +53,7 @@ BaseLimitChoice BaseLimitChoiceInForce(const std::optional<BaseLimitChoice>& fla
 std::string_view BaseLimitChoiceDescription(BaseLimitChoice choice) {
   switch (choice) {
     case BaseLimitChoice::kBenchmark:
-      return "the paper's simulation benchmark limits (facts sheet; --base-limits robot for "
+      return "the paper's simulation benchmark limits (the authors' simulation benchmark; --base-limits robot for "
              "the robot config's)";
     case BaseLimitChoice::kRobot:
       return "the robot config's limits (--base-limits benchmark for the paper's simulation "

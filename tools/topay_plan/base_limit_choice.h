@@ -9,7 +9,7 @@ namespace topay::plan {
 
 /// Which base limits a plan uses.
 enum class BaseLimitChoice {
-  /// The authors' simulation benchmark (facts sheet): v_max 1.0 m/s, a_max 0.8 m/s^2,
+  /// The authors' simulation benchmark (their code): v_max 1.0 m/s, a_max 0.8 m/s^2,
   /// omega_max 1.25 rad/s, beta_max 1.0 rad/s^2, so durations compare with the paper's.
   kBenchmark,
   /// The robot config's own (config/robot/topay_mm.yaml: the real robot's omega_max 0.9).
@@ -39,7 +39,7 @@ BaseLimitChoice BaseLimitChoiceInForce(const std::optional<BaseLimitChoice>& fla
                                        const std::optional<BaseLimits>& configured);
 
 /// One line saying which limits these are, e.g. "the paper's simulation benchmark limits
-/// (facts sheet)", "the robot config's limits" or "the planner config's limits".
+/// (the authors' simulation benchmark)", "the robot config's limits" or "the planner config's limits".
 std::string_view BaseLimitChoiceDescription(BaseLimitChoice choice);
 
 }  // namespace topay::plan

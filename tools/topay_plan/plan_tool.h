@@ -59,7 +59,7 @@ struct PlanToolOptions {
   /// planner.base_limits if it sets them, else benchmark; BaseLimitChoiceInForce).
   std::string base_limits;
 
-  /// Drawing: top-down scale, footprint interval (s); JSON sample period (s, the 10 ms).
+  /// Drawing: top-down scale, footprint interval (s); JSON sample period (s, the validator's 10 ms).
   double px_per_m = 40.0;
   double footprint_interval_s = 1.0;
   double sample_period_s = 0.01;

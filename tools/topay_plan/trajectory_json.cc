@@ -111,7 +111,7 @@ Json TrajectoryJson(const TrajectoryPieces& p) {
   return json;
 }
 
-// Sample rows use the short keys the benchmark issue names ({"t", "x", "y", "yaw", "q"}, plus
+// Sample rows use short keys ({"t", "x", "y", "yaw", "q"}, plus
 // s, v, omega, a, beta); their units are stated once, in samples.units.
 Json SamplesJson(const TrajectoryFile& file) {
   Json rows = Json::array();

@@ -17,9 +17,9 @@ namespace topay::plan {
 //                   "panels_per_piece": 12, "duration_s": T,
 //                   "pieces": [{"duration_s": T_j, "coefficients": [[c0..c5] per dimension]}]}
 //                  or null when the plan failed,
-//    "samples": {"period_s": 0.01, "count": n,
-//                "rows": [{"t_s", "x_m", "y_m", "yaw_rad", "s_m", "v_mps", "omega_radps",
-//                          "a_mps2", "beta_radps2", "q_rad": [..]}, ..]}}
+//    "samples": {"period_s": 0.01, "count": n, "units": {key: unit, ..},
+//                "rows": [{"t", "x", "y", "yaw", "s", "v", "omega", "a", "beta",
+//                          "q": [..]}, ..]}}   (docs/formats.md)
 // Piece j of dimension d is value(t) = sum_k c_k t^k for the local time t in [0, T_j]
 // (paper eqs. (3)-(5), quintic, MINCO s = 3); dimensions in the order [s, yaw, q1..qN]. x and
 // y follow from s and yaw by Simpson's rule with panels_per_piece panels per piece (eqs.
