@@ -1,12 +1,9 @@
 #include "core/io/planner_config.h"
 
-#include <cerrno>
-#include <cstring>
 #include <exception>
-#include <fstream>
-#include <sstream>
 
 #include "core/common/error.h"
+#include "core/io/bounded_text_file.h"
 #include "core/io/optimizer_config.h"
 #include "core/io/yaml_section.h"
 
@@ -133,14 +130,6 @@ void ReadValidator(YamlSection section, TrajectoryValidatorOptions* o) {
   section.Finish();
 }
 
-std::string ReadText(const std::string& path) {
-  std::ifstream file(path, std::ios::binary);
-  if (!file) throw ConfigError(path, "", std::string("cannot open file: ") + std::strerror(errno));
-  std::ostringstream text;
-  text << file.rdbuf();
-  return text.str();
-}
-
 }  // namespace
 
 WholeBodyPlannerOptions ParsePlannerOptions(const std::string& yaml_text,
@@ -169,7 +158,7 @@ WholeBodyPlannerOptions ParsePlannerOptions(const std::string& yaml_text,
 }
 
 WholeBodyPlannerOptions LoadPlannerOptions(const std::string& path) {
-  return ParsePlannerOptions(ReadText(path), path);
+  return ParsePlannerOptions(ReadBoundedTextFile(path, kMaxConfigFileBytes, "planner YAML"), path);
 }
 
 }  // namespace topay
