@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <limits>
 #include <map>
 #include <set>
@@ -202,11 +203,61 @@ void CheckIsTree(const urdf::ModelInterface& model, const std::string& source) {
   }
 }
 
+// The deepest nesting of XML elements in `text` (comments, CDATA, <?...?> and <!...> skipped;
+// quoted attribute values may hold '>'). A rough scan: malformed XML is urdfdom's to reject.
+int MaxElementDepth(const std::string& text) {
+  int depth = 0;
+  int deepest = 0;
+  std::size_t i = 0;
+  const auto skip_past = [&text](std::size_t from, const char* end) {
+    const std::size_t at = text.find(end, from);
+    return at == std::string::npos ? text.size() : at + std::strlen(end);
+  };
+  while ((i = text.find('<', i)) != std::string::npos) {
+    if (text.compare(i, 4, "<!--") == 0) {
+      i = skip_past(i + 4, "-->");
+      continue;
+    }
+    if (text.compare(i, 9, "<![CDATA[") == 0) {
+      i = skip_past(i + 9, "]]>");
+      continue;
+    }
+    std::size_t j = i + 1;
+    char quote = 0;
+    for (; j < text.size(); ++j) {
+      const char c = text[j];
+      if (quote != 0) {
+        if (c == quote) quote = 0;
+      } else if (c == '"' || c == '\'') {
+        quote = c;
+      } else if (c == '>') {
+        break;
+      }
+    }
+    if (j >= text.size()) break;
+    const char kind = i + 1 < text.size() ? text[i + 1] : ' ';
+    if (kind == '/') {
+      depth = std::max(depth - 1, 0);
+    } else if (kind != '?' && kind != '!' && text[j - 1] != '/') {
+      deepest = std::max(deepest, ++depth);
+    }
+    i = j + 1;
+  }
+  return deepest;
+}
+
 }  // namespace
 
 UrdfTree ParseUrdfTree(const std::string& urdf_text, const std::string& source) {
   // urdfdom returns null for malformed XML, a missing <robot>, a bad number, a joint naming an
   // unknown link, several roots, ...; its reasons come through console_bridge.
+  // urdfdom's XML parser recurses per nesting level: a deep enough document overflows the
+  // stack (a URDF nests about 5 levels).
+  if (MaxElementDepth(urdf_text) > kMaxUrdfElementDepth) {
+    throw ConfigError(source, "robot",
+                      "XML elements nest deeper than " + std::to_string(kMaxUrdfElementDepth) +
+                          " levels: not a URDF");
+  }
   urdf::ModelInterfaceSharedPtr urdf_model;
   std::string reasons;
   {

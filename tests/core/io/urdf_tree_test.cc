@@ -113,5 +113,21 @@ TEST(UrdfTreeTest, SeveralRootsMissingLinksAndDuplicatesAreErrors) {
                  "robot", {"'j1'", "unique"});
 }
 
+// urdfdom's XML parser recurses per element: a deep document (7 MB, under the file size
+// limit) would overflow the stack; it is rejected before parsing.
+TEST(UrdfTreeTest, DeeplyNestedXmlIsAnError) {
+  constexpr int kDepth = 1000000;
+  std::string text = "<robot name=\"r\">";
+  for (int i = 0; i < kDepth; ++i) text += "<a>";
+  for (int i = 0; i < kDepth; ++i) text += "</a>";
+  ExpectNotATree(text + "</robot>", "robot", {"nest deeper than 100"});
+  // Comments, self-closing elements and quoted '>' do not count as nesting.
+  const UrdfTree tree = ParseUrdfTree(
+      Robot("<!-- <a><a><a> -->" + Links({"a", "b"}) + "<link name=\"c>\"/>" +
+            Joint("j1", "a", "b") + Joint("j2", "a", "c>")),
+      "ok.urdf");
+  EXPECT_EQ(tree.links.size(), 3u);
+}
+
 }  // namespace
 }  // namespace topay
