@@ -1,14 +1,27 @@
 #include "core/io/planner_config.h"
 
-#include <cerrno>
-#include <cstring>
-#include <exception>
-#include <fstream>
-#include <sstream>
+#include <algorithm>
+#include <cctype>
+#include <functional>
+#include <stdexcept>
+#include <utility>
+#include <vector>
 
 #include "core/common/error.h"
+#include "core/io/bounded_text_file.h"
 #include "core/io/optimizer_config.h"
 #include "core/io/yaml_section.h"
+#include "core/optimization/lbfgs_solve.h"
+#include "core/optimization/sample_penalties.h"
+#include "core/optimization/warm_start.h"
+#include "core/planning/arm_rrt_star.h"
+#include "core/planning/discrete_se2.h"
+#include "core/planning/goal_candidates.h"
+#include "core/planning/topological_path_search.h"
+#include "core/planning/whole_body_validity.h"
+#include "core/robot/whole_body_ik.h"
+#include "core/validate/limit_ratios.h"
+#include "core/validate/trajectory_validator.h"
 
 namespace topay {
 namespace {
@@ -133,12 +146,102 @@ void ReadValidator(YamlSection section, TrajectoryValidatorOptions* o) {
   section.Finish();
 }
 
-std::string ReadText(const std::string& path) {
-  std::ifstream file(path, std::ios::binary);
-  if (!file) throw ConfigError(path, "", std::string("cannot open file: ") + std::strerror(errno));
-  std::ostringstream text;
-  text << file.rdbuf();
-  return text.str();
+// The dotted paths of the values the file gives under `node` (maps descended), e.g.
+// "prm.max_time_s" under front_end.topology.
+void CollectFields(const YAML::Node& node, const std::string& prefix,
+                   std::vector<std::string>* fields) {
+  if (!node.IsMap()) {
+    if (!prefix.empty()) fields->push_back(prefix);
+    return;
+  }
+  for (const auto& entry : node) {
+    const std::string key = entry.first.as<std::string>("?");
+    CollectFields(entry.second, prefix.empty() ? key : prefix + "." + key, fields);
+  }
+}
+
+bool IsWordChar(char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; }
+
+// Where `key` occurs in `message` as a name: not followed by a name character, and preceded by
+// none or by '_' / '.' (the options' own spellings: "alm_rho_initial", "options.goal_bias").
+std::size_t NamePosition(const std::string& message, const std::string& key) {
+  for (std::size_t at = message.find(key); at != std::string::npos;
+       at = message.find(key, at + 1)) {
+    const std::size_t end = at + key.size();
+    const bool starts = at == 0 || !std::isalnum(static_cast<unsigned char>(message[at - 1]));
+    const bool ends = end == message.size() || !IsWordChar(message[end]);
+    if (starts && ends) return at;
+  }
+  return std::string::npos;
+}
+
+// The YAML field a failed option check is about: of the fields the file gives under `section`,
+// the one whose key the check's message names first (only a field the file sets can be out of
+// range: the defaults pass). The section itself if the message names none of them.
+std::string FieldNamedBy(const YAML::Node& root, const std::string& section,
+                         const std::string& message) {
+  YAML::Node node = root;
+  for (std::size_t begin = 0; begin <= section.size();) {
+    const std::size_t dot = std::min(section.find('.', begin), section.size());
+    if (!node.IsMap()) return section;
+    node = node[section.substr(begin, dot - begin)];
+    begin = dot + 1;
+  }
+  std::vector<std::string> fields;
+  CollectFields(node, "", &fields);
+  std::string best;
+  std::size_t best_at = std::string::npos;
+  for (const std::string& field : fields) {
+    const std::size_t dot = field.rfind('.');
+    const std::string key = dot == std::string::npos ? field : field.substr(dot + 1);
+    const std::size_t at = NamePosition(message, key);
+    if (at < best_at || (at == best_at && at != std::string::npos && field.size() > best.size())) {
+      best = field;
+      best_at = at;
+    }
+  }
+  return best_at == std::string::npos ? section : section + "." + best;
+}
+
+// The option checks of every struct the file configures, finest section first, so that the
+// ConfigError names the field: the values are checked where they are read, not when the
+// planner is built (a bad value is a config error, exit 1, not a failed plan).
+void CheckOptions(const YAML::Node& root, const std::string& source,
+                  const WholeBodyPlannerOptions& o) {
+  const auto throwing = [](auto check) {
+    return [check]() -> std::string {
+      try {
+        check();
+      } catch (const std::invalid_argument& e) {
+        return e.what();
+      }
+      return {};
+    };
+  };
+  const FrontEndOptions& f = o.front_end;
+  const std::pair<const char*, std::function<std::string()>> checks[] = {
+      {"planner.base_limits", throwing([&] {
+         if (o.base_limits) CheckKinematicLimits(*o.base_limits, JointLimits{}, 0);
+       })},
+      {"planner", throwing([&] { CheckWholeBodyPlannerOptions(o); })},
+      {"front_end.goal", throwing([&] { CheckGoalCandidatesOptions(f.goal); })},
+      {"front_end.ik", throwing([&] { CheckWholeBodyIkOptions(f.ik); })},
+      {"front_end.topology", [&] { return CheckTopologicalPathSearchOptions(f.topology); }},
+      {"front_end.discretisation", throwing([&] { CheckDiscreteSE2Options(f.discretisation); })},
+      {"front_end.rrt", [&] { return CheckArmRrtStarOptions(f.rrt); }},
+      {"front_end.validity", throwing([&] { CheckWholeBodyValidityOptions(f.validity); })},
+      {"front_end", throwing([&] { CheckFrontEndOptions(f); })},
+      {"optimizer.lbfgs", throwing([&] { CheckLbfgsOptions(o.optimizer.lbfgs); })},
+      {"optimizer.warm_start", throwing([&] { CheckWarmStartOptions(o.optimizer.warm_start); })},
+      {"optimizer.objective.penalties",
+       throwing([&] { CheckSamplePenaltyOptions(o.optimizer.objective.penalties); })},
+      {"optimizer", throwing([&] { CheckTrajectoryOptimizerOptions(o.optimizer); })},
+      {"validator", throwing([&] { CheckTrajectoryValidatorOptions(o.validator); })},
+  };
+  for (const auto& [section, check] : checks) {
+    const std::string problem = check();
+    if (!problem.empty()) throw ConfigError(source, FieldNamedBy(root, section, problem), problem);
+  }
 }
 
 }  // namespace
@@ -158,18 +261,12 @@ WholeBodyPlannerOptions ParsePlannerOptions(const std::string& yaml_text,
   ReadOptimizerOptions(top.Section("optimizer"), &options.optimizer);
   ReadValidator(top.Section("validator"), &options.validator);
   top.Finish();
-  try {
-    CheckWholeBodyPlannerOptions(options);
-    CheckTrajectoryOptimizerOptions(options.optimizer);
-    CheckFrontEndOptions(options.front_end);
-  } catch (const std::invalid_argument& e) {
-    throw ConfigError(source, "", e.what());
-  }
+  CheckOptions(root, source, options);
   return options;
 }
 
 WholeBodyPlannerOptions LoadPlannerOptions(const std::string& path) {
-  return ParsePlannerOptions(ReadText(path), path);
+  return ParsePlannerOptions(ReadBoundedTextFile(path, kMaxConfigFileBytes, "planner YAML"), path);
 }
 
 }  // namespace topay

@@ -1,27 +1,15 @@
 #include "core/io/robot_loader.h"
 
-#include <cerrno>
 #include <cmath>
-#include <cstring>
-#include <fstream>
-#include <sstream>
 
 #include "core/common/error.h"
+#include "core/io/bounded_text_file.h"
 #include "core/io/robot_yaml.h"
 #include "core/io/urdf_tree.h"
 #include "core/robot/self_collision.h"
 
 namespace topay {
 namespace {
-
-std::string ReadFile(const std::string& path) {
-  std::ifstream file(path, std::ios::binary);
-  if (!file) throw ConfigError(path, "", std::string("cannot open file: ") + std::strerror(errno));
-  std::ostringstream text;
-  text << file.rdbuf();
-  if (file.bad()) throw ConfigError(path, "", "read error");
-  return text.str();
-}
 
 int ResolveLink(const RobotModel& model, const std::string& name, const std::string& yaml_source,
                 const std::string& field, const std::string& urdf_source) {
@@ -86,8 +74,8 @@ void SetStowConfiguration(const RobotYaml& yaml, const std::string& yaml_source,
 }  // namespace
 
 RobotModel LoadRobotModel(const std::string& urdf_path, const std::string& yaml_path) {
-  const std::string urdf_text = ReadFile(urdf_path);
-  const std::string yaml_text = ReadFile(yaml_path);
+  const std::string urdf_text = ReadBoundedTextFile(urdf_path, kMaxConfigFileBytes, "robot URDF");
+  const std::string yaml_text = ReadBoundedTextFile(yaml_path, kMaxConfigFileBytes, "robot YAML");
   return LoadRobotModelFromStrings(urdf_text, urdf_path, yaml_text, yaml_path);
 }
 

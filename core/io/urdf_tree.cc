@@ -1,7 +1,13 @@
 #include "core/io/urdf_tree.h"
 
+#include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <limits>
+#include <map>
+#include <set>
+#include <utility>
+#include <vector>
 
 #include <console_bridge/console.h>
 #include <urdf_parser/urdf_parser.h>
@@ -76,15 +82,24 @@ class TreeFlattener {
  public:
   TreeFlattener(const std::string& source, UrdfTree* tree) : source_(source), tree_(tree) {}
 
-  // Depth-first: the link, then each child subtree in urdfdom's child order.
-  void Visit(const urdf::Link& link, int parent_index) {
-    Link out;
-    out.name = link.name;
-    out.parent = parent_index;
-    if (link.parent_joint) AddJoint(*link.parent_joint, &out);
-    const int index = static_cast<int>(tree_->links.size());
-    tree_->links.push_back(out);
-    for (const urdf::LinkSharedPtr& child : link.child_links) Visit(*child, index);
+  // Depth-first preorder from `root`: a link, then each child subtree in urdfdom's child
+  // order. Iterative (a long chain must not exhaust the stack); CheckIsTree has run, so every
+  // link is reached exactly once.
+  void Flatten(const urdf::Link& root) {
+    std::vector<std::pair<const urdf::Link*, int>> pending{{&root, -1}};
+    while (!pending.empty()) {
+      const auto [link, parent_index] = pending.back();
+      pending.pop_back();
+      Link out;
+      out.name = link->name;
+      out.parent = parent_index;
+      if (link->parent_joint) AddJoint(*link->parent_joint, &out);
+      const int index = static_cast<int>(tree_->links.size());
+      tree_->links.push_back(out);
+      for (auto child = link->child_links.rbegin(); child != link->child_links.rend(); ++child) {
+        pending.emplace_back(child->get(), index);
+      }
+    }
   }
 
  private:
@@ -131,11 +146,118 @@ class TreeFlattener {
   UrdfTree* tree_;
 };
 
+// The cycle of joints found by following parent joints up from `link`, which is not reached
+// from the root (so, one parent per link, the chain never ends at the root): "'j2' -> 'j3'".
+std::string CycleAbove(std::string link, const std::map<std::string, std::string>& parent_joint_of,
+                       const urdf::ModelInterface& model) {
+  std::vector<std::string> chain;  // links from `link` upwards
+  while (std::find(chain.begin(), chain.end(), link) == chain.end()) {
+    chain.push_back(link);
+    const auto joint = parent_joint_of.find(link);
+    if (joint == parent_joint_of.end()) return "(none)";  // not reached: cannot happen
+    link = model.joints_.at(joint->second)->parent_link_name;
+  }
+  std::string cycle;
+  for (auto it = std::find(chain.begin(), chain.end(), link); it != chain.end(); ++it) {
+    cycle += (cycle.empty() ? "'" : " -> '") + parent_joint_of.at(*it) + "'";
+  }
+  return cycle;
+}
+
+// Throws unless the joints make a tree with one root: urdfdom itself rejects malformed XML,
+// duplicate link or joint names, a joint naming a missing link, several roots and a cycle
+// through every link, but accepts a link with several parent joints, a joint whose parent is
+// its child, and a cycle beside the tree (its links hang off nothing); walking those never
+// ends.
+void CheckIsTree(const urdf::ModelInterface& model, const std::string& source) {
+  std::map<std::string, std::string> parent_joint_of;  // child link -> the joint naming it
+  for (const auto& [name, joint] : model.joints_) {    // by name: a deterministic first error
+    if (joint->parent_link_name == joint->child_link_name) {
+      throw ConfigError(source, JointField(*joint, "child"),
+                        "link '" + joint->child_link_name +
+                            "' is its own parent: a URDF must be a tree");
+    }
+    const auto [it, inserted] = parent_joint_of.emplace(joint->child_link_name, name);
+    if (!inserted) {
+      throw ConfigError(source, JointField(*joint, "child"),
+                        "link '" + joint->child_link_name + "' already has the parent joint '" +
+                            it->second + "': a URDF must be a tree (one parent per link)");
+    }
+  }
+  // One parent per link: a link not reached from the root lies on a cycle (or hangs off one).
+  std::set<std::string> reached;
+  std::vector<const urdf::Link*> pending{model.getRoot().get()};
+  while (!pending.empty()) {
+    const urdf::Link* link = pending.back();
+    pending.pop_back();
+    if (!reached.insert(link->name).second) continue;
+    for (const urdf::LinkSharedPtr& child : link->child_links) pending.push_back(child.get());
+  }
+  for (const auto& [name, link] : model.links_) {
+    if (reached.count(name) == 0) {
+      throw ConfigError(source, "link[" + name + "]",
+                        "is not connected to the root link '" + model.getRoot()->name +
+                            "': its parent joints lead to the cycle " +
+                            CycleAbove(name, parent_joint_of, model) + "; a URDF must be a tree");
+    }
+  }
+}
+
+// The deepest nesting of XML elements in `text` (comments, CDATA, <?...?> and <!...> skipped;
+// quoted attribute values may hold '>'). A rough scan: malformed XML is urdfdom's to reject.
+int MaxElementDepth(const std::string& text) {
+  int depth = 0;
+  int deepest = 0;
+  std::size_t i = 0;
+  const auto skip_past = [&text](std::size_t from, const char* end) {
+    const std::size_t at = text.find(end, from);
+    return at == std::string::npos ? text.size() : at + std::strlen(end);
+  };
+  while ((i = text.find('<', i)) != std::string::npos) {
+    if (text.compare(i, 4, "<!--") == 0) {
+      i = skip_past(i + 4, "-->");
+      continue;
+    }
+    if (text.compare(i, 9, "<![CDATA[") == 0) {
+      i = skip_past(i + 9, "]]>");
+      continue;
+    }
+    std::size_t j = i + 1;
+    char quote = 0;
+    for (; j < text.size(); ++j) {
+      const char c = text[j];
+      if (quote != 0) {
+        if (c == quote) quote = 0;
+      } else if (c == '"' || c == '\'') {
+        quote = c;
+      } else if (c == '>') {
+        break;
+      }
+    }
+    if (j >= text.size()) break;
+    const char kind = i + 1 < text.size() ? text[i + 1] : ' ';
+    if (kind == '/') {
+      depth = std::max(depth - 1, 0);
+    } else if (kind != '?' && kind != '!' && text[j - 1] != '/') {
+      deepest = std::max(deepest, ++depth);
+    }
+    i = j + 1;
+  }
+  return deepest;
+}
+
 }  // namespace
 
 UrdfTree ParseUrdfTree(const std::string& urdf_text, const std::string& source) {
   // urdfdom returns null for malformed XML, a missing <robot>, a bad number, a joint naming an
   // unknown link, several roots, ...; its reasons come through console_bridge.
+  // urdfdom's XML parser recurses per nesting level: a deep enough document overflows the
+  // stack (a URDF nests about 5 levels).
+  if (MaxElementDepth(urdf_text) > kMaxUrdfElementDepth) {
+    throw ConfigError(source, "robot",
+                      "XML elements nest deeper than " + std::to_string(kMaxUrdfElementDepth) +
+                          " levels: not a URDF");
+  }
   urdf::ModelInterfaceSharedPtr urdf_model;
   std::string reasons;
   {
@@ -148,9 +270,10 @@ UrdfTree ParseUrdfTree(const std::string& urdf_text, const std::string& source) 
         source, "robot",
         "malformed URDF: " + (reasons.empty() ? "urdfdom could not parse it" : reasons));
   }
+  CheckIsTree(*urdf_model, source);
   UrdfTree tree;
   tree.robot_name = urdf_model->getName();
-  TreeFlattener(source, &tree).Visit(*urdf_model->getRoot(), -1);
+  TreeFlattener(source, &tree).Flatten(*urdf_model->getRoot());
   if (tree.joint_names.empty()) {
     throw ConfigError(source, "robot", "has no movable joint");
   }

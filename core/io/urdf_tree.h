@@ -17,7 +17,14 @@ struct UrdfTree {
   std::vector<double> q_max_rad;
 };
 
-/// Parses a URDF document with urdfdom and flattens its tree. `source` names the document in
+/// Deepest XML element nesting ParseUrdfTree accepts (a URDF nests about 5 levels: robot,
+/// link, visual, geometry, box).
+inline constexpr int kMaxUrdfElementDepth = 100;
+
+/// Parses a URDF document with urdfdom and flattens its tree. The joints must make a tree with
+/// one root: a link with several parent joints, a joint that is its own parent, a cycle,
+/// several roots, a joint naming a missing link and duplicate link or joint names are
+/// ConfigErrors naming the joint or link. `source` names the document in
 /// errors (ConfigError(source, "<field>", ...)).
 UrdfTree ParseUrdfTree(const std::string& urdf_text, const std::string& source);
 

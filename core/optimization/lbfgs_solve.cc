@@ -78,13 +78,16 @@ class StopCallback : public ceres::IterationCallback {
 }  // namespace
 
 void CheckLbfgsOptions(const LbfgsOptions& o) {
-  if (o.memory < 1 || o.max_iterations < 1 || o.relative_decrease_past < 1 ||
-      !(o.relative_decrease_delta >= 0.0) || !(o.sufficient_decrease > 0.0) ||
-      !(o.curvature > o.sufficient_decrease && o.curvature < 1.0)) {
-    throw std::invalid_argument(
-        "LbfgsOptions: need memory, max_iterations, relative_decrease_past >= 1, "
-        "relative_decrease_delta >= 0 and 0 < sufficient_decrease < curvature < 1");
-  }
+  const auto require = [](bool ok, const char* rule) {
+    if (!ok) throw std::invalid_argument(std::string("LbfgsOptions: ") + rule);
+  };
+  require(o.memory >= 1, "memory must be >= 1");
+  require(o.max_iterations >= 1, "max_iterations must be >= 1");
+  require(o.relative_decrease_past >= 1, "relative_decrease_past must be >= 1");
+  require(o.relative_decrease_delta >= 0.0, "relative_decrease_delta must be >= 0");
+  require(o.sufficient_decrease > 0.0, "sufficient_decrease must be > 0");
+  require(o.curvature > o.sufficient_decrease && o.curvature < 1.0,
+          "curvature must be in (sufficient_decrease, 1)");
 }
 
 std::string_view ToString(LbfgsStop stop) {

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <stdexcept>
 #include <string>
+#include <utility>
 
 #include "core/optimization/smooth_penalty.h"
 #include "core/planning/base_band.h"
@@ -38,6 +39,33 @@ bool NeedsKinematics(const PenaltyMask& enabled) {
 }
 
 }  // namespace
+
+void CheckSamplePenaltyOptions(const SamplePenaltyOptions& o) {
+  CheckPositive(o.smoothing_mu, "smoothing_mu");
+  const std::pair<const char*, double> weights[] = {
+      {"velocity_omega_weight", o.velocity_omega_weight},
+      {"acceleration_weight", o.acceleration_weight},
+      {"yaw_acceleration_weight", o.yaw_acceleration_weight},
+      {"joint_position_weight", o.joint_position_weight},
+      {"joint_velocity_weight", o.joint_velocity_weight},
+      {"joint_acceleration_weight", o.joint_acceleration_weight},
+      {"base_obstacle_weight", o.base_obstacle_weight},
+      {"arm_obstacle_weight", o.arm_obstacle_weight},
+      {"self_collision_weight", o.self_collision_weight},
+      {"chassis_weight", o.chassis_weight}};
+  for (const auto& [name, weight] : weights) CheckNonNegative(weight, name);
+  CheckPositive(o.base_radius_factor, "base_radius_factor");
+  if (!(o.rate_limit_fraction > 0.0 && o.rate_limit_fraction <= 1.0)) {
+    throw std::invalid_argument("SamplePenalties: rate_limit_fraction = " +
+                                std::to_string(o.rate_limit_fraction) + " must be in (0, 1]");
+  }
+  CheckPositive(o.sphere_radius_factor, "sphere_radius_factor");
+  CheckFinite(o.self_margin_m, "self_margin_m");
+  CheckFinite(o.chassis_margin_m, "chassis_margin_m");
+  CheckNonNegative(o.joint_position_margin_rad, "joint_position_margin_rad");
+  if (o.base_field_margin_m) CheckNonNegative(*o.base_field_margin_m, "base_field_margin_m");
+  if (o.arm_field_margin_m) CheckNonNegative(*o.arm_field_margin_m, "arm_field_margin_m");
+}
 
 std::string_view ToString(PenaltyTerm term) {
   switch (term) {
@@ -92,19 +120,7 @@ SamplePenalties::SamplePenalties(const Kinematics& kinematics,
   CheckPositive(limits_.a_max_mps2, "base_limits.a_max_mps2");
   CheckPositive(limits_.omega_max_radps, "base_limits.omega_max_radps");
   CheckPositive(limits_.beta_max_radps2, "base_limits.beta_max_radps2");
-  CheckPositive(options_.smoothing_mu, "smoothing_mu");
-  for (int t = 0; t < kNumPenaltyTerms; ++t) {
-    CheckNonNegative(options_.Weight(static_cast<PenaltyTerm>(t)), "a penalty weight");
-  }
-  CheckPositive(options_.base_radius_factor, "base_radius_factor");
-  if (!(options_.rate_limit_fraction > 0.0 && options_.rate_limit_fraction <= 1.0)) {
-    throw std::invalid_argument("SamplePenalties: rate_limit_fraction = " +
-                                std::to_string(options_.rate_limit_fraction) +
-                                " must be in (0, 1]");
-  }
-  CheckPositive(options_.sphere_radius_factor, "sphere_radius_factor");
-  CheckFinite(options_.self_margin_m, "self_margin_m");
-  CheckFinite(options_.chassis_margin_m, "chassis_margin_m");
+  CheckSamplePenaltyOptions(options_);
   const RobotModel& model = kinematics.model();
   const int n = model.num_joints();
   const JointLimits& joints = model.joint_limits;
@@ -145,7 +161,6 @@ SamplePenalties::SamplePenalties(const Kinematics& kinematics,
   joint_middle_rad_ = 0.5 * (joints.q_min_rad + joints.q_max_rad);
   joint_half_range_rad_ =
       0.5 * (joints.q_max_rad - joints.q_min_rad).array() - options_.joint_position_margin_rad;
-  CheckNonNegative(options_.joint_position_margin_rad, "joint_position_margin_rad");
   if (n > 0) {
     CheckPositive(joint_half_range_rad_.minCoeff(),
                   "the smallest joint half range minus joint_position_margin_rad");

@@ -108,6 +108,11 @@ struct SamplePenaltyOptions {
   double Weight(PenaltyTerm term) const;
 };
 
+/// Throws std::invalid_argument naming the first option out of range (weights and margins
+/// finite and >= 0, factors and smoothing_mu > 0, rate_limit_fraction in (0, 1]). The
+/// SamplePenalties constructor calls it; the planner YAML loader too.
+void CheckSamplePenaltyOptions(const SamplePenaltyOptions& options);
+
 /// How much tighter than their options the penalties currently are: the optimizer tightens
 /// them when a result violates a hard limit between two samples, where raising a weight does
 /// not help (the samples already satisfy their constraint).

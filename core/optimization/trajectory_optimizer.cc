@@ -174,10 +174,10 @@ void CheckTrajectoryOptimizerOptions(const TrajectoryOptimizerOptions& o) {
   require(o.alm_rho_growth >= 1.0, "alm_rho_growth must be >= 1");
   require(o.alm_rho_max >= o.alm_rho_initial, "alm_rho_max must be >= alm_rho_initial");
   require(o.alm_max_outer_iterations >= 1, "alm_max_outer_iterations must be >= 1");
-  require(o.alm_position_tolerance_m > 0.0 && o.alm_orientation_tolerance_rad > 0.0,
-          "ALM tolerances must be > 0");
-  require(o.ee_position_tolerance_m > 0.0 && o.ee_orientation_tolerance_rad > 0.0,
-          "end-effector tolerances must be > 0");
+  require(o.alm_position_tolerance_m > 0.0, "alm_position_tolerance_m must be > 0");
+  require(o.alm_orientation_tolerance_rad > 0.0, "alm_orientation_tolerance_rad must be > 0");
+  require(o.ee_position_tolerance_m > 0.0, "ee_position_tolerance_m must be > 0");
+  require(o.ee_orientation_tolerance_rad > 0.0, "ee_orientation_tolerance_rad must be > 0");
   require(o.time_limit_s > 0.0, "time_limit_s must be > 0");
   require(o.max_penalty_escalations >= 0, "max_penalty_escalations must be >= 0");
   require(o.penalty_escalation_factor >= 1.0, "penalty_escalation_factor must be >= 1");
@@ -189,10 +189,21 @@ void CheckTrajectoryOptimizerOptions(const TrajectoryOptimizerOptions& o) {
           "rate_escalation_step must be in [0, 1)");
   require(o.objective.panels_per_piece >= 1, "objective.panels_per_piece must be >= 1");
   require(o.objective.sample_chunks >= 1, "objective.sample_chunks must be >= 1");
-  require(o.feasibility.sample_period_s > 0.0 && o.feasibility.rate_tolerance >= 0.0,
-          "feasibility: sample_period_s must be > 0 and rate_tolerance >= 0");
+  require(o.feasibility.sample_period_s > 0.0, "feasibility.sample_period_s must be > 0");
+  require(o.feasibility.rate_tolerance >= 0.0, "feasibility.rate_tolerance must be >= 0");
   require(std::isfinite(o.objective.time_weight) && o.objective.time_weight >= 0.0,
           "objective.time_weight must be finite and >= 0");
+  const auto finite_nonnegative = [](double x) { return std::isfinite(x) && x >= 0.0; };
+  require(finite_nonnegative(o.objective.path_fit_position_weight),
+          "objective.path_fit_position_weight must be finite and >= 0");
+  require(finite_nonnegative(o.objective.path_fit_angle_weight),
+          "objective.path_fit_angle_weight must be finite and >= 0");
+  require(finite_nonnegative(o.objective.jerk_weights.arc_length),
+          "objective.jerk_weights.arc_length must be finite and >= 0");
+  require(finite_nonnegative(o.objective.jerk_weights.yaw),
+          "objective.jerk_weights.yaw must be finite and >= 0");
+  require(finite_nonnegative(o.objective.jerk_weights.joint),
+          "objective.jerk_weights.joint must be finite and >= 0");
   CheckLbfgsOptions(o.lbfgs);
   CheckWarmStartOptions(o.warm_start);
 }

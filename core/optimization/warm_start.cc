@@ -230,9 +230,9 @@ void CheckInputs(const WholeBodyPath& path, const WholeBodyState& start, const B
 }  // namespace
 
 void CheckWarmStartOptions(const WarmStartOptions& options) {
-  Require(options.piece_duration_s > 0.0 && options.min_pieces >= 1 &&
-              options.max_pieces >= options.min_pieces,
-          "piece_duration_s must be > 0 and 1 <= min_pieces <= max_pieces");
+  Require(options.piece_duration_s > 0.0, "piece_duration_s must be > 0");
+  Require(options.min_pieces >= 1, "min_pieces must be >= 1");
+  Require(options.max_pieces >= options.min_pieces, "max_pieces must be >= min_pieces");
   Require(options.rate_fraction > 0.0 && options.rate_fraction <= 1.0,
           "rate_fraction must be in (0, 1]");
   Require(options.min_duration_s > 0.0, "min_duration_s must be > 0");

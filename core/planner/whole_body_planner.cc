@@ -13,6 +13,7 @@
 #include <tbb/task_arena.h>
 #include <tbb/task_group.h>
 
+#include "core/planner/failure_cause.h"
 #include "core/planning/stop_deadline.h"
 
 namespace topay {
@@ -128,6 +129,10 @@ WholeBodyPlanResult WholeBodyPlanner::Plan(const WholeBodyState& start,
       result.status = PlanStatus::kTimeLimit;
     }
     result.failure_reason = "front end: " + result.front_end.failure_reason;
+    if (const auto cause = FrontEndFailureCause(result.front_end.status, front_end_.validity(),
+                                                validator_.scene(), start, X_WE_goal)) {
+      result.failure_reason += " (" + *cause + ")";
+    }
     return result;
   }
   if (result.chosen >= 0) {

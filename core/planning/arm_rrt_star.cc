@@ -19,27 +19,6 @@ ArmRrtStarResult Failure(ArmRrtStarStatus status, std::string message) {
   return result;
 }
 
-/// Empty if the options are usable, else what is wrong.
-std::string CheckOptions(const ArmRrtStarOptions& options, int num_joints) {
-  if (!(options.time_budget_s > 0.0)) return "options.time_budget_s must be > 0";
-  if (options.max_iterations < 0) return "options.max_iterations must be >= 0";
-  if (!(options.goal_bias >= 0.0 && options.goal_bias <= 1.0)) {
-    return "options.goal_bias must be in [0, 1]";
-  }
-  if (!(options.stow_bias >= 0.0 && options.stow_bias <= 1.0)) {
-    return "options.stow_bias must be in [0, 1]";
-  }
-  if (!(options.rewire_radius_rad >= 0.0)) return "options.rewire_radius_rad must be >= 0";
-  if (options.max_neighbours < 1) return "options.max_neighbours must be >= 1";
-  if (options.max_informed_draws < 0) return "options.max_informed_draws must be >= 0";
-  if (options.max_nodes < 2) return "options.max_nodes must be >= 2";
-  const Eigen::VectorXd& w = options.joint_weights;
-  if (w.size() != 0 && (w.size() != num_joints || !w.allFinite() || !(w.array() > 0.0).all())) {
-    return "options.joint_weights must be empty or " + std::to_string(num_joints) +
-           " positive finite values";
-  }
-  return {};
-}
 
 /// Empty if every base layer and every translation between layers is clear on the 2D field.
 std::string CheckBasePath(const DiscreteSE2Path& base, const WholeBodyValidity& validity) {
@@ -77,6 +56,27 @@ std::string CheckSequence(const DiscreteSE2Path& base) {
 
 }  // namespace
 
+std::string CheckArmRrtStarOptions(const ArmRrtStarOptions& options, int num_joints) {
+  if (!(options.time_budget_s > 0.0)) return "options.time_budget_s must be > 0";
+  if (options.max_iterations < 0) return "options.max_iterations must be >= 0";
+  if (!(options.goal_bias >= 0.0 && options.goal_bias <= 1.0)) {
+    return "options.goal_bias must be in [0, 1]";
+  }
+  if (!(options.stow_bias >= 0.0 && options.stow_bias <= 1.0)) {
+    return "options.stow_bias must be in [0, 1]";
+  }
+  if (!(options.rewire_radius_rad >= 0.0)) return "options.rewire_radius_rad must be >= 0";
+  if (options.max_neighbours < 1) return "options.max_neighbours must be >= 1";
+  if (options.max_informed_draws < 0) return "options.max_informed_draws must be >= 0";
+  if (options.max_nodes < 2) return "options.max_nodes must be >= 2";
+  const Eigen::VectorXd& w = options.joint_weights;
+  if (w.size() != 0 && ((num_joints >= 0 && w.size() != num_joints) || !w.allFinite() || !(w.array() > 0.0).all())) {
+    return "options.joint_weights must be empty or " + std::to_string(num_joints) +
+           " positive finite values";
+  }
+  return {};
+}
+
 ArmRrtStarResult PlanArmRrtStar(const DiscreteSE2Path& base_sequence,
                                 const Eigen::VectorXd& q_start_rad,
                                 const Eigen::VectorXd& q_goal_rad,
@@ -90,7 +90,7 @@ ArmRrtStarResult PlanArmRrtStar(const DiscreteSE2Path& base_sequence,
     return Failure(ArmRrtStarStatus::kInvalidInput,
                    "start/goal joint vectors must have " + std::to_string(n) + " entries");
   }
-  if (std::string problem = CheckOptions(options, n); !problem.empty()) {
+  if (std::string problem = CheckArmRrtStarOptions(options, n); !problem.empty()) {
     return Failure(ArmRrtStarStatus::kInvalidInput, problem);
   }
   WholeBodyValidityWorkspace workspace = validity.MakeWorkspace();

@@ -55,6 +55,11 @@ struct ArmRrtStarOptions {
   std::function<void(double cost)> on_first_solution;
 };
 
+/// Empty if the options are usable, else the first option out of range and its rule (the
+/// search returns kInvalidInput with it; the planner YAML loader throws it as a ConfigError).
+/// num_joints < 0: joint_weights is checked for values only, not for its size.
+std::string CheckArmRrtStarOptions(const ArmRrtStarOptions& options, int num_joints = -1);
+
 /// Why PlanArmRrtStar stopped / failed.
 enum class ArmRrtStarStatus {
   kSuccess,

@@ -26,10 +26,7 @@ void Validate(const std::vector<Eigen::Vector2d>& waypoints, double start_yaw, d
   }
   if (!std::isfinite(start_yaw)) throw std::invalid_argument("DiscreteSE2: start yaw not finite");
   if (!std::isfinite(goal_yaw)) throw std::invalid_argument("DiscreteSE2: goal yaw not finite");
-  RequirePositive(options.delta_l_m, "options.delta_l_m");
-  RequirePositive(options.max_turn_step_rad, "options.max_turn_step_rad");
-  RequirePositive(options.min_turn_rad, "options.min_turn_rad");
-  RequirePositive(options.min_segment_m, "options.min_segment_m");
+  CheckDiscreteSE2Options(options);
   RequirePositive(limits.v_max_mps, "limits.v_max_mps");
   RequirePositive(limits.a_max_mps2, "limits.a_max_mps2");
   RequirePositive(limits.omega_max_radps, "limits.omega_max_radps");
@@ -127,6 +124,13 @@ class LayerBuilder {
 };
 
 }  // namespace
+
+void CheckDiscreteSE2Options(const DiscreteSE2Options& options) {
+  RequirePositive(options.delta_l_m, "options.delta_l_m");
+  RequirePositive(options.max_turn_step_rad, "options.max_turn_step_rad");
+  RequirePositive(options.min_turn_rad, "options.min_turn_rad");
+  RequirePositive(options.min_segment_m, "options.min_segment_m");
+}
 
 WholeBodyState DiscreteSE2Path::State(int layer, const Eigen::VectorXd& q_rad) const {
   const Se2Layer& l = layers.at(static_cast<std::size_t>(layer));

@@ -25,6 +25,9 @@ struct DiscreteSE2Options {
   double min_segment_m = 1e-6;
 };
 
+/// Throws std::invalid_argument naming the first option that is not positive and finite.
+void CheckDiscreteSE2Options(const DiscreteSE2Options& options);
+
 /// One base state of the discretised path: a layer of the arm's RRT* (paper Sec. III-A).
 struct Se2Layer {
   double x_m = 0.0;

@@ -23,22 +23,6 @@ TopologicalPathSearchResult Fail(TopologicalPathSearchResult result, Status stat
   return result;
 }
 
-// Empty if the options are usable, else what is wrong.
-std::string CheckOptions(const TopologicalPathSearchOptions& o) {
-  if (!(std::isfinite(o.base_radius_m) && o.base_radius_m >= 0.0)) {
-    return "base_radius_m must be finite and >= 0";
-  }
-  if (!(std::isfinite(o.clearance_m) && o.clearance_m >= 0.0)) {
-    return "clearance_m must be finite and >= 0";
-  }
-  if (!(std::isfinite(o.prm.sample_margin_length_m) && std::isfinite(o.prm.sample_half_width_m) &&
-        o.prm.sample_margin_length_m >= 0.0 && o.prm.sample_half_width_m >= 0.0)) {
-    return "prm sample box sizes must be finite and >= 0";
-  }
-  if (std::isnan(o.prm.max_time_s)) return "prm.max_time_s is NaN";
-  if (!(o.pruning.max_length_ratio >= 1.0)) return "pruning.max_length_ratio must be >= 1";
-  return "";
-}
 
 // {index of the shortest path}, or {} if there is none.
 std::vector<int> ShortestPathIndex(const std::vector<std::vector<Eigen::Vector2d>>& paths) {
@@ -116,6 +100,24 @@ void RunJps(const SignedDistanceField2& field, const Eigen::Vector2d& start,
 
 }  // namespace
 
+std::string CheckTopologicalPathSearchOptions(const TopologicalPathSearchOptions& o) {
+  if (!(std::isfinite(o.base_radius_m) && o.base_radius_m >= 0.0)) {
+    return "base_radius_m must be finite and >= 0";
+  }
+  if (!(std::isfinite(o.clearance_m) && o.clearance_m >= 0.0)) {
+    return "clearance_m must be finite and >= 0";
+  }
+  if (!(std::isfinite(o.prm.sample_margin_length_m) && o.prm.sample_margin_length_m >= 0.0)) {
+    return "prm.sample_margin_length_m must be finite and >= 0";
+  }
+  if (!(std::isfinite(o.prm.sample_half_width_m) && o.prm.sample_half_width_m >= 0.0)) {
+    return "prm.sample_half_width_m must be finite and >= 0";
+  }
+  if (std::isnan(o.prm.max_time_s)) return "prm.max_time_s is NaN";
+  if (!(o.pruning.max_length_ratio >= 1.0)) return "pruning.max_length_ratio must be >= 1";
+  return "";
+}
+
 TopologicalPathSearchResult SearchTopologicalBasePaths(const SignedDistanceField2& field,
                                                        const Eigen::Vector2d& start_W_m,
                                                        const Eigen::Vector2d& goal_W_m,
@@ -127,7 +129,7 @@ TopologicalPathSearchResult SearchTopologicalBasePaths(const SignedDistanceField
     return Fail(std::move(result), Status::kInvalidInput,
                 "start or goal base position is not finite");
   }
-  if (const std::string bad = CheckOptions(options); !bad.empty()) {
+  if (const std::string bad = CheckTopologicalPathSearchOptions(options); !bad.empty()) {
     return Fail(std::move(result), Status::kInvalidInput, "options: " + bad);
   }
   const BaseFreeSpace free_space(field, options.base_radius_m + options.clearance_m);

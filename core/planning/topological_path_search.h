@@ -38,6 +38,10 @@ struct TopologicalPathSearchOptions {
   JumpPointSearchOptions jps;  ///< safe_distance_m is overwritten by the sum above.
 };
 
+/// Empty if the options are usable, else the first option out of range and its rule (Search
+/// returns kInvalidInput with it; the planner YAML loader throws it as a ConfigError).
+std::string CheckTopologicalPathSearchOptions(const TopologicalPathSearchOptions& options);
+
 /// Counters and wall-clock timings (steady clock, ms) of one search.
 struct TopologicalPathSearchStats {
   int num_samples = 0;

@@ -45,6 +45,20 @@ double ResolveMargin(const std::optional<double>& margin, double default_m, cons
 
 }  // namespace
 
+void CheckWholeBodyValidityOptions(const WholeBodyValidityOptions& options) {
+  if (options.base_margin_m) ResolveMargin(options.base_margin_m, 0.0, "base_margin_m");
+  if (options.arm_margin_m) ResolveMargin(options.arm_margin_m, 0.0, "arm_margin_m");
+  if (!std::isfinite(options.self_margin_m)) {
+    throw std::invalid_argument("WholeBodyValidity: self_margin_m must be finite");
+  }
+  if (!(options.max_edge_step_m > 0.0)) {
+    throw std::invalid_argument("WholeBodyValidity: max_edge_step_m must be positive");
+  }
+  if (!(options.max_edge_step_rad > 0.0)) {
+    throw std::invalid_argument("WholeBodyValidity: max_edge_step_rad must be positive");
+  }
+}
+
 std::string_view ToString(ValidityFailure failure) {
   switch (failure) {
     case ValidityFailure::kNone:
@@ -75,16 +89,11 @@ WholeBodyValidity::WholeBodyValidity(const Kinematics& kinematics,
       self_collision_(kinematics),
       options_(options),
       arm_field_spheres_(SpheresToCheckOnArmField(kinematics, base_field)) {
+  CheckWholeBodyValidityOptions(options);
   base_margin_m_ = ResolveMargin(
       options.base_margin_m, base_field.exactness_margin_m(), "base_margin_m");
   arm_margin_m_ = ResolveMargin(
       options.arm_margin_m, DefaultMargin(arm_field.geometry().resolution_m, 3), "arm_margin_m");
-  if (!std::isfinite(options.self_margin_m)) {
-    throw std::invalid_argument("WholeBodyValidity: self_margin_m must be finite");
-  }
-  if (!(options.max_edge_step_m > 0.0) || !(options.max_edge_step_rad > 0.0)) {
-    throw std::invalid_argument("WholeBodyValidity: edge steps must be positive");
-  }
 }
 
 WholeBodyValidityWorkspace WholeBodyValidity::MakeWorkspace() const {

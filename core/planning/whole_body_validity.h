@@ -35,6 +35,11 @@ struct WholeBodyValidityOptions {
   double max_edge_step_rad = 0.01;
 };
 
+/// Throws std::invalid_argument naming the first option out of range (margins, when set,
+/// finite and >= 0; self_margin_m finite; edge steps > 0). The WholeBodyValidity constructor
+/// calls it; the planner YAML loader too.
+void CheckWholeBodyValidityOptions(const WholeBodyValidityOptions& options);
+
 /// Why a state is invalid.
 enum class ValidityFailure {
   kNone,

@@ -59,8 +59,14 @@ bool IsValidPose(const Eigen::Isometry3d& X, std::string* why) {
   return true;
 }
 
-/// Throws std::invalid_argument naming the first option out of its range.
-void CheckOptions(const WholeBodyIkOptions& o) {
+
+double ElapsedSeconds(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+}  // namespace
+
+void CheckWholeBodyIkOptions(const WholeBodyIkOptions& o) {
   auto require = [](bool ok, const char* field, const char* rule) {
     if (!ok) {
       throw std::invalid_argument(std::string("WholeBodyIkOptions::") + field + " must be " +
@@ -97,12 +103,6 @@ void CheckOptions(const WholeBodyIkOptions& o) {
   require(o.time_budget_s > 0.0, "time_budget_s", "> 0 (+infinity: no limit)");
   require(o.max_total_iterations >= 0, "max_total_iterations", ">= 0");
 }
-
-double ElapsedSeconds(std::chrono::steady_clock::time_point start) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-}
-
-}  // namespace
 
 /// Per-Solve scratch: sized once, then the DLS iterations never allocate.
 struct WholeBodyIk::Workspace {
@@ -141,7 +141,7 @@ struct WholeBodyIk::DlsOutcome {
 
 WholeBodyIk::WholeBodyIk(const Kinematics& kinematics, WholeBodyIkOptions options)
     : kinematics_(kinematics), options_(options), self_collision_(kinematics) {
-  CheckOptions(options_);
+  CheckWholeBodyIkOptions(options_);
   const RobotModel& model = kinematics.model();
   if (model.end_effector_link < 0) {
     throw std::invalid_argument("WholeBodyIk: the robot model has no end-effector link");

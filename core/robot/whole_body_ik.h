@@ -98,6 +98,10 @@ struct WholeBodyIkOptions {
   int max_total_iterations = 20000;
 };
 
+/// Throws std::invalid_argument naming the first option out of range (the WholeBodyIk
+/// constructor calls it; the planner YAML loader too).
+void CheckWholeBodyIkOptions(const WholeBodyIkOptions& options);
+
 struct WholeBodyIkQuery {
   /// Tried first (as is, then as the seed of an arm-only and a whole-body DLS run).
   std::optional<WholeBodyState> hint;

@@ -23,29 +23,6 @@ void RequireOption(bool ok, const char* field, double value, const char* rule) {
   }
 }
 
-void CheckOptions(const TrajectoryValidatorOptions& o) {
-  auto finite_nonnegative = [](double x) { return std::isfinite(x) && x >= 0.0; };
-  auto finite_positive = [](double x) { return std::isfinite(x) && x > 0.0; };
-  RequireOption(finite_positive(o.sample_period_s), "sample_period_s", o.sample_period_s,
-                "finite and > 0");
-  RequireOption(finite_positive(o.max_duration_s), "max_duration_s", o.max_duration_s,
-                "finite and > 0");
-  RequireOption(o.max_duration_s / o.sample_period_s <= 1e8, "max_duration_s", o.max_duration_s,
-                "at most 1e8 sample periods");
-  const std::pair<const char*, double> nonnegative[] = {
-      {"limit_tolerance", o.limit_tolerance},
-      {"joint_position_tolerance_rad", o.joint_position_tolerance_rad},
-      {"ee_position_tolerance_m", o.ee_position_tolerance_m},
-      {"ee_orientation_tolerance_rad", o.ee_orientation_tolerance_rad},
-      {"obstacle_margin_m", o.obstacle_margin_m},
-      {"self_margin_m", o.self_margin_m},
-      {"start_position_tolerance_m", o.start_position_tolerance_m},
-      {"start_angle_tolerance_rad", o.start_angle_tolerance_rad},
-      {"end_rest_tolerance", o.end_rest_tolerance}};
-  for (const auto& [field, value] : nonnegative) {
-    RequireOption(finite_nonnegative(value), field, value, "finite and >= 0");
-  }
-}
 
 bool IsRotation(const Eigen::Matrix3d& R) {
   return (R.transpose() * R - Eigen::Matrix3d::Identity()).cwiseAbs().maxCoeff() <= 1e-6 &&
@@ -114,6 +91,30 @@ bool Sample(const TrajectorySampler& sampler, double t_s, int num_joints, Valida
 
 }  // namespace
 
+void CheckTrajectoryValidatorOptions(const TrajectoryValidatorOptions& o) {
+  auto finite_nonnegative = [](double x) { return std::isfinite(x) && x >= 0.0; };
+  auto finite_positive = [](double x) { return std::isfinite(x) && x > 0.0; };
+  RequireOption(finite_positive(o.sample_period_s), "sample_period_s", o.sample_period_s,
+                "finite and > 0");
+  RequireOption(finite_positive(o.max_duration_s), "max_duration_s", o.max_duration_s,
+                "finite and > 0");
+  RequireOption(o.max_duration_s / o.sample_period_s <= 1e8, "max_duration_s", o.max_duration_s,
+                "at most 1e8 sample periods");
+  const std::pair<const char*, double> nonnegative[] = {
+      {"limit_tolerance", o.limit_tolerance},
+      {"joint_position_tolerance_rad", o.joint_position_tolerance_rad},
+      {"ee_position_tolerance_m", o.ee_position_tolerance_m},
+      {"ee_orientation_tolerance_rad", o.ee_orientation_tolerance_rad},
+      {"obstacle_margin_m", o.obstacle_margin_m},
+      {"self_margin_m", o.self_margin_m},
+      {"start_position_tolerance_m", o.start_position_tolerance_m},
+      {"start_angle_tolerance_rad", o.start_angle_tolerance_rad},
+      {"end_rest_tolerance", o.end_rest_tolerance}};
+  for (const auto& [field, value] : nonnegative) {
+    RequireOption(finite_nonnegative(value), field, value, "finite and >= 0");
+  }
+}
+
 TrajectoryValidator::TrajectoryValidator(const Kinematics& kinematics, const Scene& scene,
                                          const BaseLimits& base_limits,
                                          const TrajectoryValidatorOptions& options)
@@ -123,7 +124,7 @@ TrajectoryValidator::TrajectoryValidator(const Kinematics& kinematics, const Sce
       options_(options),
       checker_(kinematics, scene_),
       self_collision_(kinematics) {
-  CheckOptions(options_);
+  CheckTrajectoryValidatorOptions(options_);
   CheckKinematicLimits(base_limits_, kinematics.model().joint_limits, kinematics.num_joints());
 }
 

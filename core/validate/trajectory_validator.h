@@ -45,6 +45,10 @@ struct TrajectoryValidatorOptions {
   bool stop_at_first_failure = false;
 };
 
+/// Throws std::invalid_argument naming the first option out of range and its value (the
+/// TrajectoryValidator constructor calls it; the planner YAML loader too).
+void CheckTrajectoryValidatorOptions(const TrajectoryValidatorOptions& options);
+
 /// The independent validator used for every reported success: samples a trajectory every
 /// sample_period_s and checks, against the exact scene geometry (boxes, no distance field),
 /// the whole collision model (base cylinder over its height, every arm sphere), self

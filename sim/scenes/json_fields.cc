@@ -1,12 +1,9 @@
 #include "sim/scenes/json_fields.h"
 
-#include <cerrno>
 #include <cmath>
-#include <cstring>
-#include <fstream>
-#include <sstream>
 
 #include "core/common/error.h"
+#include "core/io/bounded_text_file.h"
 
 namespace topay {
 namespace {
@@ -15,14 +12,8 @@ std::string TypeName(const nlohmann::json& value) { return value.type_name(); }
 
 }  // namespace
 
-nlohmann::json JsonFieldReader::ParseFile() const {
-  std::ifstream in(file_, std::ios::binary);
-  if (!in) {
-    throw ConfigError(file_, "", std::string("cannot open for reading: ") + std::strerror(errno));
-  }
-  std::ostringstream text;
-  text << in.rdbuf();
-  return ParseText(text.str());
+nlohmann::json JsonFieldReader::ParseFile(std::size_t max_bytes, const std::string& what) const {
+  return ParseText(ReadBoundedTextFile(file_, max_bytes, what));
 }
 
 nlohmann::json JsonFieldReader::ParseText(const std::string& text) const {
@@ -59,6 +50,16 @@ const nlohmann::json& JsonFieldReader::Member(const nlohmann::json& object,
   const nlohmann::json* member = OptionalMember(object, key);
   if (member == nullptr) Fail(Child(path, key), "missing");
   return *member;
+}
+
+void JsonFieldReader::RequireKnownKeys(const nlohmann::json& object, const std::string& path,
+                                       std::initializer_list<const char*> known) const {
+  RequireObject(object, path);
+  for (const auto& [key, value] : object.items()) {
+    bool found = false;
+    for (const char* name : known) found = found || key == name;
+    if (!found) Fail(Child(path, key), "unknown field (misspelt?)");
+  }
 }
 
 const nlohmann::json* JsonFieldReader::OptionalMember(const nlohmann::json& object,

@@ -1,6 +1,8 @@
 #pragma once
 
+#include <cstddef>
 #include <cstdint>
+#include <initializer_list>
 #include <string>
 
 #include <Eigen/Core>
@@ -13,12 +15,18 @@ namespace topay {
 /// Field paths are built with Child ("a.b") and Index ("a[3]").
 class JsonFieldReader {
  public:
+  /// The limit of ParseFile when the caller gives none (trajectory files with their samples).
+  static constexpr std::size_t kDefaultMaxBytes = std::size_t{256} << 20;  // 256 MiB
+
   explicit JsonFieldReader(std::string file) : file_(std::move(file)) {}
 
   const std::string& file() const { return file_; }
 
-  /// Reads and parses the file: missing/unreadable file or malformed JSON throw.
-  nlohmann::json ParseFile() const;
+  /// Reads (core/io/bounded_text_file.h: at most max_bytes, not a directory, no NUL byte) and
+  /// parses the file; `what` names the kind of file in errors. A missing, unreadable or
+  /// oversized file, or malformed JSON, throws.
+  nlohmann::json ParseFile(std::size_t max_bytes = kDefaultMaxBytes,
+                           const std::string& what = "JSON file") const;
   /// Parses text as if it were the file's contents.
   nlohmann::json ParseText(const std::string& text) const;
 
@@ -30,6 +38,10 @@ class JsonFieldReader {
   /// The member `key` of object `object` (at `path`); throws if missing.
   const nlohmann::json& Member(const nlohmann::json& object, const std::string& path,
                                const std::string& key) const;
+  /// Throws for the first member of `object` (at `path`) whose key is not in `known`, as the
+  /// YAML readers do: a misspelt optional field is an error, not silently ignored.
+  void RequireKnownKeys(const nlohmann::json& object, const std::string& path,
+                        std::initializer_list<const char*> known) const;
   /// The member or nullptr if absent.
   const nlohmann::json* OptionalMember(const nlohmann::json& object,
                                        const std::string& key) const;

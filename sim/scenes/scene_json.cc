@@ -24,7 +24,7 @@ Json BoxJson(const OrientedBox& box, const BoxRole* role) {
 
 OrientedBox ReadBox(const JsonFieldReader& reader, const nlohmann::json& value,
                     const std::string& path) {
-  reader.RequireObject(value, path);
+  reader.RequireKnownKeys(value, path, {"center", "size", "yaw", "role"});
   OrientedBox box;
   box.center_W_m = reader.Vector3(reader.Member(value, path, "center"),
                                   JsonFieldReader::Child(path, "center"));
@@ -53,7 +53,7 @@ BoxRole ReadRole(const JsonFieldReader& reader, const nlohmann::json& box,
 }
 
 Eigen::AlignedBox3d ReadBounds(const JsonFieldReader& reader, const nlohmann::json& value) {
-  reader.RequireObject(value, "bounds");
+  reader.RequireKnownKeys(value, "bounds", {"min", "max"});
   const Eigen::Vector3d min = reader.Vector3(reader.Member(value, "bounds", "min"), "bounds.min");
   const Eigen::Vector3d max = reader.Vector3(reader.Member(value, "bounds", "max"), "bounds.max");
   if (!(min.array() < max.array()).all()) {
@@ -64,7 +64,7 @@ Eigen::AlignedBox3d ReadBounds(const JsonFieldReader& reader, const nlohmann::js
 
 Scene SceneFromDocument(const JsonFieldReader& reader, const nlohmann::json& document,
                         std::vector<BoxRole>* roles) {
-  reader.RequireObject(document, "");
+  reader.RequireKnownKeys(document, "", {"kind", "seed", "bounds", "boxes"});
   Scene scene;
   if (const auto* kind = reader.OptionalMember(document, "kind")) {
     scene.kind = reader.String(*kind, "kind");
@@ -122,7 +122,7 @@ void WriteSceneJson(const std::string& path, const Scene& scene,
 
 Scene ReadSceneJson(const std::string& path, std::vector<BoxRole>* roles) {
   const JsonFieldReader reader(path);
-  return SceneFromDocument(reader, reader.ParseFile(), roles);
+  return SceneFromDocument(reader, reader.ParseFile(kMaxSceneJsonBytes, "scene JSON"), roles);
 }
 
 Scene SceneFromJson(const std::string& text, const std::string& file_name,

@@ -34,7 +34,7 @@ Json PoseJson(const Eigen::Isometry3d& X_WE) {
 WholeBodyState ReadState(const JsonFieldReader& reader, const nlohmann::json& document,
                          const std::string& key) {
   const nlohmann::json& value = reader.Member(document, "", key);
-  reader.RequireObject(value, key);
+  reader.RequireKnownKeys(value, key, {"x_m", "y_m", "yaw_rad", "q_rad"});
   auto field = [&](const char* name) -> const nlohmann::json& {
     return reader.Member(value, key, name);
   };
@@ -49,7 +49,7 @@ WholeBodyState ReadState(const JsonFieldReader& reader, const nlohmann::json& do
 Eigen::Isometry3d ReadPose(const JsonFieldReader& reader, const nlohmann::json& document) {
   const std::string key = "goal_end_effector";
   const nlohmann::json& value = reader.Member(document, "", key);
-  reader.RequireObject(value, key);
+  reader.RequireKnownKeys(value, key, {"position_m", "quaternion_wxyz"});
   const Eigen::Vector3d p =
       reader.Vector3(reader.Member(value, key, "position_m"), key + ".position_m");
   const std::string q_path = key + ".quaternion_wxyz";
@@ -80,7 +80,8 @@ void CheckJointCounts(const JsonFieldReader& reader, const PlanningTask& task,
 
 PlanningTask TaskFromDocument(const JsonFieldReader& reader, const nlohmann::json& document,
                               int expected_num_joints) {
-  reader.RequireObject(document, "");
+  reader.RequireKnownKeys(document, "", {"range", "seed", "scene_seed", "base_distance_m",
+                                         "start", "goal", "goal_end_effector"});
   PlanningTask task;
   const std::string range = reader.String(reader.Member(document, "", "range"), "range");
   const std::optional<DistanceRange> parsed = ParseDistanceRange(range);
@@ -127,7 +128,8 @@ void WriteTaskJson(const std::string& path, const PlanningTask& task) {
 
 PlanningTask ReadTaskJson(const std::string& path, int expected_num_joints) {
   const JsonFieldReader reader(path);
-  return TaskFromDocument(reader, reader.ParseFile(), expected_num_joints);
+  return TaskFromDocument(reader, reader.ParseFile(kMaxTaskJsonBytes, "task JSON"),
+                          expected_num_joints);
 }
 
 PlanningTask TaskFromJson(const std::string& text, const std::string& file_name,

@@ -1,5 +1,6 @@
 #pragma once
 
+#include <cstddef>
 #include <string>
 
 #include "sim/scenes/planning_task.h"
@@ -14,15 +15,19 @@ namespace topay {
 // goal_end_effector is X_WE_goal (position of E in W, rotation R_WE as a unit quaternion).
 // Numbers in shortest round-trip form, keys in this order: same task, same bytes.
 
+/// Largest task file read (bytes): a task is a few hundred bytes.
+inline constexpr std::size_t kMaxTaskJsonBytes = std::size_t{1} << 20;  // 1 MiB
+
 std::string TaskToJson(const PlanningTask& task);
 
 /// Writes TaskToJson to path; throws ConfigError(path, "", ...) if it cannot be written.
 void WriteTaskJson(const std::string& path, const PlanningTask& task);
 
 /// Reads and validates a task file. Every field above is required. Throws
-/// ConfigError("<path>", "<field>", "<message>") for a missing file, malformed JSON, a missing
-/// field, a wrong type, a non-finite number, an unknown range, start and goal with different
-/// joint counts (or, if expected_num_joints >= 0, a count other than that), a quaternion whose
+/// ConfigError("<path>", "<field>", "<message>") for a missing file, a directory, a file above
+/// kMaxTaskJsonBytes, malformed JSON, a missing or unknown field (at any level, e.g.
+/// "start.z_m"), a wrong type, a non-finite number, an unknown range, start and goal with
+/// different joint counts (or, if expected_num_joints >= 0, a count other than that), a quaternion whose
 /// norm is not 1 within 1e-6, or a base_distance_m that disagrees with start and goal by more
 /// than 1e-6 m.
 PlanningTask ReadTaskJson(const std::string& path, int expected_num_joints = -1);

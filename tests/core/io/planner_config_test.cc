@@ -107,6 +107,14 @@ TEST(PlannerConfigTest, RangeChecksAndFileErrorsAreConfigErrors) {
   EXPECT_THROW(ParsePlannerOptions("planner: {max_candidates: 0}", "x.yaml"), ConfigError);
   EXPECT_THROW(ParsePlannerOptions("front_end: {max_goal_attempts: 0}", "x.yaml"), ConfigError);
   EXPECT_THROW(ParsePlannerOptions("planner: {max_candidates: [", "x.yaml"), ConfigError);
+  // The issue's `--config /tmp`: a directory is not an empty configuration.
+  try {
+    LoadPlannerOptions(::testing::TempDir());
+    FAIL() << "no error";
+  } catch (const ConfigError& e) {
+    EXPECT_EQ(e.file(), ::testing::TempDir());
+    EXPECT_NE(std::string(e.what()).find("directory"), std::string::npos) << e.what();
+  }
   try {
     LoadPlannerOptions("/nonexistent/planner.yaml");
     FAIL() << "no error";

@@ -143,13 +143,21 @@ TEST_F(RobotLoaderBadInputTest, FixturesLoad) {
 TEST_F(RobotLoaderBadInputTest, MissingUrdfFile) {
   const std::string missing = kDataDir + "no_such_robot.urdf";
   ExpectConfigError([&] { LoadRobotModel(missing, kConfigDir + "topay_mm.yaml"); }, missing,
-                    "cannot open file");
+                    "cannot open the robot URDF");
 }
 
 TEST_F(RobotLoaderBadInputTest, MissingYamlFile) {
   const std::string missing = kDataDir + "no_such_robot.yaml";
   ExpectConfigError([&] { LoadRobotModel(kConfigDir + "topay_mm.urdf", missing); }, missing,
-                    "cannot open file");
+                    "cannot open the robot YAML");
+}
+
+TEST_F(RobotLoaderBadInputTest, DirectoriesAndEndlessFilesAreErrors) {
+  const std::string yaml = kConfigDir + "topay_mm.yaml";
+  const std::string urdf = kConfigDir + "topay_mm.urdf";
+  ExpectConfigError([&] { LoadRobotModel(kConfigDir, yaml); }, kConfigDir, "is a directory");
+  ExpectConfigError([&] { LoadRobotModel(urdf, kConfigDir); }, kConfigDir, "is a directory");
+  ExpectConfigError([&] { LoadRobotModel("/dev/zero", yaml); }, "/dev/zero", "NUL byte");
 }
 
 TEST_F(RobotLoaderBadInputTest, MalformedUrdfXml) {

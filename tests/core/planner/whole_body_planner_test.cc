@@ -167,12 +167,38 @@ TEST_F(WholeBodyPlannerTest, BadInputAndUnreachableTargetsFailWithAReason) {
   high.translation().z() = 3.0;  // out of the arm's reach
   const WholeBodyPlanResult unreachable = planner.Plan(start, high);
   EXPECT_EQ(unreachable.status, PlanStatus::kFrontEndFailed) << unreachable.Report();
-  EXPECT_FALSE(unreachable.failure_reason.empty());
+  EXPECT_NE(unreachable.failure_reason.find("outside the room"), std::string::npos)
+      << unreachable.failure_reason;  // above the scene bounds' 1.6 m
 
   Eigen::Isometry3d inside = X_WE;
   inside.translation() << 0.0, 0.0, 0.8;  // inside the pillar
   const WholeBodyPlanResult blocked = planner.Plan(start, inside);
   EXPECT_EQ(blocked.status, PlanStatus::kFrontEndFailed) << blocked.Report();
+  std::cout << unreachable.failure_reason << "\n" << blocked.failure_reason << "\n";
+  EXPECT_NE(blocked.failure_reason.find("inside box 0 "), std::string::npos)
+      << blocked.failure_reason;
+}
+
+// A start in collision names the box and the body; a joint out of its limits names the joint.
+TEST_F(WholeBodyPlannerTest, AnInvalidStartNamesTheCause) {
+  const WholeBodyPlanner planner(kinematics_, fields_.base_field_2d, fields_.field_3d, scene_,
+                                 Options());
+  const Eigen::Isometry3d X_WE = kinematics_.EndEffectorPose(State(3.0, 0.5, 1.0));
+  const WholeBodyPlanResult in_pillar = planner.Plan(State(0.7, 0.0, 0.0), X_WE);
+  EXPECT_NE(in_pillar.status, PlanStatus::kSuccess);
+  EXPECT_NE(in_pillar.failure_reason.find("the base"), std::string::npos)
+      << in_pillar.failure_reason;
+  EXPECT_NE(in_pillar.failure_reason.find("penetrates box 0 "), std::string::npos)
+      << in_pillar.failure_reason;
+
+  WholeBodyState bent = State(-3.0, 0.0, 0.0);
+  bent.q_rad(2) = model_.joint_limits.q_max_rad(2) + 0.5;
+  const WholeBodyPlanResult out_of_limits = planner.Plan(bent, X_WE);
+  std::cout << in_pillar.failure_reason << "\n" << out_of_limits.failure_reason << "\n";
+  EXPECT_NE(out_of_limits.status, PlanStatus::kSuccess);
+  EXPECT_NE(out_of_limits.failure_reason.find("joint '" + model_.joint_names[2] + "'"),
+            std::string::npos)
+      << out_of_limits.failure_reason;
 }
 
 TEST_F(WholeBodyPlannerTest, StopBeforeTheStartCancels) {

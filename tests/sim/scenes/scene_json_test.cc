@@ -1,6 +1,8 @@
 #include "sim/scenes/scene_json.h"
 #include "tests/common/temp_path.h"
 
+#include <unistd.h>
+
 #include <cstdio>
 #include <fstream>
 #include <limits>
@@ -95,6 +97,27 @@ TEST(SceneJsonTest, MissingFile) {
   } catch (const ConfigError& error) {
     EXPECT_EQ(error.file(), path);
     EXPECT_NE(std::string(error.what()).find("cannot open"), std::string::npos);
+  }
+}
+
+TEST(SceneJsonTest, UnknownKeysNameTheKey) {
+  ExpectConfigError(R"({"boxes": [], "colour": "red"})", "colour", "unknown field");
+  ExpectConfigError(R"({"boxes": [], "bounds": {"min": [0, 0, 0], "max": [1, 1, 1], "mid": 0}})",
+                    "bounds.mid", "unknown field");
+  ExpectConfigError(OneBox(R"({"center": [0, 0, 0], "size": [1, 1, 1], "yaw": 0, "yow": 1})"),
+                    "boxes[0].yow", "unknown field");
+}
+
+TEST(SceneJsonTest, DirectoriesDevicesAndOversizedFilesAreErrors) {
+  for (const std::string& path : {::testing::TempDir(), std::string("/dev/zero")}) {
+    if (::access(path.c_str(), R_OK) != 0) continue;
+    try {
+      ReadSceneJson(path);
+      ADD_FAILURE() << "no error for " << path;
+    } catch (const ConfigError& error) {
+      EXPECT_EQ(error.file(), path);
+      EXPECT_NE(std::string(error.what()).find("scene JSON"), std::string::npos) << error.what();
+    }
   }
 }
 

@@ -100,8 +100,32 @@ TEST_F(TaskJsonErrorTest, BadFieldsNameTheField) {
               "goal_end_effector.quaternion_wxyz", "expected 4 numbers");
   ExpectError(Edit("\"base_distance_m\": ", "\"base_distance_m\": 1"), "base_distance_m",
               "disagrees");
-  ExpectError(Edit("\"start\": {", "\"start\": 5, \"unused\": {"), "start",
+  // start becomes 5; its old object becomes a first "goal", which the real one overrides.
+  ExpectError(Edit("\"start\": {", "\"start\": 5, \"goal\": {"), "start",
               "expected an object");
+}
+
+TEST_F(TaskJsonErrorTest, UnknownKeysNameTheKey) {
+  ExpectError(Edit("\"start\": {", "\"unused\": 1, \"start\": {"), "unused", "unknown field");
+  ExpectError(Edit("\"x_m\": -1.25", "\"x_m\": -1.25, \"z_m\": 0"), "start.z_m",
+              "unknown field");
+  ExpectError(Edit("\"position_m\": [", "\"frame\": \"W\", \"position_m\": ["),
+              "goal_end_effector.frame", "unknown field");
+}
+
+TEST_F(TaskJsonErrorTest, DirectoriesAndOversizedFilesAreErrors) {
+  EXPECT_THROW(ReadTaskJson(::testing::TempDir()), ConfigError);
+  const std::string path = UniqueTempPath("big.json");
+  std::ofstream(path, std::ios::binary)
+      << TaskToJson(MakeTask()) << std::string(kMaxTaskJsonBytes, ' ');
+  try {
+    ReadTaskJson(path);
+    ADD_FAILURE() << "no error";
+  } catch (const ConfigError& error) {
+    EXPECT_EQ(error.file(), path);
+    EXPECT_NE(std::string(error.what()).find("limit"), std::string::npos) << error.what();
+  }
+  std::remove(path.c_str());
 }
 
 TEST_F(TaskJsonErrorTest, NonUnitQuaternion) {
