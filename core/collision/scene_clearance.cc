@@ -10,35 +10,51 @@ namespace {
 
 // Exact minimum over boxes with AABB pruning: box i is examined only if the separation of its
 // AABB from the primitive's AABB (a lower bound of the primitive-box distance, valid when
-// positive) is below the best distance so far. `exact(i)` gives the signed distance to box i.
+// positive) is at most the best distance so far; the bucket grid visits the boxes near the
+// primitive first and stops once every other box's AABB is farther than the best. `exact(i)`
+// gives the signed distance to box i. Ties go to the lowest box index, as a scan in index
+// order would give.
 template <typename ExactDistance>
-void MinimumOverBoxes(const std::vector<Eigen::AlignedBox3d>& box_bounds,
+void MinimumOverBoxes(const BoxBucketGrid& grid,
+                      const std::vector<Eigen::AlignedBox3d>& box_bounds,
                       const Eigen::AlignedBox3d& primitive_bounds, double cutoff_m,
                       ExactDistance exact, double* min_m, int* min_box) {
   double best = cutoff_m;
   int best_box = -1;
-  for (int i = 0; i < static_cast<int>(box_bounds.size()); ++i) {
-    const double gap_squared = box_bounds[i].squaredExteriorDistance(primitive_bounds);
-    // distance >= gap > 0: skip if gap >= best.
-    if (gap_squared > 0.0 && (best <= 0.0 || gap_squared >= best * best)) continue;
-    const double distance = exact(i);
-    if (distance < best) {
-      best = distance;
-      best_box = i;
-    }
-  }
+  grid.VisitNear(
+      primitive_bounds.min().head<2>(), primitive_bounds.max().head<2>(),
+      [&best] { return best; },
+      [&](int i) {
+        const double gap_squared = box_bounds[i].squaredExteriorDistance(primitive_bounds);
+        // distance >= gap > 0: skip if gap > best.
+        if (gap_squared > 0.0 && (best <= 0.0 || gap_squared > best * best)) return;
+        const double distance = exact(i);
+        if (distance < best || (distance == best && best_box >= 0 && i < best_box)) {
+          best = distance;
+          best_box = i;
+        }
+      });
   *min_m = best_box >= 0 ? best : SceneClearance::kInfinity;
   *min_box = best_box;
+}
+
+std::vector<Eigen::AlignedBox3d> WorldBoundsOf(const Scene& scene) {
+  std::vector<Eigen::AlignedBox3d> bounds;
+  bounds.reserve(scene.boxes.size());
+  for (const OrientedBox& box : scene.boxes) bounds.push_back(box.WorldBounds());
+  return bounds;
 }
 
 }  // namespace
 
 SceneClearanceChecker::SceneClearanceChecker(const Kinematics& kinematics, const Scene& scene,
                                              const SceneClearanceOptions& options)
-    : kinematics_(kinematics), scene_(scene), options_(options), self_collision_(kinematics) {
-  box_bounds_W_.reserve(scene.boxes.size());
-  for (const OrientedBox& box : scene.boxes) box_bounds_W_.push_back(box.WorldBounds());
-}
+    : kinematics_(kinematics),
+      scene_(scene),
+      options_(options),
+      self_collision_(kinematics),
+      box_bounds_W_(WorldBoundsOf(scene)),
+      buckets_(box_bounds_W_) {}
 
 SceneClearanceWorkspace SceneClearanceChecker::MakeWorkspace() const {
   SceneClearanceWorkspace workspace;
@@ -95,9 +111,20 @@ double SceneClearanceChecker::BaseClearance(const Eigen::Vector2d& p_WB, double 
   double distance;
   int nearest;
   MinimumOverBoxes(
-      box_bounds_W_, bounds, cutoff_m,
+      buckets_, box_bounds_W_, bounds, cutoff_m,
       [&](int i) { return SignedDistanceCylinderToBox(scene_.boxes[i], cylinder); }, &distance,
       &nearest);
+  if (box != nullptr) *box = nearest;
+  return distance;
+}
+
+double SceneClearanceChecker::PointClearance(const Eigen::Vector3d& p_W, double cutoff_m,
+                                             int* box) const {
+  double distance;
+  int nearest;
+  MinimumOverBoxes(
+      buckets_, box_bounds_W_, Eigen::AlignedBox3d(p_W, p_W), cutoff_m,
+      [&](int i) { return SignedDistanceToBox(scene_.boxes[i], p_W); }, &distance, &nearest);
   if (box != nullptr) *box = nearest;
   return distance;
 }
@@ -116,7 +143,7 @@ void SceneClearanceChecker::ComputeSpheres(const KinematicsCache& cache, double 
     int box;
     // Earlier spheres' best tightens the cutoff: only a nearer box can change the minimum.
     MinimumOverBoxes(
-        box_bounds_W_, Eigen::AlignedBox3d(p_WS - extent, p_WS + extent),
+        buckets_, box_bounds_W_, Eigen::AlignedBox3d(p_WS - extent, p_WS + extent),
         std::min(cutoff_m, out->spheres_m),
         [&](int i) { return SignedDistanceSphereToBox(scene_.boxes[i], p_WS, r); }, &distance,
         &box);

@@ -6,6 +6,7 @@
 #include <Eigen/Core>
 #include <Eigen/Geometry>
 
+#include "core/geometry/box_bucket_grid.h"
 #include "core/geometry/scene.h"
 #include "core/robot/kinematics.h"
 #include "core/robot/self_collision.h"
@@ -61,8 +62,13 @@ struct SceneClearanceWorkspace {
 
 /// Exact whole-body clearance of states in a Scene: the independent ground truth (no distance
 /// fields) for task generation and trajectory validation. Each box's world AABB is computed
-/// once, and a box is examined exactly only if its AABB is nearer to the primitive (sphere or
-/// base cylinder, by its own AABB) than the best distance found so far.
+/// once and listed in a uniform xy bucket grid (BoxBucketGrid, built in the constructor in
+/// time linear in the boxes); a query visits the buckets around the primitive (sphere or base
+/// cylinder, by its own AABB) ring by ring and stops once every unvisited box's AABB is
+/// farther than the best distance found so far (or the cutoff), and a box is examined exactly
+/// only if its AABB is not farther than that. So a query's cost grows with the boxes near the
+/// robot, not with the scene's box count, and the result is the exact minimum (ties: the
+/// lowest box index).
 /// The Kinematics (and its model) and the Scene must outlive this object; the scene's boxes
 /// must not change (AABBs are cached).
 class SceneClearanceChecker {
@@ -87,6 +93,12 @@ class SceneClearanceChecker {
   /// yaw or q), and the nearest box in *box (-1 if none within the cutoff, then +infinity).
   double BaseClearance(const Eigen::Vector2d& p_WB, double cutoff_m, int* box = nullptr) const;
 
+  /// Exact signed distance (m) from the point p_W to the nearest box (negative inside one),
+  /// and that box in *box; +infinity and -1 for a scene without boxes (or none within
+  /// cutoff_m).
+  double PointClearance(const Eigen::Vector3d& p_W, double cutoff_m = SceneClearance::kInfinity,
+                        int* box = nullptr) const;
+
   /// Obstacle parts only (base and spheres), from a cache already updated for the state.
   /// Boxes farther than cutoff_m are skipped (parts with nothing nearer report +infinity).
   void ComputeObstacleParts(const KinematicsCache& cache, double cutoff_m,
@@ -101,6 +113,7 @@ class SceneClearanceChecker {
   SceneClearanceOptions options_;
   SelfCollision self_collision_;
   std::vector<Eigen::AlignedBox3d> box_bounds_W_;
+  BoxBucketGrid buckets_;  // after box_bounds_W_, from which it is built
 };
 
 }  // namespace topay

@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <cstdint>
+#include <type_traits>
 
 #include <Eigen/Core>
 #include <Eigen/Geometry>
@@ -97,5 +98,10 @@ struct GridGeometry2 {
     return {origin_W_m, origin_W_m + resolution_m * dims.cast<double>()};
   }
 };
+
+/// The grid geometry of dimension Dim (2 or 3), for code shared by the 2D and 3D grids and
+/// fields (OccupancyGrid<Dim>, SignedDistanceField<Dim>).
+template <int Dim>
+using GridGeometry = std::conditional_t<Dim == 2, GridGeometry2, GridGeometry3>;
 
 }  // namespace topay

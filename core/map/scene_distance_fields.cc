@@ -5,6 +5,7 @@
 #include <cmath>
 #include <stdexcept>
 #include <string>
+#include <utility>
 
 #include "core/map/footprint_distance_field.h"
 
@@ -63,18 +64,22 @@ SignedDistanceField2 BuildRasterisedBaseField(const Scene& scene, const GridGeom
 // The 2D field from the exact footprint distances of the band(s) (no rasterisation).
 SignedDistanceField2 BuildExactBaseField(const Scene& scene, const GridGeometry2& geometry,
                                          const SceneDistanceFieldsOptions& options,
+                                         std::stop_token stop,
                                          SceneDistanceFieldsSummary* summary) {
   const std::chrono::steady_clock::time_point phase = std::chrono::steady_clock::now();
   FootprintDistanceFieldSummary band_summary;
-  SignedDistanceField2 field = BuildFootprintDistanceField(
-      geometry, scene.boxes, options.base_band, options.base_exact_cap_m, &band_summary);
+  SignedDistanceField2 field =
+      BuildFootprintDistanceField(geometry, scene.boxes, options.base_band,
+                                  options.base_exact_cap_m, &band_summary, stop);
   summary->num_boxes_in_base_band = band_summary.num_boxes_in_band;
+  summary->stopped = summary->stopped || band_summary.stopped;
   if (options.base_upper_band) {
     field.LowerTo(BuildFootprintDistanceField(geometry, scene.boxes, *options.base_upper_band,
-                                              options.base_exact_cap_m, &band_summary),
+                                              options.base_exact_cap_m, &band_summary, stop),
                   options.base_upper_band_offset_m);
     field.set_offset_band({*options.base_upper_band, options.base_upper_band_offset_m});
     summary->num_boxes_in_upper_band = band_summary.num_boxes_in_band;
+    summary->stopped = summary->stopped || band_summary.stopped;
   }
   summary->build_2d_s = SecondsSince(phase);
   return field;
@@ -83,7 +88,8 @@ SignedDistanceField2 BuildExactBaseField(const Scene& scene, const GridGeometry2
 }  // namespace
 
 SceneDistanceFields BuildSceneDistanceFields(const Scene& scene,
-                                             const SceneDistanceFieldsOptions& options) {
+                                             const SceneDistanceFieldsOptions& options,
+                                             std::stop_token stop) {
   using Clock = std::chrono::steady_clock;
   const Clock::time_point start = Clock::now();
   ValidateBand(options.base_band, "SceneDistanceFieldsOptions: base_band");
@@ -111,6 +117,10 @@ SceneDistanceFields BuildSceneDistanceFields(const Scene& scene,
   Clock::time_point phase = Clock::now();
   OccupancyGrid3 occupancy_3d(geometry);
   for (std::size_t i = 0; i < scene.boxes.size(); ++i) {
+    if (i % 1024 == 0 && stop.stop_requested()) {
+      summary.stopped = true;
+      break;
+    }
     try {
       occupancy_3d.AddBox(scene.boxes[i]);
     } catch (const std::invalid_argument& error) {
@@ -125,7 +135,8 @@ SceneDistanceFields BuildSceneDistanceFields(const Scene& scene,
   summary.build_3d_s = SecondsSince(phase);
 
   SignedDistanceField2 field_2d = options.base_exact_cap_m > 0.0
-                                      ? BuildExactBaseField(scene, base_geometry, options, &summary)
+                                      ? BuildExactBaseField(scene, base_geometry, options, stop,
+                                                            &summary)
                                       : BuildRasterisedBaseField(scene, base_geometry, options,
                                                                  &workspace, &summary);
   summary.num_cells_3d = geometry.NumCells();

@@ -2,6 +2,7 @@
 
 #include <cstdint>
 #include <optional>
+#include <stop_token>
 
 #include <Eigen/Geometry>
 
@@ -59,6 +60,8 @@ struct SceneDistanceFieldsSummary {
   double rasterize_2d_s = 0.0;     ///< OccupancyGrid2::AddBoxInBand over all boxes.
   double build_2d_s = 0.0;         ///< SignedDistanceField2::Build.
   double total_s = 0.0;
+  /// The caller's stop ended the build early: the fields are incomplete, do not plan on them.
+  bool stopped = false;
 };
 
 /// The arm's 3D field and the base's 2D field of one scene.
@@ -72,7 +75,15 @@ struct SceneDistanceFields {
 /// over the bounds and, if it overlaps the base band, into a 2D grid, then builds both signed
 /// distance fields. Throws std::invalid_argument for bad options or a box with NaN/inf values
 /// or negative sizes (the message names the box index).
+///
+/// Cost: linear in the cells the boxes cover (rasterisation visits each box's own cells) plus
+/// the grids' sizes (the EDTs); the exact base field (base_exact_cap_m > 0) looks at the
+/// boxes near each block of cells (BuildFootprintDistanceField), not at every box within the
+/// cap. `stop` is polled every 1024 boxes while rasterising and once per row of 8-cell blocks
+/// of the exact base field (an EDT pass runs to its end: linear in the grid); when it ends the
+/// build early, summary.stopped is set.
 SceneDistanceFields BuildSceneDistanceFields(const Scene& scene,
-                                             const SceneDistanceFieldsOptions& options = {});
+                                             const SceneDistanceFieldsOptions& options = {},
+                                             std::stop_token stop = {});
 
 }  // namespace topay

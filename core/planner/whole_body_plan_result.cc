@@ -23,12 +23,29 @@ std::string_view ToString(PlanStatus status) {
   return "unknown";
 }
 
+std::string_view ToString(PlanStage stage) {
+  switch (stage) {
+    case PlanStage::kNone: return "none";
+    case PlanStage::kStartCheck: return "start check";
+    case PlanStage::kMapBuilding: return "map building";
+    case PlanStage::kFrontEnd: return "front end";
+    case PlanStage::kOptimization: return "optimization";
+    case PlanStage::kValidation: return "validation";
+  }
+  return "unknown";
+}
+
 std::string WholeBodyPlanResult::Report() const {
   std::ostringstream out;
   out << std::fixed << std::setprecision(1);
   out << "plan: " << ToString(status);
+  if (stopped_stage != PlanStage::kNone) out << " (during " << ToString(stopped_stage) << ")";
   if (!failure_reason.empty()) out << " -- " << failure_reason;
   out << "\n";
+  if (timings.map_ms > 0.0 || timings.start_check_ms > 0.0) {
+    out << "time: start check " << timings.start_check_ms << " ms, map " << timings.map_ms
+        << " ms (inside the total)\n";
+  }
   out << "time: search " << timings.search_ms << " ms, sampling " << timings.sampling_ms
       << " ms (front end " << timings.front_end_ms << " ms), optimization "
       << timings.optimization_ms << " ms, wait " << timings.wait_ms << " ms, total "

@@ -23,6 +23,18 @@ enum class PlanStatus {
 };
 std::string_view ToString(PlanStatus status);
 
+/// The stages of one plan, in order (the first two only in PlanInScene, which builds the
+/// fields itself).
+enum class PlanStage {
+  kNone,          ///< Not stopped.
+  kStartCheck,    ///< Exact start and target check against the scene's boxes.
+  kMapBuilding,   ///< The distance fields (BuildSceneDistanceFields).
+  kFrontEnd,      ///< Goal candidates, base paths, arm RRT* (core/planning/front_end.h).
+  kOptimization,  ///< The candidates' trajectory optimizations.
+  kValidation,    ///< The independent validator on an optimizer success.
+};
+std::string_view ToString(PlanStage stage);
+
 /// One front-end path through the back end.
 struct CandidateReport {
   int path_index = -1;   ///< Into WholeBodyPlanResult::front_end.paths.
@@ -44,6 +56,10 @@ struct PlanTimings {
                                  ///< success (or to the end of the stage if none).
   double wait_ms = 0.0;          ///< From the first validated success to the stage's end.
   double total_ms = 0.0;
+  /// PlanInScene only (0 otherwise): the exact start and target check and the field build,
+  /// both inside total_ms and the time limit.
+  double start_check_ms = 0.0;
+  double map_ms = 0.0;
 };
 
 /// What WholeBodyPlanner::Plan returns.
@@ -59,6 +75,9 @@ struct WholeBodyPlanResult {
   /// too): what the validator checked.
   std::optional<SampledTrajectory> sampled;
   PlanTimings timings;
+  /// For kTimeLimit and kCancelled: the stage the stop ended (the time limit bounds every
+  /// stage: each polls the plan's stop and returns within a short step of it).
+  PlanStage stopped_stage = PlanStage::kNone;
 
   bool success() const { return status == PlanStatus::kSuccess; }
   const CandidateReport* chosen_candidate() const {

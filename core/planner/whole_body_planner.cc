@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <atomic>
 #include <chrono>
+#include <cstdio>
 #include <exception>
 #include <limits>
 #include <string>
@@ -89,6 +90,13 @@ std::string SummariseCandidates(const std::vector<CandidateReport>& candidates) 
 
 }  // namespace
 
+std::string TimeLimitPrefix(double time_limit_s, PlanStage stage) {
+  char text[96];
+  std::snprintf(text, sizeof(text), "time limit %.3f s reached during %s: ", time_limit_s,
+                std::string(ToString(stage)).c_str());
+  return text;
+}
+
 WholeBodyPlanner::WholeBodyPlanner(const Kinematics& kinematics,
                                    const SignedDistanceField2& base_field,
                                    const SignedDistanceField3& arm_field, const Scene& scene,
@@ -103,6 +111,14 @@ WholeBodyPlanResult WholeBodyPlanner::Plan(const WholeBodyState& start,
                                            const Eigen::Isometry3d& X_WE_goal,
                                            const std::optional<WholeBodyState>& hint,
                                            std::stop_token stop) const {
+  return PlanBy(Clock::time_point::max(), start, X_WE_goal, hint, stop);
+}
+
+WholeBodyPlanResult WholeBodyPlanner::PlanBy(Clock::time_point deadline,
+                                             const WholeBodyState& start,
+                                             const Eigen::Isometry3d& X_WE_goal,
+                                             const std::optional<WholeBodyState>& hint,
+                                             std::stop_token stop) const {
   const Clock::time_point t0 = Clock::now();
   WholeBodyPlanResult result;
   // One stop for the whole plan: the caller's, or the time limit.
@@ -110,7 +126,9 @@ WholeBodyPlanResult WholeBodyPlanner::Plan(const WholeBodyState& start,
   const std::stop_callback forward(stop, [&plan_stop] { plan_stop.request_stop(); });
   std::atomic<bool> time_limit_hit{false};
   {
-    const StopDeadline deadline(&plan_stop, After(t0, options_.time_limit_s));
+    const Clock::time_point end = std::min(deadline, After(t0, options_.time_limit_s));
+    if (Clock::now() >= end) plan_stop.request_stop();  // already due: no race with the watcher
+    const StopDeadline limit(&plan_stop, end);
     result.front_end = front_end_.Plan(start, X_WE_goal, hint, plan_stop.get_token());
     const FrontEndStats& stats = result.front_end.stats;
     result.timings.search_ms = stats.goal_ms + stats.topology_ms;
@@ -125,13 +143,18 @@ WholeBodyPlanResult WholeBodyPlanner::Plan(const WholeBodyState& start,
 
   if (!result.front_end.success()) {
     result.status = FromFrontEnd(result.front_end.status);
-    if (result.status == PlanStatus::kCancelled && time_limit_hit) {
-      result.status = PlanStatus::kTimeLimit;
+    if (result.status == PlanStatus::kCancelled) {
+      result.stopped_stage = PlanStage::kFrontEnd;
+      if (time_limit_hit) result.status = PlanStatus::kTimeLimit;
     }
     result.failure_reason = "front end: " + result.front_end.failure_reason;
     if (const auto cause = FrontEndFailureCause(result.front_end.status, front_end_.validity(),
                                                 validator_.scene(), start, X_WE_goal)) {
       result.failure_reason += " (" + *cause + ")";
+    }
+    if (result.status == PlanStatus::kTimeLimit) {
+      result.failure_reason = TimeLimitPrefix(options_.time_limit_s, PlanStage::kFrontEnd) +
+                              result.failure_reason;
     }
     return result;
   }
@@ -147,21 +170,34 @@ WholeBodyPlanResult WholeBodyPlanner::Plan(const WholeBodyState& start,
   result.status = stop.stop_requested() ? PlanStatus::kCancelled
                   : time_limit_hit      ? PlanStatus::kTimeLimit
                                         : PlanStatus::kOptimizationFailed;
+  if (result.status != PlanStatus::kOptimizationFailed) {
+    const bool in_validation =
+        std::any_of(result.candidates.begin(), result.candidates.end(),
+                    [](const CandidateReport& c) { return c.validation && c.validation->stopped; });
+    result.stopped_stage = in_validation ? PlanStage::kValidation : PlanStage::kOptimization;
+  }
   result.failure_reason = "no validated trajectory from " +
                           std::to_string(result.candidates.size()) + " candidate paths: " +
                           SummariseCandidates(result.candidates);
+  if (result.status == PlanStatus::kTimeLimit) {
+    result.failure_reason =
+        TimeLimitPrefix(options_.time_limit_s, result.stopped_stage) + result.failure_reason;
+  }
   return result;
 }
 
 void WholeBodyPlanner::RunCandidate(const TrajectoryProblem& problem, const WholeBodyPath& path,
-                                    std::stop_token stop, CandidateReport* report) const {
+                                    std::stop_token stop, std::stop_token plan_stop,
+                                    CandidateReport* report) const {
   const Clock::time_point t = Clock::now();
   report->started = true;
   report->optimization = optimizer_.Optimize(problem, path, stop);
   if (report->optimization.success()) {
     try {  // either parameterisation (arc length-yaw, or the flatness baseline)
+      // The plan's stop (time limit, caller), not the early-termination window: a
+      // validation that has begun finishes unless the plan must end.
       report->validation = validator_.Validate(report->optimization.Sampled(), problem.start,
-                                               problem.X_WE_goal);
+                                               problem.X_WE_goal, plan_stop);
     } catch (const std::exception& e) {  // a malformed summary counts as a failure
       ValidationReport failed;
       failed.ok = false;
@@ -194,7 +230,7 @@ void WholeBodyPlanner::OptimizeCandidates(const WholeBodyState& start,
       const int i = next.fetch_add(1);
       if (i >= n) return;
       CandidateReport& report = result->candidates[i];
-      RunCandidate(problem, paths[i].path, stage_stop.get_token(), &report);
+      RunCandidate(problem, paths[i].path, stage_stop.get_token(), plan_stop, &report);
       if (report.validated()) {
         const Clock::time_point now = Clock::now();
         std::int64_t expected = std::numeric_limits<std::int64_t>::max();

@@ -1,7 +1,9 @@
 #pragma once
 
+#include <chrono>
 #include <optional>
 #include <stop_token>
+#include <string>
 
 #include <Eigen/Geometry>
 
@@ -42,6 +44,17 @@ class WholeBodyPlanner {
                            const std::optional<WholeBodyState>& hint = std::nullopt,
                            std::stop_token stop = {}) const;
 
+  /// Plan with the time limit ending at min(now + options().time_limit_s, deadline): for a
+  /// caller whose own work before the plan counts against the limit (PlanInScene).
+  /// The limit bounds every stage: the front end and the optimizers poll the plan's stop
+  /// every iteration, the validator before every sample (a validation cut short is a
+  /// failure). A plan the limit ends has status kTimeLimit and says in which stage
+  /// (stopped_stage, and the reason's "time limit ... reached during ...").
+  WholeBodyPlanResult PlanBy(std::chrono::steady_clock::time_point deadline,
+                             const WholeBodyState& start, const Eigen::Isometry3d& X_WE_goal,
+                             const std::optional<WholeBodyState>& hint = std::nullopt,
+                             std::stop_token stop = {}) const;
+
   const WholeBodyPlannerOptions& options() const { return options_; }
   const BaseLimits& base_limits() const { return base_limits_; }
   const FrontEnd& front_end() const { return front_end_; }
@@ -52,7 +65,8 @@ class WholeBodyPlanner {
   void OptimizeCandidates(const WholeBodyState& start, const Eigen::Isometry3d& X_WE_goal,
                           std::stop_token plan_stop, WholeBodyPlanResult* result) const;
   void RunCandidate(const TrajectoryProblem& problem, const WholeBodyPath& path,
-                    std::stop_token stop, CandidateReport* report) const;
+                    std::stop_token stop, std::stop_token plan_stop,
+                    CandidateReport* report) const;
 
   WholeBodyPlannerOptions options_;
   BaseLimits base_limits_;
@@ -60,5 +74,8 @@ class WholeBodyPlanner {
   TrajectoryOptimizer optimizer_;
   TrajectoryValidator validator_;
 };
+
+/// "time limit 3.000 s reached during <stage>: ", the prefix of a kTimeLimit plan's reason.
+std::string TimeLimitPrefix(double time_limit_s, PlanStage stage);
 
 }  // namespace topay

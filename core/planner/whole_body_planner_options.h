@@ -36,8 +36,10 @@ struct WholeBodyPlannerOptions {
   /// sample chunks (TrajectoryObjectiveOptions::sample_chunks). 0: the hardware's thread
   /// count.
   int num_threads = 0;
-  /// Bound (s) on one Plan call, front end included: whatever is still running then is
-  /// cancelled, and the plan fails unless a validated trajectory exists.
+  /// Bound (s) on one Plan call, every stage included (front end, every optimization, the
+  /// validation; in PlanInScene also the start check and the map build): whatever is still
+  /// running then is cancelled cooperatively, and the plan fails with status kTimeLimit and
+  /// the stage (WholeBodyPlanResult::stopped_stage) unless a validated trajectory exists.
   double time_limit_s = 3.0;
   /// At most this many front-end paths are optimized (shortest duration first).
   int max_candidates = 8;

@@ -28,8 +28,10 @@ namespace topay {
 ///    its shoulder. The field declares that band (offset_band), so the rigid spheres are
 ///    checked by it exactly (at the 2D margin) and not again on the 3D field at its larger
 ///    margin (SpheresToCheckOnArmField).
-/// Map build time at these settings: see docs/benchmarks.md (it is not part of the planning
-/// time, as in the paper).
+/// Map build time at these settings: see docs/benchmarks.md ("Large scenes"); it grows
+/// linearly with the boxes (BuildSceneDistanceFields). It is not part of the planning time, as
+/// in the paper, except in PlanInScene (core/planner/plan_in_scene.h), whose time limit covers
+/// it.
 SceneDistanceFieldsOptions PlannerFieldOptions(const Kinematics& kinematics);
 
 }  // namespace topay

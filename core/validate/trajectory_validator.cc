@@ -130,7 +130,8 @@ TrajectoryValidator::TrajectoryValidator(const Kinematics& kinematics, const Sce
 
 ValidationReport TrajectoryValidator::Validate(const SampledTrajectory& trajectory,
                                                const WholeBodyState& start,
-                                               const Eigen::Isometry3d& X_WE_goal) const {
+                                               const Eigen::Isometry3d& X_WE_goal,
+                                               std::stop_token stop) const {
   ValidationReport report;
   report.duration_s = trajectory.duration_s;
   ValidationRun run(*this, start, X_WE_goal, &report);
@@ -158,6 +159,14 @@ ValidationReport TrajectoryValidator::Validate(const SampledTrajectory& trajecto
   for (int k = 0; k <= num_grid; ++k) {
     const bool is_last = k == num_grid;
     const double t_s = is_last ? trajectory.duration_s : k * options_.sample_period_s;
+    if (stop.stop_requested()) {
+      report.stopped = true;
+      std::ostringstream message;
+      message << "t = " << t_s << " s: stopped (time limit or cancel) after " << k << " of "
+              << num_grid + 1 << " samples: the trajectory is not validated";
+      run.Fail(ValidationCheck::kStopped, t_s, -1, k, num_grid + 1, message.str());
+      break;
+    }
     ++report.num_samples;
     const bool failed = !Sample(sampler, t_s, num_joints, &run, &sample) ||
                         run.CheckSample(t_s, sample, k == 0, is_last);

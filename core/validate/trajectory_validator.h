@@ -1,5 +1,7 @@
 #pragma once
 
+#include <stop_token>
+
 #include <Eigen/Geometry>
 
 #include "core/collision/scene_clearance.h"
@@ -73,8 +75,13 @@ class TrajectoryValidator {
   /// Validates `trajectory` for a task from `start` to the end-effector goal X_WE_goal.
   /// Never throws for bad input (wrong sizes, NaN, a throwing sampler): it is a failure in
   /// the report. Thread-safe: each call has its own workspace and sampler.
+  /// `stop` (e.g. the plan's time limit) is polled before every sample; if it ends the check
+  /// early, the report says so (stopped, and a kStopped failure unless an earlier sample
+  /// failed) and is never ok: a trajectory checked in part is not validated. A sample costs
+  /// the exact clearance queries (SceneClearanceChecker: the boxes near the robot), so the
+  /// check ends within about one sample of the stop.
   ValidationReport Validate(const SampledTrajectory& trajectory, const WholeBodyState& start,
-                            const Eigen::Isometry3d& X_WE_goal) const;
+                            const Eigen::Isometry3d& X_WE_goal, std::stop_token stop = {}) const;
 
   const TrajectoryValidatorOptions& options() const { return options_; }
   const BaseLimits& base_limits() const { return base_limits_; }

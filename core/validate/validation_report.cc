@@ -44,6 +44,7 @@ std::string_view ToString(ValidationCheck check) {
     case ValidationCheck::kEndNotAtRest: return "end not at rest";
     case ValidationCheck::kEndEffectorPosition: return "end-effector position";
     case ValidationCheck::kEndEffectorOrientation: return "end-effector orientation";
+    case ValidationCheck::kStopped: return "stopped";
   }
   return "unknown";
 }

@@ -21,6 +21,8 @@ enum class ValidationCheck {
   kEndNotAtRest,            ///< v, omega or a joint velocity not ~0 at the end (eqs. (18)-(20)).
   kEndEffectorPosition,     ///< End-effector position error at the end (eq. (7)).
   kEndEffectorOrientation,  ///< End-effector orientation error at the end (eq. (7)).
+  kStopped,                 ///< The caller's stop (the plan's time limit) ended the check
+                            ///< before the last sample: never a success.
 };
 std::string_view ToString(ValidationCheck check);
 
@@ -82,6 +84,8 @@ struct ValidationReport {
   ValidationFailure first_failure;  ///< check kNone if ok.
   int num_failed_samples = 0;       ///< Samples with at least one failing check.
   int num_samples = 0;              ///< Samples evaluated (t = 0, period, ..., the end).
+  /// The caller's stop ended the check early (then ok is false, whatever was checked).
+  bool stopped = false;
   double duration_s = 0.0;
 
   ClearanceRecord min_obstacle;  ///< Base cylinder and every sphere vs the scene's boxes.

@@ -99,6 +99,50 @@ TEST_F(SceneClearanceTest, MatchesNaiveMinimumOverAllBoxes) {
   EXPECT_GT(colliding, 10);  // the scene is dense enough to exercise penetration
 }
 
+// The broad phase (bucket grid) keeps the exact answer on a dense scene of many small boxes,
+// and with a cutoff; the point query too.
+TEST_F(SceneClearanceTest, MatchesNaiveMinimumOnADenseSceneOfSmallBoxes) {
+  Rng rng(23);
+  Scene scene;
+  for (int i = 0; i < 20000; ++i) {
+    const Eigen::Vector3d size(rng.Uniform(0.02, 0.1), rng.Uniform(0.02, 0.1),
+                               rng.Uniform(0.02, 1.5));
+    scene.boxes.push_back(MakeBox({rng.Uniform(-6, 6), rng.Uniform(-6, 6),
+                                   rng.Uniform(0.0, 1.0) + 0.5 * size.z()},
+                                  size, rng.Uniform(-3.2, 3.2)));
+  }
+  const SceneClearanceChecker checker(kinematics_, scene);
+  SceneClearanceWorkspace workspace = checker.MakeWorkspace();
+  for (int trial = 0; trial < 40; ++trial) {
+    const WholeBodyState state = testing::RandomState(model_, &rng);
+    const SceneClearance clearance = checker.Compute(state, &workspace);
+    const NaiveClearance naive = Naive(model_, workspace.cache, scene);
+    EXPECT_EQ(clearance.base_m, naive.base_m);
+    EXPECT_EQ(clearance.base_box, naive.base_box);
+    EXPECT_EQ(clearance.spheres_m, naive.spheres_m);
+    EXPECT_EQ(clearance.sphere_box, naive.sphere_box);
+    // With a cutoff: the same where the true value is below it, else nothing.
+    SceneClearance cut;
+    checker.ComputeObstacleParts(workspace.cache, 0.05, &cut);
+    EXPECT_EQ(cut.base_m, naive.base_m < 0.05 ? naive.base_m : kInf);
+    EXPECT_EQ(cut.spheres_m, naive.spheres_m < 0.05 ? naive.spheres_m : kInf);
+
+    const Eigen::Vector3d p(rng.Uniform(-7, 7), rng.Uniform(-7, 7), rng.Uniform(0, 2));
+    double best = kInf;
+    int best_box = -1;
+    for (int b = 0; b < static_cast<int>(scene.boxes.size()); ++b) {
+      const double d = SignedDistanceToBox(scene.boxes[b], p);
+      if (d < best) {
+        best = d;
+        best_box = b;
+      }
+    }
+    int box = -2;
+    EXPECT_EQ(checker.PointClearance(p, kInf, &box), best);
+    EXPECT_EQ(box, best_box);
+  }
+}
+
 TEST_F(SceneClearanceTest, SelfPartsMatchSelfCollision) {
   Rng rng(22);
   const Scene scene;

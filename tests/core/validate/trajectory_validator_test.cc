@@ -5,6 +5,7 @@
 #include <memory>
 #include <numbers>
 #include <stdexcept>
+#include <stop_token>
 #include <string>
 #include <thread>
 #include <vector>
@@ -590,6 +591,38 @@ TEST_F(TrajectoryValidatorTest, ConstructorRejectsBadOptionsAndLimitsByName) {
   } catch (const std::invalid_argument& error) {
     EXPECT_NE(std::string(error.what()).find("omega_max_radps"), std::string::npos);
   }
+}
+
+// A stop (the plan's time limit) during the check ends it at the next sample, and a
+// trajectory checked in part is never validated, even if every checked sample passed.
+TEST_F(TrajectoryValidatorTest, AStopEndsTheCheckAndIsAFailure) {
+  const RestToRest motion = SlowDrive();
+  testing::UpdateRestToRest(motion, &trajectory_);
+  const TrajectoryValidator validator(kinematics_, Scene{}, model_.base_limits);
+  const SampledTrajectory full = SampleArcYaw(trajectory_);
+  std::stop_source stop;
+  SampledTrajectory stopping = full;
+  stopping.make_sampler = [&full, &stop] {
+    auto calls = std::make_shared<int>(0);
+    TrajectorySampler inner = full.make_sampler();
+    return TrajectorySampler([inner, calls, &stop](double t_s, TrajectorySample* sample) {
+      if (++*calls == 100) stop.request_stop();  // during the 100th of 801 samples
+      inner(t_s, sample);
+    });
+  };
+  const ValidationReport report =
+      validator.Validate(stopping, StartOf(motion), EndPose(), stop.get_token());
+  EXPECT_FALSE(report.ok) << report.Report();
+  EXPECT_TRUE(report.stopped);
+  EXPECT_EQ(report.num_samples, 100);
+  EXPECT_EQ(report.first_failure.check, ValidationCheck::kStopped);
+  EXPECT_NE(report.first_failure.message.find("not validated"), std::string::npos)
+      << report.first_failure.message;
+  // The same trajectory without the stop passes.
+  const ValidationReport whole = validator.Validate(full, StartOf(motion), EndPose());
+  EXPECT_TRUE(whole.ok) << whole.Report();
+  EXPECT_FALSE(whole.stopped);
+  EXPECT_EQ(whole.num_samples, 801);
 }
 
 }  // namespace

@@ -10,7 +10,7 @@ namespace {
 
 TEST(ValidationReportTest, EveryCheckAndLimitHasItsOwnName) {
   std::set<std::string> names;
-  for (int c = 0; c <= static_cast<int>(ValidationCheck::kEndEffectorOrientation); ++c) {
+  for (int c = 0; c <= static_cast<int>(ValidationCheck::kStopped); ++c) {
     const std::string name(ToString(static_cast<ValidationCheck>(c)));
     EXPECT_NE(name, "unknown");
     EXPECT_TRUE(names.insert(name).second) << name;
