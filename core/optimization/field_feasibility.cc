@@ -101,7 +101,7 @@ FieldFeasibilityReport CheckFeasibilityOnFields(const ArcYawTrajectory& trajecto
       options.arm_field_margin_m.value_or(std::sqrt(3.0) * arm_field.geometry().resolution_m);
   FieldFeasibilityReport report;
   Checker check(&report);
-  ArcYawPoint point = trajectory.MakePoint();
+  TrajectorySample point = trajectory.MakePoint();
   KinematicsCache cache = kinematics.MakeCache();
   const double duration = trajectory.duration_s();
   const int steps = static_cast<int>(std::ceil(duration / options.sample_period_s));

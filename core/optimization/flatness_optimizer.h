@@ -14,7 +14,7 @@
 #include "core/optimization/warm_start.h"
 #include "core/planning/whole_body_path.h"
 #include "core/robot/kinematics.h"
-#include "core/validate/trajectory_sample.h"
+#include "core/trajectory/trajectory_sample.h"
 
 namespace topay {
 

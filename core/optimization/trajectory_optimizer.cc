@@ -11,7 +11,7 @@
 #include <vector>
 
 #include "core/optimization/flatness_optimizer.h"
-#include "core/validate/arc_yaw_sampling.h"
+#include "core/trajectory/arc_yaw_sampling.h"
 
 namespace topay {
 namespace {

@@ -19,7 +19,7 @@
 #include "core/robot/robot_model.h"
 #include "core/robot/whole_body_state.h"
 #include "core/trajectory/arc_yaw_trajectory.h"
-#include "core/validate/trajectory_sample.h"
+#include "core/trajectory/trajectory_sample.h"
 
 namespace topay {
 

@@ -8,7 +8,7 @@
 #include "core/optimization/trajectory_optimizer.h"
 #include "core/planning/front_end_result.h"
 #include "core/trajectory/arc_yaw_trajectory.h"
-#include "core/validate/trajectory_sample.h"
+#include "core/trajectory/trajectory_sample.h"
 #include "core/validate/validation_report.h"
 
 namespace topay {

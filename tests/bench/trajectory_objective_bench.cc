@@ -36,7 +36,7 @@
 #include "core/planning/front_end.h"
 #include "core/planning/planner_fields.h"
 #include "core/robot/kinematics.h"
-#include "core/validate/arc_yaw_sampling.h"
+#include "core/trajectory/arc_yaw_sampling.h"
 #include "core/validate/trajectory_validator.h"
 #include "sim/scenes/task_generator.h"
 

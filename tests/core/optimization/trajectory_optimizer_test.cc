@@ -15,7 +15,7 @@
 
 #include "core/common/angles.h"
 #include "core/common/random.h"
-#include "core/validate/arc_yaw_sampling.h"
+#include "core/trajectory/arc_yaw_sampling.h"
 #include "core/validate/trajectory_validator.h"
 #include "tests/core/optimization/optimization_test_world.h"
 
@@ -95,7 +95,7 @@ TEST_F(TrajectoryOptimizerTest, TurnInPlaceSucceeds) {
   PrintCheck("turn in place", summary, check);
   EXPECT_TRUE(check.Passes()) << summary.Report();
   EXPECT_TRUE(Validate(trajectory, *world_, problem).ok);
-  ArcYawPoint point = trajectory.MakePoint();
+  TrajectorySample point = trajectory.MakePoint();
   double max_offset_m = 0.0;
   for (double t = 0.0; t <= trajectory.duration_s(); t += 0.01) {
     trajectory.Evaluate(t, &point);
@@ -122,7 +122,7 @@ TEST_F(TrajectoryOptimizerTest, TurnInPlaceTaskSucceedsWithTheRobotsLimits) {
                                                   problem.X_WE_goal);
   EXPECT_TRUE(check.Passes()) << summary.Report();
   EXPECT_TRUE(Validate(trajectory, *world_, problem).ok);
-  ArcYawPoint point = trajectory.MakePoint();
+  TrajectorySample point = trajectory.MakePoint();
   double max_offset_m = 0.0;
   for (double t = 0.0; t <= trajectory.duration_s(); t += 0.01) {
     trajectory.Evaluate(t, &point);
@@ -265,7 +265,7 @@ TEST_F(TrajectoryOptimizerTest, SummaryRebuildsTheOptimizedTrajectory) {
   ASSERT_TRUE(summary.success()) << summary.Report();
   const ArcYawTrajectory trajectory = summary.MakeTrajectory();
   EXPECT_NEAR(trajectory.duration_s(), summary.duration_s, 1e-12);
-  ArcYawPoint point = trajectory.MakePoint();
+  TrajectorySample point = trajectory.MakePoint();
   KinematicsCache cache = world_->kinematics->MakeCache();
   const Eigen::Isometry3d& X_WE =
       trajectory.EndEffectorPose(trajectory.duration_s(), *world_->kinematics, &cache, &point);

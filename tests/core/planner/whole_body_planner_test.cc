@@ -13,7 +13,7 @@
 #include "core/map/scene_distance_fields.h"
 #include "core/planning/planner_fields.h"
 #include "core/robot/kinematics.h"
-#include "core/validate/arc_yaw_sampling.h"
+#include "core/trajectory/arc_yaw_sampling.h"
 #include "tests/common/make_box.h"
 
 namespace topay {
