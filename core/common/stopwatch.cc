@@ -6,11 +6,14 @@ namespace topay {
 
 Stopwatch::Clock::time_point DeadlineAfter(Stopwatch::Clock::time_point from, double seconds) {
   using Clock = Stopwatch::Clock;
-  const double limit_s = std::chrono::duration<double>(Clock::time_point::max() - from).count();
+  using Seconds = std::chrono::duration<double>;
+  // In double, so that neither difference can overflow the clock's integer ticks.
+  const double from_s = Seconds(from.time_since_epoch()).count();
+  const double limit_s = Seconds(Clock::time_point::max().time_since_epoch()).count() - from_s;
   if (!(seconds < limit_s)) return Clock::time_point::max();
-  const double back_s = std::chrono::duration<double>(from - Clock::time_point::min()).count();
+  const double back_s = from_s - Seconds(Clock::time_point::min().time_since_epoch()).count();
   if (!(seconds > -back_s)) return Clock::time_point::min();
-  return from + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(seconds));
+  return from + std::chrono::duration_cast<Clock::duration>(Seconds(seconds));
 }
 
 double CpuStopwatch::NowS() {
