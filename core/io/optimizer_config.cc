@@ -3,13 +3,13 @@
 namespace topay {
 namespace {
 
-void ReadAlm(YamlSection section, TrajectoryOptimizerOptions* o) {
-  section.Read("rho_initial", &o->alm_rho_initial);
-  section.Read("rho_growth", &o->alm_rho_growth);
-  section.Read("rho_max", &o->alm_rho_max);
-  section.Read("max_outer_iterations", &o->alm_max_outer_iterations);
-  section.Read("position_tolerance_m", &o->alm_position_tolerance_m);
-  section.Read("orientation_tolerance_rad", &o->alm_orientation_tolerance_rad);
+void ReadAlm(YamlSection section, AugmentedLagrangianOptions* o) {
+  section.Read("rho_initial", &o->rho_initial);
+  section.Read("rho_growth", &o->rho_growth);
+  section.Read("rho_max", &o->rho_max);
+  section.Read("max_outer_iterations", &o->max_outer_iterations);
+  section.Read("position_tolerance_m", &o->position_tolerance_m);
+  section.Read("orientation_tolerance_rad", &o->orientation_tolerance_rad);
   section.Finish();
 }
 
@@ -87,7 +87,7 @@ void ReadOptimizerOptions(YamlSection section, TrajectoryOptimizerOptions* o) {
   section.Read("rate_escalation_step", &o->rate_escalation_step);
   section.Read("ee_position_tolerance_m", &o->ee_position_tolerance_m);
   section.Read("ee_orientation_tolerance_rad", &o->ee_orientation_tolerance_rad);
-  ReadAlm(section.Section("alm"), o);
+  ReadAlm(section.Section("alm"), &o->alm);
   ReadWarmStart(section.Section("warm_start"), &o->warm_start);
   ReadLbfgs(section.Section("lbfgs"), &o->lbfgs);
   ReadObjective(section.Section("objective"), &o->objective);

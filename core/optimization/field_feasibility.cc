@@ -50,6 +50,72 @@ class Checker {
   FieldFeasibilityReport* report_;
 };
 
+/// The margins the fields' inexactness asks for (m).
+struct FieldMargins {
+  double base_m = 0.0;
+  double arm_m = 0.0;
+};
+
+/// Rates (eqs. (9)-(12)) and joint positions of one sample.
+void CheckRatesAndJoints(const TrajectorySample& point, const RobotModel& model,
+                         const BaseLimits& limits, const FieldFeasibilityOptions& options,
+                         Checker* check, FieldFeasibilityReport* report) {
+  const JointLimits& joints = model.joint_limits;
+  const double t = point.t_s;
+  const double w = point.omega_radps / limits.omega_max_radps;
+  const double v = point.v_mps / limits.v_max_mps;
+  check->Rate(std::max(std::abs(w + v), std::abs(w - v)), "v-omega", options.rate_tolerance, t);
+  check->Rate(std::abs(point.a_mps2) / limits.a_max_mps2, "a", options.rate_tolerance, t);
+  check->Rate(std::abs(point.beta_radps2) / limits.beta_max_radps2, "beta",
+              options.rate_tolerance, t);
+  for (int k = 0; k < model.num_joints(); ++k) {
+    const std::string joint = std::to_string(k + 1);
+    check->Rate(std::abs(point.qd_radps(k)) / joints.qd_max_radps(k), "qd" + joint,
+                options.rate_tolerance, t);
+    check->Rate(std::abs(point.qdd_radps2(k)) / joints.qdd_max_radps2(k), "qdd" + joint,
+                options.rate_tolerance, t);
+    const double excess = std::max(point.state.q_rad(k) - joints.q_max_rad(k),
+                                   joints.q_min_rad(k) - point.state.q_rad(k));
+    report->max_joint_excess_rad = std::max(report->max_joint_excess_rad, excess);
+    if (excess > options.joint_position_tolerance_rad) {
+      check->Violation(Describe("joint", k + 1, excess, "rad beyond its limit", t));
+    }
+  }
+}
+
+/// Clearances (eqs. (13)-(14)) of one sample: base on the 2D field, arm spheres on the 3D
+/// field, chassis and self-collision pairs; `cache` is updated for the sample's state.
+void CheckClearances(const TrajectorySample& point, const KinematicsCache& cache,
+                     const RobotModel& model, const SignedDistanceField2& base_field,
+                     const SignedDistanceField3& arm_field,
+                     const std::vector<int>& arm_field_spheres, const FieldMargins& margins,
+                     const FieldFeasibilityOptions& options, Checker* check,
+                     FieldFeasibilityReport* report) {
+  const double t = point.t_s;
+  const double base = base_field.Distance(Eigen::Vector2d(point.state.x_m, point.state.y_m)) -
+                      model.base_cylinder.radius_m - margins.base_m;
+  check->Clearance(base, &report->min_base_clearance_m, "base clearance", -1, t);
+  for (const int s : arm_field_spheres) {
+    const double arm =
+        arm_field.Distance(cache.p_WS[s]) - model.spheres[s].radius_m - margins.arm_m;
+    check->Clearance(arm, &report->min_arm_clearance_m, "arm sphere clearance, sphere", s, t);
+  }
+  const int num_spheres = static_cast<int>(model.spheres.size());
+  for (int s = 0; s < num_spheres; ++s) {
+    const double chassis = cache.p_WS[s].z() - model.spheres[s].radius_m -
+                           model.base_cylinder.height_m - options.chassis_margin_m;
+    check->Clearance(chassis, &report->min_chassis_clearance_m, "chassis clearance, sphere", s,
+                     t);
+  }
+  for (std::size_t k = 0; k < model.self_collision_pairs.size(); ++k) {
+    const auto [a, b] = model.self_collision_pairs[k];
+    const double self = (cache.p_WS[a] - cache.p_WS[b]).norm() - model.spheres[a].radius_m -
+                        model.spheres[b].radius_m - options.self_margin_m;
+    check->Clearance(self, &report->min_self_clearance_m, "self-collision pair",
+                     static_cast<int>(k), t);
+  }
+}
+
 }  // namespace
 
 std::string DescribeViolations(const FieldFeasibilityReport& report,
@@ -93,67 +159,25 @@ FieldFeasibilityReport CheckFeasibilityOnFields(const ArcYawTrajectory& trajecto
     throw std::invalid_argument(
         "CheckFeasibilityOnFields: sample_period_s must be > 0 and tolerances >= 0");
   }
-  const RobotModel& model = kinematics.model();
-  const JointLimits& joints = model.joint_limits;
-  const double base_margin =
-      options.base_field_margin_m.value_or(base_field.exactness_margin_m());
-  const double arm_margin =
-      options.arm_field_margin_m.value_or(std::sqrt(3.0) * arm_field.geometry().resolution_m);
+  const FieldMargins margins{
+      options.base_field_margin_m.value_or(base_field.exactness_margin_m()),
+      options.arm_field_margin_m.value_or(std::sqrt(3.0) * arm_field.geometry().resolution_m)};
   FieldFeasibilityReport report;
   Checker check(&report);
-  ArcYawPoint point = trajectory.MakePoint();
+  TrajectorySample point = trajectory.MakePoint();
   KinematicsCache cache = kinematics.MakeCache();
   const double duration = trajectory.duration_s();
   const int steps = static_cast<int>(std::ceil(duration / options.sample_period_s));
-  const int num_spheres = static_cast<int>(model.spheres.size());
   // The rigid spheres the base field covers pass with the base's check below.
   const std::vector<int> arm_field_spheres = SpheresToCheckOnArmField(kinematics, base_field);
   for (int i = 0; i <= steps; ++i) {
     const double t = std::min(i * options.sample_period_s, duration);
     trajectory.Evaluate(t, &point);
     ++report.num_samples;
-    // Rates, eqs. (9)-(12).
-    const double w = point.omega_radps / limits.omega_max_radps;
-    const double v = point.v_mps / limits.v_max_mps;
-    check.Rate(std::max(std::abs(w + v), std::abs(w - v)), "v-omega", options.rate_tolerance, t);
-    check.Rate(std::abs(point.a_mps2) / limits.a_max_mps2, "a", options.rate_tolerance, t);
-    check.Rate(std::abs(point.beta_radps2) / limits.beta_max_radps2, "beta",
-               options.rate_tolerance, t);
-    for (int k = 0; k < model.num_joints(); ++k) {
-      const std::string joint = std::to_string(k + 1);
-      check.Rate(std::abs(point.qd_radps(k)) / joints.qd_max_radps(k), "qd" + joint,
-                 options.rate_tolerance, t);
-      check.Rate(std::abs(point.qdd_radps2(k)) / joints.qdd_max_radps2(k), "qdd" + joint,
-                 options.rate_tolerance, t);
-      const double excess = std::max(point.state.q_rad(k) - joints.q_max_rad(k),
-                                     joints.q_min_rad(k) - point.state.q_rad(k));
-      report.max_joint_excess_rad = std::max(report.max_joint_excess_rad, excess);
-      if (excess > options.joint_position_tolerance_rad) {
-        check.Violation(Describe("joint", k + 1, excess, "rad beyond its limit", t));
-      }
-    }
-    // Clearances, eqs. (13)-(14).
-    const double base = base_field.Distance(Eigen::Vector2d(point.state.x_m, point.state.y_m)) -
-                        model.base_cylinder.radius_m - base_margin;
-    check.Clearance(base, &report.min_base_clearance_m, "base clearance", -1, t);
+    CheckRatesAndJoints(point, kinematics.model(), limits, options, &check, &report);
     kinematics.Update(point.state, &cache);
-    for (const int s : arm_field_spheres) {
-      const double arm =
-          arm_field.Distance(cache.p_WS[s]) - model.spheres[s].radius_m - arm_margin;
-      check.Clearance(arm, &report.min_arm_clearance_m, "arm sphere clearance, sphere", s, t);
-    }
-    for (int s = 0; s < num_spheres; ++s) {
-      const double chassis = cache.p_WS[s].z() - model.spheres[s].radius_m -
-                             model.base_cylinder.height_m - options.chassis_margin_m;
-      check.Clearance(chassis, &report.min_chassis_clearance_m, "chassis clearance, sphere", s, t);
-    }
-    for (std::size_t k = 0; k < model.self_collision_pairs.size(); ++k) {
-      const auto [a, b] = model.self_collision_pairs[k];
-      const double self = (cache.p_WS[a] - cache.p_WS[b]).norm() - model.spheres[a].radius_m -
-                          model.spheres[b].radius_m - options.self_margin_m;
-      check.Clearance(self, &report.min_self_clearance_m, "self-collision pair",
-                      static_cast<int>(k), t);
-    }
+    CheckClearances(point, cache, kinematics.model(), base_field, arm_field, arm_field_spheres,
+                    margins, options, &check, &report);
   }
   return report;
 }

@@ -21,6 +21,22 @@ void Require(bool condition, const std::string& message) {
   if (!condition) throw std::invalid_argument("FlatnessObjective: " + message);
 }
 
+// The options' own ranges (throws std::invalid_argument naming the field).
+void CheckFlatnessObjectiveOptions(const FlatnessObjectiveOptions& options) {
+  Require(options.panels_per_piece >= 1, "panels_per_piece must be >= 1");
+  Require(options.stop_panel_factor >= 1, "stop_panel_factor must be >= 1");
+  Require(std::isfinite(options.time_weight) && options.time_weight >= 0.0,
+          "time_weight must be finite and >= 0");
+  Require(std::isfinite(options.min_speed_mps) && options.min_speed_mps >= 0.0,
+          "min_speed_mps must be finite and >= 0");
+  Require(std::isfinite(options.min_speed_weight) && options.min_speed_weight >= 0.0,
+          "min_speed_weight must be finite and >= 0");
+  Require(std::isfinite(options.min_speed_smoothing_mu) && options.min_speed_smoothing_mu > 0.0,
+          "min_speed_smoothing_mu must be finite and > 0");
+  Require(options.stop_acceleration_fraction > 0.0 && options.stop_acceleration_fraction < 1.0,
+          "stop_acceleration_fraction must be in (0, 1)");
+}
+
 }  // namespace
 
 FlatnessObjective::FlatnessObjective(const Kinematics& kinematics,
@@ -37,18 +53,7 @@ FlatnessObjective::FlatnessObjective(const Kinematics& kinematics,
       end_effector_(kinematics, X_WE_goal),
       minco_(kinematics.num_joints() + 2, std::max(num_pieces, 1)) {
   Require(num_pieces >= 1, "num_pieces = " + std::to_string(num_pieces) + " must be >= 1");
-  Require(options.panels_per_piece >= 1, "panels_per_piece must be >= 1");
-  Require(options.stop_panel_factor >= 1, "stop_panel_factor must be >= 1");
-  Require(std::isfinite(options.time_weight) && options.time_weight >= 0.0,
-          "time_weight must be finite and >= 0");
-  Require(std::isfinite(options.min_speed_mps) && options.min_speed_mps >= 0.0,
-          "min_speed_mps must be finite and >= 0");
-  Require(std::isfinite(options.min_speed_weight) && options.min_speed_weight >= 0.0,
-          "min_speed_weight must be finite and >= 0");
-  Require(std::isfinite(options.min_speed_smoothing_mu) && options.min_speed_smoothing_mu > 0.0,
-          "min_speed_smoothing_mu must be finite and > 0");
-  Require(options.stop_acceleration_fraction > 0.0 && options.stop_acceleration_fraction < 1.0,
-          "stop_acceleration_fraction must be in (0, 1)");
+  CheckFlatnessObjectiveOptions(options);
   Require(std::isfinite(base_limits.a_max_mps2) && base_limits.a_max_mps2 > 0.0,
           "base_limits.a_max_mps2 must be finite and > 0");
   Require(start.num_joints() == num_joints_,
@@ -233,7 +238,6 @@ bool FlatnessObjective::Evaluate(const double* x, double* cost, double* gradient
 // dCost/dT_j += w_l / K_j P + (l / K_j) sum_d sum_k G_dk V_d,k+1 (t moves with T).
 void FlatnessObjective::AddPieceSamples(int piece, bool with_gradient) {
   const int K = panels(piece);
-  const int N = num_joints_;
   const int M = num_pieces_;
   const double T = durations_s_(piece);
   const auto c = minco_.coefficients().middleRows(kBlock * piece, kBlock);
@@ -254,26 +258,7 @@ void FlatnessObjective::AddPieceSamples(int piece, bool with_gradient) {
       singular_ = true;  // yaw undefined at an inner sample
       return;
     }
-    sample_.x_m = values_(0, 0);
-    sample_.y_m = values_(1, 0);
-    if (rest) {
-      // Heading by continuity: the start yaw, or psi_f; no rates (FlatnessTrajectory).
-      sample_.yaw_rad = rest_start ? start_yaw_rad_ : end_yaw_rad_;
-      sample_.v_mps = 0.0;
-      sample_.a_mps2 = stop_acceleration_mps2_ * (rest_start ? 1.0 : -1.0);
-      sample_.omega_radps = 0.0;
-      sample_.beta_radps2 = 0.0;
-    } else {
-      const FlatYaw flat = ComputeFlatYaw(u, w, z);
-      sample_.yaw_rad = flat.yaw_rad;
-      sample_.v_mps = flat.v_mps;
-      sample_.a_mps2 = flat.a_mps2;
-      sample_.omega_radps = flat.omega_radps;
-      sample_.beta_radps2 = flat.beta_radps2;
-    }
-    sample_.q_rad = values_.col(0).tail(N);
-    sample_.qd_radps = values_.col(1).tail(N);
-    sample_.qdd_radps2 = values_.col(2).tail(N);
+    SetSample(u, w, z, rest_start, rest_end);
     const double trapezoid = (l == 0 || l == K) ? 0.5 : 1.0;
     const double w_time = trapezoid * T / K;
     double penalty = 0.0;
@@ -301,23 +286,7 @@ void FlatnessObjective::AddPieceSamples(int piece, bool with_gradient) {
     Eigen::Vector2d dC_du = Eigen::Vector2d::Zero(), dC_dw = Eigen::Vector2d::Zero(),
                     dC_dz = Eigen::Vector2d::Zero();
     if (any_penalty) {
-      const SampleQuantities& d = sample_gradient_;
-      weights_(0, 0) = w_time * d.x_m;
-      weights_(1, 0) = w_time * d.y_m;
-      weights_.col(0).tail(N) = w_time * d.q_rad;
-      weights_.col(1).tail(N) = w_time * d.qd_radps;
-      weights_.col(2).tail(N) = w_time * d.qdd_radps2;
-      if (rest_end) {
-        dC_dend_direct_(2) += w_time * d.yaw_rad;
-      } else if (!rest) {
-        FlatYaw g;
-        g.yaw_rad = w_time * d.yaw_rad;
-        g.v_mps = w_time * d.v_mps;
-        g.a_mps2 = w_time * d.a_mps2;
-        g.omega_radps = w_time * d.omega_radps;
-        g.beta_radps2 = w_time * d.beta_radps2;
-        AddFlatYawGradient(u, w, z, g, &dC_du, &dC_dw, &dC_dz);
-      }
+      AddPenaltyWeights(w_time, u, w, z, rest, rest_end, &dC_du, &dC_dw, &dC_dz);
     }
     if (terms_.min_speed && !rest) {
       dC_du += w_time * options_.min_speed_weight * speed.derivative * (-2.0) * u;
@@ -329,6 +298,55 @@ void FlatnessObjective::AddPieceSamples(int piece, bool with_gradient) {
         basis.leftCols<4>() * weights_.transpose();
     const double dcost_dt = (weights_.array() * values_.rightCols<4>().array()).sum();
     dC_dT_(piece) += trapezoid / K * penalty + static_cast<double>(l) / K * dcost_dt;
+  }
+}
+
+void FlatnessObjective::SetSample(const Eigen::Vector2d& u, const Eigen::Vector2d& w,
+                                  const Eigen::Vector2d& z, bool rest_start, bool rest_end) {
+  const int N = num_joints_;
+  sample_.x_m = values_(0, 0);
+  sample_.y_m = values_(1, 0);
+  if (rest_start || rest_end) {
+    // Heading by continuity: the start yaw, or psi_f; no rates (FlatnessTrajectory).
+    sample_.yaw_rad = rest_start ? start_yaw_rad_ : end_yaw_rad_;
+    sample_.v_mps = 0.0;
+    sample_.a_mps2 = stop_acceleration_mps2_ * (rest_start ? 1.0 : -1.0);
+    sample_.omega_radps = 0.0;
+    sample_.beta_radps2 = 0.0;
+  } else {
+    const FlatYaw flat = ComputeFlatYaw(u, w, z);
+    sample_.yaw_rad = flat.yaw_rad;
+    sample_.v_mps = flat.v_mps;
+    sample_.a_mps2 = flat.a_mps2;
+    sample_.omega_radps = flat.omega_radps;
+    sample_.beta_radps2 = flat.beta_radps2;
+  }
+  sample_.q_rad = values_.col(0).tail(N);
+  sample_.qd_radps = values_.col(1).tail(N);
+  sample_.qdd_radps2 = values_.col(2).tail(N);
+}
+
+void FlatnessObjective::AddPenaltyWeights(double w_time, const Eigen::Vector2d& u,
+                                          const Eigen::Vector2d& w, const Eigen::Vector2d& z,
+                                          bool rest, bool rest_end, Eigen::Vector2d* dC_du,
+                                          Eigen::Vector2d* dC_dw, Eigen::Vector2d* dC_dz) {
+  const int N = num_joints_;
+  const SampleQuantities& d = sample_gradient_;
+  weights_(0, 0) = w_time * d.x_m;
+  weights_(1, 0) = w_time * d.y_m;
+  weights_.col(0).tail(N) = w_time * d.q_rad;
+  weights_.col(1).tail(N) = w_time * d.qd_radps;
+  weights_.col(2).tail(N) = w_time * d.qdd_radps2;
+  if (rest_end) {
+    dC_dend_direct_(2) += w_time * d.yaw_rad;
+  } else if (!rest) {
+    FlatYaw g;
+    g.yaw_rad = w_time * d.yaw_rad;
+    g.v_mps = w_time * d.v_mps;
+    g.a_mps2 = w_time * d.a_mps2;
+    g.omega_radps = w_time * d.omega_radps;
+    g.beta_radps2 = w_time * d.beta_radps2;
+    AddFlatYawGradient(u, w, z, g, dC_du, dC_dw, dC_dz);
   }
 }
 

@@ -127,6 +127,17 @@ class FlatnessObjective : public LbfgsObjective {
  private:
   bool Decode(const double* x);
   void AddPieceSamples(int piece, bool with_gradient);
+  // The steps of AddPieceSamples, at one sample (values_ holds its MINCO values; u, w, z:
+  // the flat outputs' velocity, acceleration and jerk).
+  /// sample_ from values_: yaw and the base rates from the flat outputs (flat_yaw.h), or the
+  /// rest values at a rest point.
+  void SetSample(const Eigen::Vector2d& u, const Eigen::Vector2d& w, const Eigen::Vector2d& z,
+                 bool rest_start, bool rest_end);
+  /// The penalties' gradient (sample_gradient_) with weight w_time into weights_, the flat
+  /// outputs' (*dC_du, *dC_dw, *dC_dz) and, at the end rest point, psi_f's.
+  void AddPenaltyWeights(double w_time, const Eigen::Vector2d& u, const Eigen::Vector2d& w,
+                         const Eigen::Vector2d& z, bool rest, bool rest_end,
+                         Eigen::Vector2d* dC_du, Eigen::Vector2d* dC_dw, Eigen::Vector2d* dC_dz);
   void AddEndEffector(bool with_gradient);
   void WriteGradient(double* gradient) const;
 

@@ -3,7 +3,7 @@
 #include <Eigen/Core>
 
 #include "core/trajectory/minco_s3.h"
-#include "core/validate/trajectory_sample.h"
+#include "core/trajectory/trajectory_sample.h"
 
 namespace topay {
 

@@ -71,6 +71,16 @@ class PieceSampler {
 
  private:
   void AddPiece(const PieceSampleContext& context, int piece);
+  // The steps of AddPiece, at one sample (values_ holds its MINCO values).
+  /// sample_ from values_ and the Simpson position p_W.
+  void SetSample(const Eigen::Ref<const Eigen::Vector2d>& p_W);
+  /// The penalties' gradient (sample_gradient_) with weight w_time into weights_ and dC_dp_
+  /// (Simpson sample g).
+  void AddPenaltyWeights(double w_time, int g);
+  /// Stage 1's path fit against reference sample r with weight w_fit (into path_fit_, and
+  /// its gradient into weights_ and dC_dp_ when with_gradient).
+  void AddPathFit(const PathReference& reference, int r, double w_fit,
+                  const Eigen::Ref<const Eigen::Vector2d>& p_W, int g, bool with_gradient);
 
   int num_joints_;
   int panels_per_piece_;

@@ -38,6 +38,35 @@ bool NeedsKinematics(const PenaltyMask& enabled) {
          enabled[static_cast<int>(PenaltyTerm::kChassis)];
 }
 
+/// The base limits and the options SamplePenalties takes (throws naming the first bad one).
+
+/// Joint limits sized for n joints, finite positions with min < max, positive rates.
+void CheckJointLimits(const JointLimits& joints, int n) {
+  if (joints.q_min_rad.size() != n || joints.q_max_rad.size() != n ||
+      joints.qd_max_radps.size() != n || joints.qdd_max_radps2.size() != n) {
+    throw std::invalid_argument("SamplePenalties: joint limits are not sized for " +
+                                std::to_string(n) + " joints");
+  }
+  for (int k = 0; k < n; ++k) {
+    if (!(std::isfinite(joints.q_min_rad(k)) && std::isfinite(joints.q_max_rad(k)) &&
+          joints.q_min_rad(k) < joints.q_max_rad(k))) {
+      throw std::invalid_argument("SamplePenalties: position limits of joint " +
+                                  std::to_string(k + 1) + " are not finite with min < max");
+    }
+    CheckPositive(joints.qd_max_radps(k), "joint_limits.qd_max_radps");
+    CheckPositive(joints.qdd_max_radps2(k), "joint_limits.qdd_max_radps2");
+  }
+}
+
+/// Every base limit times `fraction`.
+BaseLimits ScaledBaseLimits(BaseLimits limits, double fraction) {
+  limits.v_max_mps *= fraction;
+  limits.a_max_mps2 *= fraction;
+  limits.omega_max_radps *= fraction;
+  limits.beta_max_radps2 *= fraction;
+  return limits;
+}
+
 }  // namespace
 
 void CheckSamplePenaltyOptions(const SamplePenaltyOptions& o) {
@@ -124,20 +153,7 @@ SamplePenalties::SamplePenalties(const Kinematics& kinematics,
   const RobotModel& model = kinematics.model();
   const int n = model.num_joints();
   const JointLimits& joints = model.joint_limits;
-  if (joints.q_min_rad.size() != n || joints.q_max_rad.size() != n ||
-      joints.qd_max_radps.size() != n || joints.qdd_max_radps2.size() != n) {
-    throw std::invalid_argument("SamplePenalties: joint limits are not sized for " +
-                                std::to_string(n) + " joints");
-  }
-  for (int k = 0; k < n; ++k) {
-    if (!(std::isfinite(joints.q_min_rad(k)) && std::isfinite(joints.q_max_rad(k)) &&
-          joints.q_min_rad(k) < joints.q_max_rad(k))) {
-      throw std::invalid_argument("SamplePenalties: position limits of joint " +
-                                  std::to_string(k + 1) + " are not finite with min < max");
-    }
-    CheckPositive(joints.qd_max_radps(k), "joint_limits.qd_max_radps");
-    CheckPositive(joints.qdd_max_radps2(k), "joint_limits.qdd_max_radps2");
-  }
+  CheckJointLimits(joints, n);
   const double base_margin = options_.base_field_margin_m.value_or(
       base_field.exactness_margin_m());
   const double arm_margin =
@@ -152,10 +168,7 @@ SamplePenalties::SamplePenalties(const Kinematics& kinematics,
         options_.sphere_radius_factor * model.spheres[s].radius_m + arm_margin;
   }
   const double fraction = options_.rate_limit_fraction;
-  limits_.v_max_mps *= fraction;
-  limits_.a_max_mps2 *= fraction;
-  limits_.omega_max_radps *= fraction;
-  limits_.beta_max_radps2 *= fraction;
+  limits_ = ScaledBaseLimits(limits_, fraction);
   qd_max_radps_ = fraction * joints.qd_max_radps;
   qdd_max_radps2_ = fraction * joints.qdd_max_radps2;
   joint_middle_rad_ = 0.5 * (joints.q_min_rad + joints.q_max_rad);
@@ -277,7 +290,6 @@ void SamplePenalties::EvaluateGeometry(const SampleQuantities& sample,
                                        SampleQuantities* gradient, double* total,
                                        PenaltyValues* costs) {
   if (!NeedsKinematics(options_.enabled)) return;
-  const RobotModel& model = kinematics_.model();
   state_.x_m = sample.x_m;
   state_.y_m = sample.y_m;
   state_.yaw_rad = sample.yaw_rad;
@@ -285,53 +297,15 @@ void SamplePenalties::EvaluateGeometry(const SampleQuantities& sample,
   kinematics_.Update(state_, &cache_);
   gradient_z_.setZero();
   bool any_active = false;
-  const int num_spheres = static_cast<int>(model.spheres.size());
+  const bool with_gradient = gradient != nullptr;
   if (enabled(PenaltyTerm::kArmObstacle)) {
-    // Eq. (13), arm spheres on the 3D field: threshold_s - SDF(p_WS) <= 0.
-    for (const int s : arm_field_spheres_) {
-      Eigen::Vector3d field_gradient;
-      const double distance = arm_field_.DistanceAndGradient(cache_.p_WS[s], &field_gradient);
-      const double slope =
-          Add(PenaltyTerm::kArmObstacle, sphere_thresholds_m_(s) + tightening_.arm_m - distance, total,
-              costs);
-      if (gradient && slope != 0.0) {
-        kinematics_.AddPointJacobianTransposeTimes(cache_, model.spheres[s].link, cache_.p_WS[s],
-                                                   -slope * field_gradient, gradient_z_);
-        any_active = true;
-      }
-    }
+    any_active = AddArmObstacle(with_gradient, total, costs) || any_active;
   }
   if (enabled(PenaltyTerm::kSelfCollision)) {
-    // Eq. (14): margin - (|p_i - p_j| - r_i - r_j) <= 0 for every checked pair.
-    for (const auto& [i, j] : model.self_collision_pairs) {
-      const Eigen::Vector3d r_W = cache_.p_WS[i] - cache_.p_WS[j];
-      const double norm = r_W.norm();
-      const double distance = norm - model.spheres[i].radius_m - model.spheres[j].radius_m;
-      const double slope =
-          Add(PenaltyTerm::kSelfCollision, options_.self_margin_m - distance, total, costs);
-      if (gradient && slope != 0.0 && norm > 0.0) {
-        const Eigen::Vector3d f_W = -slope / norm * r_W;  // d(-distance)/dp_i = -n
-        kinematics_.AddPointJacobianTransposeTimes(cache_, model.spheres[i].link, cache_.p_WS[i],
-                                                   f_W, gradient_z_);
-        kinematics_.AddPointJacobianTransposeTimes(cache_, model.spheres[j].link, cache_.p_WS[j],
-                                                   -f_W, gradient_z_);
-        any_active = true;
-      }
-    }
+    any_active = AddSelfCollision(with_gradient, total, costs) || any_active;
   }
   if (enabled(PenaltyTerm::kChassis)) {
-    // Arm above the chassis (facts sheet): margin - (z_s - r_s - top) <= 0.
-    const double top = model.base_cylinder.height_m;
-    for (int s = 0; s < num_spheres; ++s) {
-      const double clearance = cache_.p_WS[s].z() - model.spheres[s].radius_m - top;
-      const double slope =
-          Add(PenaltyTerm::kChassis, options_.chassis_margin_m - clearance, total, costs);
-      if (gradient && slope != 0.0) {
-        kinematics_.AddPointJacobianTransposeTimes(cache_, model.spheres[s].link, cache_.p_WS[s],
-                                                   Eigen::Vector3d(0.0, 0.0, -slope), gradient_z_);
-        any_active = true;
-      }
-    }
+    any_active = AddChassis(with_gradient, total, costs) || any_active;
   }
   if (gradient && any_active) {
     gradient->x_m += gradient_z_(0);
@@ -339,6 +313,66 @@ void SamplePenalties::EvaluateGeometry(const SampleQuantities& sample,
     gradient->yaw_rad += gradient_z_(2);
     gradient->q_rad += gradient_z_.tail(num_joints());
   }
+}
+
+// Eq. (13), arm spheres on the 3D field: threshold_s - SDF(p_WS) <= 0.
+bool SamplePenalties::AddArmObstacle(bool with_gradient, double* total, PenaltyValues* costs) {
+  const RobotModel& model = kinematics_.model();
+  bool any_active = false;
+  for (const int s : arm_field_spheres_) {
+    Eigen::Vector3d field_gradient;
+    const double distance = arm_field_.DistanceAndGradient(cache_.p_WS[s], &field_gradient);
+    const double slope =
+        Add(PenaltyTerm::kArmObstacle, sphere_thresholds_m_(s) + tightening_.arm_m - distance,
+            total, costs);
+    if (with_gradient && slope != 0.0) {
+      kinematics_.AddPointJacobianTransposeTimes(cache_, model.spheres[s].link, cache_.p_WS[s],
+                                                 -slope * field_gradient, gradient_z_);
+      any_active = true;
+    }
+  }
+  return any_active;
+}
+
+// Eq. (14): margin - (|p_i - p_j| - r_i - r_j) <= 0 for every checked pair.
+bool SamplePenalties::AddSelfCollision(bool with_gradient, double* total, PenaltyValues* costs) {
+  const RobotModel& model = kinematics_.model();
+  bool any_active = false;
+  for (const auto& [i, j] : model.self_collision_pairs) {
+    const Eigen::Vector3d r_W = cache_.p_WS[i] - cache_.p_WS[j];
+    const double norm = r_W.norm();
+    const double distance = norm - model.spheres[i].radius_m - model.spheres[j].radius_m;
+    const double slope =
+        Add(PenaltyTerm::kSelfCollision, options_.self_margin_m - distance, total, costs);
+    if (with_gradient && slope != 0.0 && norm > 0.0) {
+      const Eigen::Vector3d f_W = -slope / norm * r_W;  // d(-distance)/dp_i = -n
+      kinematics_.AddPointJacobianTransposeTimes(cache_, model.spheres[i].link, cache_.p_WS[i],
+                                                 f_W, gradient_z_);
+      kinematics_.AddPointJacobianTransposeTimes(cache_, model.spheres[j].link, cache_.p_WS[j],
+                                                 -f_W, gradient_z_);
+      any_active = true;
+    }
+  }
+  return any_active;
+}
+
+// Arm above the chassis (facts sheet): margin - (z_s - r_s - top) <= 0.
+bool SamplePenalties::AddChassis(bool with_gradient, double* total, PenaltyValues* costs) {
+  const RobotModel& model = kinematics_.model();
+  const double top = model.base_cylinder.height_m;
+  const int num_spheres = static_cast<int>(model.spheres.size());
+  bool any_active = false;
+  for (int s = 0; s < num_spheres; ++s) {
+    const double clearance = cache_.p_WS[s].z() - model.spheres[s].radius_m - top;
+    const double slope =
+        Add(PenaltyTerm::kChassis, options_.chassis_margin_m - clearance, total, costs);
+    if (with_gradient && slope != 0.0) {
+      kinematics_.AddPointJacobianTransposeTimes(cache_, model.spheres[s].link, cache_.p_WS[s],
+                                                 Eigen::Vector3d(0.0, 0.0, -slope), gradient_z_);
+      any_active = true;
+    }
+  }
+  return any_active;
 }
 
 }  // namespace topay

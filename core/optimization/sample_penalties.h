@@ -202,6 +202,11 @@ class SamplePenalties {
                       PenaltyValues* costs);
   void EvaluateGeometry(const SampleQuantities& sample, SampleQuantities* gradient,
                         double* total, PenaltyValues* costs);
+  // The steps of EvaluateGeometry (cache_ holds the sample's kinematics): each adds its term
+  // to *total and *costs and, with_gradient, its gradient to gradient_z_; true if it did.
+  bool AddArmObstacle(bool with_gradient, double* total, PenaltyValues* costs);
+  bool AddSelfCollision(bool with_gradient, double* total, PenaltyValues* costs);
+  bool AddChassis(bool with_gradient, double* total, PenaltyValues* costs);
 
   const Kinematics& kinematics_;
   const SignedDistanceField2& base_field_;

@@ -5,10 +5,10 @@
 #include <string_view>
 #include <vector>
 
-#include "core/optimization/trajectory_optimizer.h"
+#include "core/optimization/back_end_summary.h"
 #include "core/planning/front_end_result.h"
 #include "core/trajectory/arc_yaw_trajectory.h"
-#include "core/validate/trajectory_sample.h"
+#include "core/trajectory/trajectory_sample.h"
 #include "core/validate/validation_report.h"
 
 namespace topay {
@@ -39,7 +39,7 @@ std::string_view ToString(PlanStage stage);
 struct CandidateReport {
   int path_index = -1;   ///< Into WholeBodyPlanResult::front_end.paths.
   bool started = false;  ///< False: cancelled (early termination or time limit) while queued.
-  TrajectoryOptimizerSummary optimization;
+  BackEndSummary optimization;
   /// The validator's verdict, when the optimizer reported success.
   std::optional<ValidationReport> validation;
   double wall_ms = 0.0;  ///< Optimization + validation.

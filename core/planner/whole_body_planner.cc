@@ -15,6 +15,7 @@
 #include <tbb/task_group.h>
 
 #include "core/planner/failure_cause.h"
+#include "core/optimization/back_end_factory.h"
 #include "core/planning/stop_deadline.h"
 
 namespace topay {
@@ -104,7 +105,7 @@ WholeBodyPlanner::WholeBodyPlanner(const Kinematics& kinematics,
     : options_(Checked(std::move(options))),
       base_limits_(ResolveLimits(options_, kinematics)),
       front_end_(kinematics, base_field, arm_field, FrontEndOptionsFor(options_, kinematics)),
-      optimizer_(kinematics, base_field, arm_field, options_.optimizer),
+      back_end_(MakeTrajectoryBackEnd(kinematics, base_field, arm_field, options_.optimizer)),
       validator_(kinematics, scene, base_limits_, options_.validator) {}
 
 WholeBodyPlanResult WholeBodyPlanner::Plan(const WholeBodyState& start,
@@ -160,7 +161,7 @@ WholeBodyPlanResult WholeBodyPlanner::PlanBy(Clock::time_point deadline,
   }
   if (result.chosen >= 0) {
     result.status = PlanStatus::kSuccess;
-    const TrajectoryOptimizerSummary& chosen = result.candidates[result.chosen].optimization;
+    const BackEndSummary& chosen = result.candidates[result.chosen].optimization;
     result.sampled = chosen.Sampled();
     if (chosen.parameterisation == TrajectoryParameterisation::kArcLengthYaw) {
       result.trajectory.emplace(chosen.MakeTrajectory());
@@ -191,7 +192,7 @@ void WholeBodyPlanner::RunCandidate(const TrajectoryProblem& problem, const Whol
                                     CandidateReport* report) const {
   const Clock::time_point t = Clock::now();
   report->started = true;
-  report->optimization = optimizer_.Optimize(problem, path, stop);
+  report->optimization = back_end_->Optimize(problem, path, stop);
   if (report->optimization.success()) {
     try {  // either parameterisation (arc length-yaw, or the flatness baseline)
       // The plan's stop (time limit, caller), not the early-termination window: a

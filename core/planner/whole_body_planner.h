@@ -1,6 +1,7 @@
 #pragma once
 
 #include <chrono>
+#include <memory>
 #include <optional>
 #include <stop_token>
 #include <string>
@@ -10,7 +11,7 @@
 #include "core/geometry/scene.h"
 #include "core/map/signed_distance_field2.h"
 #include "core/map/signed_distance_field3.h"
-#include "core/optimization/trajectory_optimizer.h"
+#include "core/optimization/trajectory_back_end.h"
 #include "core/planner/whole_body_plan_result.h"
 #include "core/planner/whole_body_planner_options.h"
 #include "core/planning/front_end.h"
@@ -23,8 +24,10 @@ namespace topay {
 /// whole-body trajectory.
 ///  1. Front end (core/planning/front_end.h): whole-body paths in several homotopy classes.
 ///  2. Back end: every path (up to max_candidates, shortest first) is optimized on its own
-///     worker (core/optimization); an optimizer success is then checked by the independent
-///     validator against the exact scene (core/validate). After the first validated success
+///     worker by the back end options.optimizer chooses (MakeTrajectoryBackEnd: arc
+///     length-yaw or the flatness baseline, core/optimization/trajectory_back_end.h); an
+///     optimizer success is then checked by the independent validator against the exact
+///     scene (core/validate). After the first validated success
 ///     the others get early_termination_window_s, then they are cancelled; the shortest
 ///     validated trajectory wins. options.sequential: one after another, no early stop.
 /// A success is only ever a trajectory the validator accepted.
@@ -71,7 +74,7 @@ class WholeBodyPlanner {
   WholeBodyPlannerOptions options_;
   BaseLimits base_limits_;
   FrontEnd front_end_;
-  TrajectoryOptimizer optimizer_;
+  std::unique_ptr<const TrajectoryBackEnd> back_end_;
   TrajectoryValidator validator_;
 };
 

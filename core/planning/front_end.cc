@@ -1,7 +1,6 @@
 #include "core/planning/front_end.h"
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <exception>
 #include <limits>
@@ -12,6 +11,7 @@
 #include <tbb/task_arena.h>
 
 #include "core/common/random.h"
+#include "core/common/stopwatch.h"
 #include "core/planning/base_reachable_region.h"
 #include "core/planning/field_clearance.h"
 #include "core/planning/parallel_acquisition.h"
@@ -19,11 +19,7 @@
 namespace topay {
 namespace {
 
-using Clock = std::chrono::steady_clock;
-
-double MsSince(Clock::time_point t) {
-  return std::chrono::duration<double, std::milli>(Clock::now() - t).count();
-}
+using Clock = Stopwatch::Clock;
 
 // Empty if `state` is usable, else what is wrong with it.
 std::string CheckState(const WholeBodyState& state, int num_joints) {
@@ -87,12 +83,13 @@ FrontEnd::~FrontEnd() = default;
 FrontEndResult FrontEnd::Plan(const WholeBodyState& start, const Eigen::Isometry3d& X_WE_target,
                               const std::optional<WholeBodyState>& hint,
                               std::stop_token stop) const {
-  const Clock::time_point t0 = Clock::now();
+  const Stopwatch watch;
+  const Clock::time_point t0 = watch.start();
   FrontEndResult result;
   auto fail = [&](FrontEndStatus status, std::string reason) {
     result.status = status;
     result.failure_reason = std::move(reason);
-    result.stats.total_ms = MsSince(t0);
+    result.stats.total_ms = watch.ElapsedMs();
     return result;
   };
   const int n = kinematics_.num_joints();
@@ -128,7 +125,7 @@ FrontEndResult FrontEnd::Plan(const WholeBodyState& start, const Eigen::Isometry
     result.status = FrontEndStatus::kCancelled;
     result.failure_reason = "cancelled (" + result.failure_reason + ")";
   }
-  result.stats.total_ms = MsSince(t0);
+  result.stats.total_ms = watch.ElapsedMs();
   return result;
 }
 
@@ -166,7 +163,7 @@ bool FrontEnd::AttemptGoals(int first, PlanContext* context) const {
 bool FrontEnd::FindReachableGoals(PlanContext* context) const {
   FrontEndResult& result = *context->result;
   result.stats.used_reachable_goal_search = true;
-  const Clock::time_point t = Clock::now();
+  const Stopwatch watch;
   const double safe_distance_m =
       kinematics_.model().base_cylinder.radius_m +
       std::max(options_.fallback_base_clearance_m, validity_.base_margin_m());
@@ -181,7 +178,7 @@ bool FrontEnd::FindReachableGoals(PlanContext* context) const {
   };
   GoalCandidatesResult more = FindGoalCandidates(ik_, context->X_WE_target, context->start,
                                                  std::nullopt, clearance, options_.goal);
-  result.stats.goal_ms += MsSince(t);
+  result.stats.goal_ms += watch.ElapsedMs();
   if (!more.success()) {
     result.failure_reason = region.start_joins_grid() ? more.failure_reason
                                                       : "the start base position joins no "
@@ -196,7 +193,7 @@ bool FrontEnd::FindReachableGoals(PlanContext* context) const {
 
 bool FrontEnd::FindGoals(PlanContext* context) const {
   FrontEndResult& result = *context->result;
-  const Clock::time_point t = Clock::now();
+  const Stopwatch watch;
   WholeBodyValidityWorkspace workspace = validity_.MakeWorkspace();
   const std::stop_token& stop = context->stop;
   // Cancelled: every state is rejected (NaN), so the IK ends within its current DLS run.
@@ -206,7 +203,7 @@ bool FrontEnd::FindGoals(PlanContext* context) const {
   };
   result.goal_candidates = FindGoalCandidates(ik_, context->X_WE_target, context->start,
                                               context->hint, clearance, options_.goal);
-  result.stats.goal_ms += MsSince(t);
+  result.stats.goal_ms += watch.ElapsedMs();
   result.stats.num_goal_candidates = static_cast<int>(result.goal_candidates.candidates.size());
   if (!result.goal_candidates.success()) {
     result.status = FrontEndStatus::kNoGoal;
@@ -218,18 +215,44 @@ bool FrontEnd::FindGoals(PlanContext* context) const {
 
 bool FrontEnd::AttemptGoal(int attempt, PlanContext* context) const {
   FrontEndResult& result = *context->result;
-  FrontEndStats& stats = result.stats;
-  const WholeBodyState& start = context->start;
   const GoalCandidate& goal = result.goal_candidates.candidates[attempt];
   const std::string where = "goal candidate " + std::to_string(attempt) + ": ";
-  ++stats.num_goal_attempts;
+  ++result.stats.num_goal_attempts;
 
+  const TopologicalPathSearchResult search = SearchBasePaths(attempt, goal, context);
+  if (!search.ok()) {
+    result.status = FrontEndStatus::kNoBasePath;
+    result.failure_reason = where + "base paths: " + search.reason;
+    return false;
+  }
+  const std::vector<ArmJob> jobs = MakeArmJobs(attempt, goal, search, context);
+  ParallelAcquisitionResult acquired = AcquireArmPaths(attempt, goal, jobs, context);
+  const int job_offset = static_cast<int>(result.jobs.size());
+  result.jobs.insert(result.jobs.end(), acquired.jobs.begin(), acquired.jobs.end());
+  if (acquired.paths.empty()) {
+    result.status = FrontEndStatus::kNoArmPath;
+    result.failure_reason = where + "no arm path on " + std::to_string(jobs.size()) +
+                            " base paths: " + SummariseJobFailures(acquired.jobs);
+    return false;
+  }
+  for (FrontEndPath& path : acquired.paths) path.job += job_offset;
+  result.paths = std::move(acquired.paths);
+  result.goal = goal.state;
+  result.stats.goal_from_hint = goal.from_hint;
+  return true;
+}
+
+TopologicalPathSearchResult FrontEnd::SearchBasePaths(int attempt, const GoalCandidate& goal,
+                                                      PlanContext* context) const {
+  FrontEndResult& result = *context->result;
+  FrontEndStats& stats = result.stats;
+  const WholeBodyState& start = context->start;
   // Base paths, free at the validity's base margin at least.
   TopologicalPathSearchOptions topology = options_.topology;
   topology.base_radius_m = kinematics_.model().base_cylinder.radius_m;
   topology.clearance_m = std::max(topology.clearance_m, validity_.base_margin_m());
   topology.prm.seed = DeriveSeed(options_.seed, 2 * static_cast<std::uint64_t>(attempt));
-  Clock::time_point t = Clock::now();
+  const Stopwatch watch;
   const Eigen::Vector2d start_W(start.x_m, start.y_m), goal_W(goal.state.x_m, goal.state.y_m);
   TopologicalPathSearchResult search =
       SearchTopologicalBasePaths(base_field_, start_W, goal_W, topology, context->stop);
@@ -244,7 +267,7 @@ bool FrontEnd::AttemptGoal(int attempt, PlanContext* context) const {
     search = SearchTopologicalBasePaths(base_field_, start_W, goal_W, topology, context->stop);
     stats.used_fallback_base_clearance = true;
   }
-  stats.topology_ms += MsSince(t);
+  stats.topology_ms += watch.ElapsedMs();
   result.topology = search.stats;
   result.base_paths = search.paths;
   stats.num_prm_nodes = search.stats.num_guards + search.stats.num_connectors;
@@ -252,14 +275,14 @@ bool FrontEnd::AttemptGoal(int attempt, PlanContext* context) const {
   stats.num_classes_kept = search.stats.num_classes_kept;
   stats.num_base_paths = static_cast<int>(search.paths.size());
   stats.jps_ok = search.stats.jps_ok;
-  if (!search.ok()) {
-    result.status = FrontEndStatus::kNoBasePath;
-    result.failure_reason = where + "base paths: " + search.reason;
-    return false;
-  }
+  return search;
+}
 
+std::vector<ArmJob> FrontEnd::MakeArmJobs(int attempt, const GoalCandidate& goal,
+                                          const TopologicalPathSearchResult& search,
+                                          PlanContext* context) const {
   // One job per base path, shortest first.
-  t = Clock::now();
+  const Stopwatch watch;
   const BaseLimits limits = options_.base_limits.value_or(kinematics_.model().base_limits);
   std::vector<int> order(search.paths.size());
   std::iota(order.begin(), order.end(), 0);
@@ -273,23 +296,30 @@ bool FrontEnd::AttemptGoal(int attempt, PlanContext* context) const {
     job.base_path_index = index;
     job.seed = DeriveSeed(options_.seed, 1000 * static_cast<std::uint64_t>(attempt + 1) + index);
     try {
-      job.base_sequence = DiscreteSE2(job.base_path.waypoints_W_m, start.yaw_rad,
+      job.base_sequence = DiscreteSE2(job.base_path.waypoints_W_m, context->start.yaw_rad,
                                       goal.state.yaw_rad, limits, options_.discretisation);
     } catch (const std::exception& e) {
       job.setup_error = std::string("DiscreteSE2: ") + e.what();
     }
     jobs.push_back(std::move(job));
   }
-  stats.discretisation_ms += MsSince(t);
+  context->result->stats.discretisation_ms += watch.ElapsedMs();
+  return jobs;
+}
 
+ParallelAcquisitionResult FrontEnd::AcquireArmPaths(int attempt, const GoalCandidate& goal,
+                                                    const std::vector<ArmJob>& jobs,
+                                                    PlanContext* context) const {
+  FrontEndStats& stats = context->result->stats;
   ParallelAcquisitionOptions acquisition;
   acquisition.rrt = options_.rrt;
   acquisition.improvement_window_s = options_.improvement_window_s;
   acquisition.budget_s = options_.acquisition_budget_s;
   acquisition.num_workers = tbb::this_task_arena::max_concurrency();
   acquisition.goal_attempt = attempt;
-  ParallelAcquisitionResult acquired = AcquireWholeBodyPaths(
-      jobs, start.q_rad, goal.state.q_rad, validity_, acquisition, context->t0, context->stop);
+  ParallelAcquisitionResult acquired =
+      AcquireWholeBodyPaths(jobs, context->start.q_rad, goal.state.q_rad, validity_, acquisition,
+                            context->t0, context->stop);
   stats.acquisition_ms += acquired.wall_ms;
   stats.num_jobs += static_cast<int>(acquired.jobs.size());
   for (const ArmJobReport& job : acquired.jobs) {
@@ -302,19 +332,7 @@ bool FrontEnd::AttemptGoal(int attempt, PlanContext* context) const {
   }
   stats.time_to_first_solution_ms =
       std::min(stats.time_to_first_solution_ms, acquired.first_success_ms);
-  const int job_offset = static_cast<int>(result.jobs.size());
-  result.jobs.insert(result.jobs.end(), acquired.jobs.begin(), acquired.jobs.end());
-  if (acquired.paths.empty()) {
-    result.status = FrontEndStatus::kNoArmPath;
-    result.failure_reason = where + "no arm path on " + std::to_string(jobs.size()) +
-                            " base paths: " + SummariseJobFailures(acquired.jobs);
-    return false;
-  }
-  for (FrontEndPath& path : acquired.paths) path.job += job_offset;
-  result.paths = std::move(acquired.paths);
-  result.goal = goal.state;
-  stats.goal_from_hint = goal.from_hint;
-  return true;
+  return acquired;
 }
 
 }  // namespace topay

@@ -3,6 +3,7 @@
 #include <memory>
 #include <optional>
 #include <stop_token>
+#include <vector>
 
 #include <Eigen/Geometry>
 
@@ -10,6 +11,7 @@
 #include "core/map/signed_distance_field3.h"
 #include "core/planning/front_end_options.h"
 #include "core/planning/front_end_result.h"
+#include "core/planning/parallel_acquisition.h"
 #include "core/planning/whole_body_validity.h"
 #include "core/robot/kinematics.h"
 #include "core/robot/whole_body_ik.h"
@@ -72,6 +74,19 @@ class FrontEnd {
   bool FindReachableGoals(PlanContext* context) const;
   /// One goal attempt: base paths, layers, arm jobs. True if a path was found.
   bool AttemptGoal(int attempt, PlanContext* context) const;
+  // The steps of AttemptGoal.
+  /// Topological base paths to the goal's base (again at the fallback clearance if none);
+  /// records the search's figures in the result.
+  TopologicalPathSearchResult SearchBasePaths(int attempt, const GoalCandidate& goal,
+                                              PlanContext* context) const;
+  /// One arm job per base path, shortest first, each with its DiscreteSE2 layers.
+  std::vector<ArmJob> MakeArmJobs(int attempt, const GoalCandidate& goal,
+                                  const TopologicalPathSearchResult& search,
+                                  PlanContext* context) const;
+  /// The parallel arm RRT* stage on the jobs; records its figures in the result's stats.
+  ParallelAcquisitionResult AcquireArmPaths(int attempt, const GoalCandidate& goal,
+                                            const std::vector<ArmJob>& jobs,
+                                            PlanContext* context) const;
 
   const Kinematics& kinematics_;
   const SignedDistanceField2& base_field_;

@@ -1,11 +1,11 @@
 #include "core/planning/goal_candidates.h"
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <stdexcept>
 
 #include "core/common/angles.h"
+#include "core/common/stopwatch.h"
 
 namespace topay {
 
@@ -50,7 +50,7 @@ GoalCandidatesResult FindGoalCandidates(const WholeBodyIk& ik, const Eigen::Isom
                                         const StateClearanceFn& clearance,
                                         const GoalCandidatesOptions& options) {
   CheckGoalCandidatesOptions(options);
-  const auto t0 = std::chrono::steady_clock::now();
+  const Stopwatch watch;
   GoalCandidatesResult result;
   WholeBodyIkQuery query;
   query.hint = hint;
@@ -70,7 +70,7 @@ GoalCandidatesResult FindGoalCandidates(const WholeBodyIk& ik, const Eigen::Isom
   if (static_cast<int>(result.candidates.size()) > options.max_candidates) {
     result.candidates.resize(options.max_candidates);
   }
-  result.time_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  result.time_s = watch.ElapsedS();
   return result;
 }
 

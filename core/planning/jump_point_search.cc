@@ -1,12 +1,12 @@
 #include "core/planning/jump_point_search.h"
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <limits>
 #include <queue>
 #include <unordered_map>
 
+#include "core/common/stopwatch.h"
 #include "core/planning/base_free_space.h"
 #include "core/planning/base_path.h"
 #include "core/planning/traversable_grid.h"
@@ -186,8 +186,7 @@ JumpPointSearchResult JumpPointSearch(const SignedDistanceField2& field,
                                       const Eigen::Vector2d& start_W_m,
                                       const Eigen::Vector2d& goal_W_m,
                                       const JumpPointSearchOptions& options, std::stop_token stop) {
-  using Clock = std::chrono::steady_clock;
-  const Clock::time_point t0 = Clock::now();
+  const Stopwatch watch;
   if (!start_W_m.allFinite() || !goal_W_m.allFinite()) {
     return Fail(Status::kInvalidInput, "JPS: start or goal position is not finite");
   }
@@ -240,7 +239,7 @@ JumpPointSearchResult JumpPointSearch(const SignedDistanceField2& field,
     result.path_W_m = ShortcutPath(free_space, result.path_W_m, options.shortcut_options);
   }
   result.length_m = PolylineLength(result.path_W_m);
-  result.time_s = std::chrono::duration<double>(Clock::now() - t0).count();
+  result.time_s = watch.ElapsedS();
   return result;
 }
 

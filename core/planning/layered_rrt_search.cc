@@ -4,9 +4,6 @@
 #include <cmath>
 
 namespace topay {
-namespace {
-using Clock = std::chrono::steady_clock;
-}  // namespace
 
 LayeredRrtSearch::LayeredRrtSearch(const DiscreteSE2Path& base, const Eigen::VectorXd& q_start,
                                    const Eigen::VectorXd& q_goal, const WholeBodyValidity& validity,
@@ -16,7 +13,6 @@ LayeredRrtSearch::LayeredRrtSearch(const DiscreteSE2Path& base, const Eigen::Vec
       validity_(validity),
       options_(options),
       stop_(std::move(stop)),
-      start_time_(std::chrono::steady_clock::now()),
       rng_(options.seed),
       sampler_(q_start, q_goal, weights),
       workspace_(validity.MakeWorkspace()),
@@ -42,8 +38,7 @@ void LayeredRrtSearch::ComputeLayerBoxes(const Eigen::VectorXd& q_start,
 
 bool LayeredRrtSearch::Interrupted() const {
   if (stop_.stop_requested()) return true;
-  const double elapsed = std::chrono::duration<double>(Clock::now() - start_time_).count();
-  return elapsed >= options_.time_budget_s;
+  return watch_.ElapsedS() >= options_.time_budget_s;
 }
 
 void LayeredRrtSearch::SampleQ(int layer, Eigen::VectorXd* q) {
@@ -197,8 +192,7 @@ void LayeredRrtSearch::TryUpdateCost(int tree, int node_in_tree, int other_node)
   bridges_.push_back(bridge);
   const bool first = !std::isfinite(c_max_);
   if (first) {
-    stats_.time_to_first_solution_s =
-        std::chrono::duration<double>(Clock::now() - start_time_).count();
+    stats_.time_to_first_solution_s = watch_.ElapsedS();
     stats_.first_cost = cost;
   }
   c_max_ = cost;
@@ -294,7 +288,7 @@ ArmRrtStarResult LayeredRrtSearch::Finish(ArmRrtStarStatus no_solution_status,
   ArmRrtStarResult result;
   stats_.nodes_start_tree = trees_[0].size();
   stats_.nodes_goal_tree = trees_[1].size();
-  stats_.elapsed_s = std::chrono::duration<double>(Clock::now() - start_time_).count();
+  stats_.elapsed_s = watch_.ElapsedS();
   if (bridges_.empty()) {
     result.status = no_solution_status;
     result.message = std::move(message);

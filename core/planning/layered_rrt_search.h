@@ -37,7 +37,6 @@
 //    |q_b - q_a|_w. Lower bound: |q_goal - q_start|_w (the search ends when it is reached).
 
 #include <Eigen/Core>
-#include <chrono>
 #include <limits>
 #include <optional>
 #include <stop_token>
@@ -45,6 +44,7 @@
 #include <utility>
 #include <vector>
 
+#include "core/common/stopwatch.h"
 #include "core/common/random.h"
 #include "core/planning/arm_rrt_star.h"
 #include "core/planning/discrete_se2.h"
@@ -104,7 +104,7 @@ class LayeredRrtSearch {
   const WholeBodyValidity& validity_;
   const ArmRrtStarOptions& options_;
   std::stop_token stop_;
-  std::chrono::steady_clock::time_point start_time_;
+  Stopwatch watch_;  ///< Since construction: the time budget and the stats.
   Rng rng_;
   InformedJointSampler sampler_;
   WholeBodyValidityWorkspace workspace_;

@@ -8,23 +8,13 @@
 
 #include <tbb/task_group.h>
 
+#include "core/common/stopwatch.h"
 #include "core/planning/stop_deadline.h"
 
 namespace topay {
 namespace {
 
-using Clock = std::chrono::steady_clock;
-
-double MsBetween(Clock::time_point from, Clock::time_point to) {
-  return std::chrono::duration<double, std::milli>(to - from).count();
-}
-
-// now + seconds, saturating at time_point::max() for +infinity or huge values.
-Clock::time_point After(Clock::time_point now, double seconds) {
-  const double limit_s = std::chrono::duration<double>(Clock::time_point::max() - now).count();
-  if (!(seconds < limit_s)) return Clock::time_point::max();
-  return now + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(seconds));
-}
+using Clock = Stopwatch::Clock;
 
 ArmJobReport MakeReport(const ArmJob& job, int goal_attempt) {
   ArmJobReport report;
@@ -64,8 +54,8 @@ struct Shared {
 void NoteSuccess(Clock::time_point when, Shared* shared) {
   std::lock_guard<std::mutex> lock(shared->first_success_mutex);
   if (std::isfinite(shared->first_success_ms)) return;
-  shared->first_success_ms = MsBetween(shared->t0, when);
-  shared->deadline.Tighten(After(when, shared->options.improvement_window_s));
+  shared->first_success_ms = Stopwatch::MillisecondsBetween(shared->t0, when);
+  shared->deadline.Tighten(DeadlineAfter(when, shared->options.improvement_window_s));
 }
 
 void RunJob(int index, Shared* shared) {
@@ -96,8 +86,8 @@ void RunJob(int index, Shared* shared) {
   report.status = result.status;
   report.message = result.message;
   report.stats = result.stats;
-  report.wall_ms = MsBetween(job_start, job_end);
-  report.finished_at_ms = MsBetween(shared->t0, job_end);
+  report.wall_ms = Stopwatch::MillisecondsBetween(job_start, job_end);
+  report.finished_at_ms = Stopwatch::MillisecondsBetween(shared->t0, job_end);
   if (result.success()) NoteSuccess(job_end, shared);  // no-op: the callback came first
   shared->results[index] = std::move(result);
 }
@@ -121,7 +111,7 @@ ParallelAcquisitionResult AcquireWholeBodyPaths(const std::vector<ArmJob>& jobs,
   std::stop_source internal;
   // Caller's stop -> every job's token, immediately (runs in the requesting thread).
   std::stop_callback forward(stop, [&internal] { internal.request_stop(); });
-  StopDeadline deadline(&internal, After(stage_start, options.budget_s));
+  StopDeadline deadline(&internal, DeadlineAfter(stage_start, options.budget_s));
 
   Shared shared(jobs, q_start_rad, q_goal_rad, validity, options, t0, internal.get_token(),
                 deadline);
@@ -151,7 +141,7 @@ ParallelAcquisitionResult AcquireWholeBodyPaths(const std::vector<ArmJob>& jobs,
     out.paths.push_back(std::move(path));
   }
   out.jobs = std::move(shared.reports);
-  out.wall_ms = MsBetween(stage_start, Clock::now());
+  out.wall_ms = Stopwatch::MillisecondsBetween(stage_start, Clock::now());
   return out;
 }
 

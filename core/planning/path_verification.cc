@@ -72,6 +72,54 @@ std::string CheckJointLimits(const WholeBodyState& state, const JointLimits& lim
   return "";
 }
 
+// The interpolation a -> b (state b alone for k = 0) in n intervals with steps <= the
+// maxima, every state checked against the scene; "" or the collision.
+std::string CheckSegment(const WholeBodyState& a, const WholeBodyState& b, std::size_t k,
+                         const SceneClearanceChecker& checker, const PathVerificationOptions& o,
+                         WholeBodyState* state, SceneClearanceWorkspace* workspace,
+                         PathVerification* out) {
+  const double translation_m = std::hypot(b.x_m - a.x_m, b.y_m - a.y_m);
+  const double rotation_rad = std::max(std::abs(b.yaw_rad - a.yaw_rad),
+                                       (b.q_rad - a.q_rad).cwiseAbs().maxCoeff());
+  const int n = std::max(1, static_cast<int>(std::ceil(std::max(
+                                translation_m / o.max_step_m, rotation_rad / o.max_step_rad))));
+  for (int i = (k == 0 ? n : 1); i <= n; ++i) {
+    const double s = static_cast<double>(i) / n;
+    state->x_m = a.x_m + s * (b.x_m - a.x_m);
+    state->y_m = a.y_m + s * (b.y_m - a.y_m);
+    state->yaw_rad = a.yaw_rad + s * (b.yaw_rad - a.yaw_rad);
+    state->q_rad = a.q_rad + s * (b.q_rad - a.q_rad);
+    const SceneClearance c = checker.Compute(*state, workspace);
+    ++out->num_states_checked;
+    out->min_obstacle_clearance_m = std::min(out->min_obstacle_clearance_m, c.obstacle_m());
+    if (!c.IsCollisionFree(o.obstacle_margin_m, o.self_margin_m)) {
+      std::ostringstream message;
+      message << "collision between states " << (k == 0 ? 0 : k - 1) << " and " << k
+              << " (s = " << s << "): base " << c.base_m << " m, arm " << c.spheres_m
+              << " m, self " << c.self_m << " m, chassis " << c.chassis_m << " m";
+      return message.str();
+    }
+  }
+  return "";
+}
+
+// The end effector at the last state within the tolerances of the target; "" or the miss.
+std::string CheckEndEffector(const WholeBodyState& last, const Eigen::Isometry3d& X_WE_target,
+                             const Kinematics& kinematics, const PathVerificationOptions& o) {
+  const Eigen::Isometry3d X_WE = kinematics.EndEffectorPose(last);
+  const double position_error_m = (X_WE.translation() - X_WE_target.translation()).norm();
+  const double orientation_error_rad =
+      Eigen::AngleAxisd(X_WE_target.linear() * X_WE.linear().transpose()).angle();
+  if (!(position_error_m <= o.position_tolerance_m) ||
+      !(orientation_error_rad <= o.orientation_tolerance_rad)) {
+    std::ostringstream message;
+    message << "end effector misses the target by " << position_error_m << " m, "
+            << orientation_error_rad << " rad";
+    return message.str();
+  }
+  return "";
+}
+
 }  // namespace
 
 PathVerification VerifyWholeBodyPath(const WholeBodyPath& path, const WholeBodyState& start,
@@ -101,42 +149,11 @@ PathVerification VerifyWholeBodyPath(const WholeBodyPath& path, const WholeBodyS
     why = CheckJointLimits(path.states[k], limits);
     if (!why.empty()) return fail("state " + std::to_string(k) + ": " + why);
     const WholeBodyState& a = k == 0 ? path.states[0] : path.states[k - 1];
-    const WholeBodyState& b = path.states[k];
-    // Interpolation a -> b (one state for k = 0): n intervals with steps <= the maxima.
-    const double translation_m = std::hypot(b.x_m - a.x_m, b.y_m - a.y_m);
-    const double rotation_rad = std::max(std::abs(b.yaw_rad - a.yaw_rad),
-                                         (b.q_rad - a.q_rad).cwiseAbs().maxCoeff());
-    const int n = std::max(1, static_cast<int>(std::ceil(std::max(
-                                  translation_m / o.max_step_m, rotation_rad / o.max_step_rad))));
-    for (int i = (k == 0 ? n : 1); i <= n; ++i) {
-      const double s = static_cast<double>(i) / n;
-      state.x_m = a.x_m + s * (b.x_m - a.x_m);
-      state.y_m = a.y_m + s * (b.y_m - a.y_m);
-      state.yaw_rad = a.yaw_rad + s * (b.yaw_rad - a.yaw_rad);
-      state.q_rad = a.q_rad + s * (b.q_rad - a.q_rad);
-      const SceneClearance c = checker.Compute(state, &workspace);
-      ++out.num_states_checked;
-      out.min_obstacle_clearance_m = std::min(out.min_obstacle_clearance_m, c.obstacle_m());
-      if (!c.IsCollisionFree(o.obstacle_margin_m, o.self_margin_m)) {
-        std::ostringstream message;
-        message << "collision between states " << (k == 0 ? 0 : k - 1) << " and " << k
-                << " (s = " << s << "): base " << c.base_m << " m, arm " << c.spheres_m
-                << " m, self " << c.self_m << " m, chassis " << c.chassis_m << " m";
-        return fail(message.str());
-      }
-    }
+    why = CheckSegment(a, path.states[k], k, checker, o, &state, &workspace, &out);
+    if (!why.empty()) return fail(why);
   }
-  const Eigen::Isometry3d X_WE = kinematics.EndEffectorPose(path.states.back());
-  const double position_error_m = (X_WE.translation() - X_WE_target.translation()).norm();
-  const double orientation_error_rad =
-      Eigen::AngleAxisd(X_WE_target.linear() * X_WE.linear().transpose()).angle();
-  if (!(position_error_m <= o.position_tolerance_m) ||
-      !(orientation_error_rad <= o.orientation_tolerance_rad)) {
-    std::ostringstream message;
-    message << "end effector misses the target by " << position_error_m << " m, "
-            << orientation_error_rad << " rad";
-    return fail(message.str());
-  }
+  why = CheckEndEffector(path.states.back(), X_WE_target, kinematics, o);
+  if (!why.empty()) return fail(why);
   out.ok = true;
   return out;
 }

@@ -1,20 +1,14 @@
 #include "core/planning/topological_path_search.h"
 
-#include <chrono>
 #include <cmath>
 
+#include "core/common/stopwatch.h"
 #include "core/planning/base_free_space.h"
 
 namespace topay {
 namespace {
 
 using Status = TopologicalPathSearchResult::Status;
-using Clock = std::chrono::steady_clock;
-
-double MsSince(Clock::time_point t) {
-  return std::chrono::duration<double, std::milli>(Clock::now() - t).count();
-}
-
 TopologicalPathSearchResult Fail(TopologicalPathSearchResult result, Status status,
                                  std::string reason) {
   result.status = status;
@@ -40,27 +34,27 @@ void RunTopologicalStages(const BaseFreeSpace& free_space, const Eigen::Vector2d
                           const Eigen::Vector2d& goal, const TopologicalPathSearchOptions& o,
                           const std::stop_token& stop, TopologicalPathSearchResult* result) {
   TopologicalPathSearchStats& stats = result->stats;
-  Clock::time_point t = Clock::now();
+  Stopwatch watch;
   VisibilityPrmGraph graph = BuildVisibilityPrm(free_space, start, goal, o.prm, stop);
   stats.num_samples = graph.num_samples;
   stats.num_guards = graph.num_guards;
   stats.num_connectors = graph.num_connectors;
   PruneDeadEnds(&graph);
-  stats.prm_ms = MsSince(t);
+  stats.prm_ms = watch.ElapsedMs();
 
-  t = Clock::now();
+  watch.Restart();
   const RawPathEnumeration raw = EnumerateRawPaths(graph, o.enumeration, stop);
   stats.num_raw_paths = raw.num_found;
   stats.num_kept_fewest_hops = static_cast<int>(raw.paths_W_m.size());
-  stats.dfs_ms = MsSince(t);
+  stats.dfs_ms = watch.ElapsedMs();
 
-  t = Clock::now();
+  watch.Restart();
   const std::vector<std::vector<Eigen::Vector2d>> shortcut =
       ShortcutPaths(free_space, raw.paths_W_m, o.shortcut, stop);
   stats.num_after_shortcut = static_cast<int>(shortcut.size());
-  stats.shortcut_ms = MsSince(t);
+  stats.shortcut_ms = watch.ElapsedMs();
 
-  t = Clock::now();
+  watch.Restart();
   // Stopped: no UVD pruning (its pairwise tests would delay the return); the shortest path
   // (free, shortcut or not) is what the search had, as one class.
   const std::vector<int> kept = stop.stop_requested()
@@ -75,7 +69,7 @@ void RunTopologicalStages(const BaseFreeSpace& free_space, const Eigen::Vector2d
     result->paths.push_back(std::move(path));
   }
   stats.num_classes_kept = static_cast<int>(kept.size());
-  stats.pruning_ms = MsSince(t);
+  stats.pruning_ms = watch.ElapsedMs();
 }
 
 void RunJps(const SignedDistanceField2& field, const Eigen::Vector2d& start,
@@ -123,7 +117,7 @@ TopologicalPathSearchResult SearchTopologicalBasePaths(const SignedDistanceField
                                                        const Eigen::Vector2d& goal_W_m,
                                                        const TopologicalPathSearchOptions& options,
                                                        std::stop_token stop) {
-  const Clock::time_point t0 = Clock::now();
+  const Stopwatch total;
   TopologicalPathSearchResult result;
   if (!start_W_m.allFinite() || !goal_W_m.allFinite()) {
     return Fail(std::move(result), Status::kInvalidInput,
@@ -149,7 +143,7 @@ TopologicalPathSearchResult SearchTopologicalBasePaths(const SignedDistanceField
   if (options.mode != BasePathMode::kTopologicalOnly && !stop.stop_requested()) {
     RunJps(field, start_W_m, goal_W_m, options, stop, &result);
   }
-  result.stats.total_ms = MsSince(t0);
+  result.stats.total_ms = total.ElapsedMs();
   if (!result.paths.empty()) {
     result.status = Status::kSuccess;
     return result;

@@ -1,9 +1,9 @@
 #include "core/planning/visibility_prm.h"
 
 #include <algorithm>
-#include <chrono>
 
 #include "core/common/random.h"
+#include "core/common/stopwatch.h"
 #include "core/planning/uvd_equivalence.h"
 
 namespace topay {
@@ -94,8 +94,7 @@ VisibilityPrmGraph BuildVisibilityPrm(const BaseFreeSpace& free_space,
                                       const Eigen::Vector2d& start_W_m,
                                       const Eigen::Vector2d& goal_W_m,
                                       const VisibilityPrmOptions& options, std::stop_token stop) {
-  using Clock = std::chrono::steady_clock;
-  const Clock::time_point t0 = Clock::now();
+  const Stopwatch watch;
   const double resolution = options.uvd_resolution_m > 0.0
                                 ? options.uvd_resolution_m
                                 : free_space.field().geometry().resolution_m;
@@ -108,8 +107,7 @@ VisibilityPrmGraph BuildVisibilityPrm(const BaseFreeSpace& free_space,
       graph.cancelled = true;
       break;
     }
-    if (options.max_time_s > 0.0 &&
-        std::chrono::duration<double>(Clock::now() - t0).count() > options.max_time_s) {
+    if (options.max_time_s > 0.0 && watch.ElapsedS() > options.max_time_s) {
       graph.time_limit_hit = true;
       break;
     }

@@ -1,7 +1,6 @@
 #include "core/robot/whole_body_ik.h"
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <numbers>
 #include <sstream>
@@ -11,6 +10,7 @@
 
 #include "core/common/angles.h"
 #include "core/common/random.h"
+#include "core/common/stopwatch.h"
 
 namespace topay {
 namespace {
@@ -104,6 +104,27 @@ void CheckWholeBodyIkOptions(const WholeBodyIkOptions& o) {
   require(o.max_total_iterations >= 0, "max_total_iterations", ">= 0");
 }
 
+/// The intersection of the lines o1 + s a1 and o2 + t a2 (unit axes): the midpoint of their
+/// closest points (e.g. Eberly, "Distance between lines", the standard 2x2 normal
+/// equations), if the lines are not parallel and pass within kAxesIntersectTolerance_m.
+bool AxesIntersection(const Eigen::Vector3d& o1, const Eigen::Vector3d& a1,
+                      const Eigen::Vector3d& o2, const Eigen::Vector3d& a2,
+                      Eigen::Vector3d* point) {
+  const double b = a1.dot(a2);
+  const double denom = 1.0 - b * b;
+  if (!(denom > 1e-9)) return false;
+  const Eigen::Vector3d r = o1 - o2;
+  const double d = a1.dot(r), e = a2.dot(r);
+  const double s = (b * e - d) / denom;  // along line 1
+  const double t = (e - b * d) / denom;  // along line 2
+  const Eigen::Vector3d c1 = o1 + s * a1, c2 = o2 + t * a2;
+  if (!((c1 - c2).norm() < kAxesIntersectTolerance_m)) return false;
+  *point = 0.5 * (c1 + c2);
+  return true;
+}
+
+}  // namespace
+
 /// Per-Solve scratch: sized once, then the DLS iterations never allocate.
 struct WholeBodyIk::Workspace {
   explicit Workspace(const Kinematics& kinematics)
@@ -179,22 +200,9 @@ void WholeBodyIk::DeriveReachGeometry() {
   // e.g. Eberly, "Distance between lines", the standard 2x2 normal equations).
   Eigen::Vector3d p_BW = cache.X_WE.translation();
   int last_rigid_with_wrist = n - 1;  // chain index whose frame the wrist point is fixed in
-  if (n >= 2 && revolute(n - 1) && revolute(n - 2)) {
-    const Eigen::Vector3d o1 = origin(n - 2), a1 = axis(n - 2);
-    const Eigen::Vector3d o2 = origin(n - 1), a2 = axis(n - 1);
-    const double b = a1.dot(a2);
-    const double denom = 1.0 - b * b;
-    if (denom > 1e-9) {
-      const Eigen::Vector3d r = o1 - o2;
-      const double d = a1.dot(r), e = a2.dot(r);
-      const double s = (b * e - d) / denom;  // along line 1
-      const double t = (e - b * d) / denom;  // along line 2
-      const Eigen::Vector3d c1 = o1 + s * a1, c2 = o2 + t * a2;
-      if ((c1 - c2).norm() < kAxesIntersectTolerance_m) {
-        p_BW = 0.5 * (c1 + c2);
-        last_rigid_with_wrist = n - 3;  // fixed in the frame before joint n-2 moves it
-      }
-    }
+  if (n >= 2 && revolute(n - 1) && revolute(n - 2) &&
+      AxesIntersection(origin(n - 2), axis(n - 2), origin(n - 1), axis(n - 1), &p_BW)) {
+    last_rigid_with_wrist = n - 3;  // fixed in the frame before joint n-2 moves it
   }
   p_EW_ = cache.X_WE.inverse() * p_BW;
 
@@ -462,13 +470,13 @@ std::string WholeBodyIk::CheckQuery(const WholeBodyIkQuery& query) const {
 WholeBodyIkResult WholeBodyIk::Solve(const Eigen::Isometry3d& X_WE_target,
                                      const StateClearanceFn& clearance,
                                      const WholeBodyIkQuery& query) const {
-  const auto start = std::chrono::steady_clock::now();
+  const Stopwatch watch;
   WholeBodyIkResult result;
   auto finish = [&](std::string failure) {
     if (result.solutions.empty()) result.failure_reason = std::move(failure);
     std::stable_sort(result.solutions.begin(), result.solutions.end(),
                      [](const IkSolution& a, const IkSolution& b) { return a.cost < b.cost; });
-    result.solve_time_s = ElapsedSeconds(start);
+    result.solve_time_s = watch.ElapsedS();
     return result;
   };
 
@@ -477,88 +485,110 @@ WholeBodyIkResult WholeBodyIk::Solve(const Eigen::Isometry3d& X_WE_target,
   why = CheckQuery(query);
   if (!why.empty()) return finish("bad input: " + why);
 
-  // Reach band for the shoulder-to-wrist-centre horizontal distance.
   const Eigen::Vector3d p_WW = X_WE_target * p_EW_;
-  const double dz = p_WW.z() - p_BS_.z();
-  result.reach_max_m =
-      options_.reach_max_m > 0.0 ? options_.reach_max_m : options_.stretch_fraction * reach_m_;
-  result.reach_min_m = options_.reach_min_m > 0.0 ? options_.reach_min_m : 0.2 * reach_m_;
-  if (std::abs(dz) >= reach_m_) {
-    std::ostringstream out;
-    out << "target out of reach: its wrist centre is " << dz
-        << " m above the shoulder, the arm reaches " << reach_m_ << " m";
-    return finish(out.str());
-  }
-  double rho_hi = std::sqrt(std::max(result.reach_max_m * result.reach_max_m - dz * dz, 0.0));
-  if (rho_hi <= 0.0) rho_hi = 0.5 * std::sqrt(reach_m_ * reach_m_ - dz * dz);
-  const double rho_lo = std::min(result.reach_min_m, 0.5 * rho_hi);
+  double rho_lo = 0.0, rho_hi = 0.0;
+  why = ReachBand(p_WW, &result, &rho_lo, &rho_hi);
+  if (!why.empty()) return finish(why);
 
   Workspace ws(kinematics_);
   ws.rng = Rng(options_.seed);
   ws.iterations_left = options_.max_total_iterations;
-  auto out_of_budget = [&] {
-    if (ws.iterations_left <= 0 || ElapsedSeconds(start) > options_.time_budget_s) {
-      result.budget_exhausted = true;
-    }
-    return result.budget_exhausted;
-  };
-  auto enough = [&] {
-    return static_cast<int>(result.solutions.size()) >= options_.max_solutions;
-  };
-
   // 1. The hint: as is, else as a seed.
-  if (query.hint) {
-    ws.state = *query.hint;
-    ws.state.yaw_rad = WrapAngle(ws.state.yaw_rad);
-    const JointLimits& limits = kinematics_.model().joint_limits;
-    const bool within_limits = (ws.state.q_rad.array() >= limits.q_min_rad.array()).all() &&
-                               (ws.state.q_rad.array() <= limits.q_max_rad.array()).all();
-    DlsOutcome outcome = Evaluate(X_WE_target, &ws);
-    if (!within_limits) {
-      ws.state.q_rad = ws.state.q_rad.cwiseMax(limits.q_min_rad).cwiseMin(limits.q_max_rad);
-      outcome = Evaluate(X_WE_target, &ws);
-    }
-    bool accepted = outcome.converged &&
-                    Accept(outcome, clearance, query, /*from_hint=*/true, &ws, &result);
-    if (!accepted) {
-      outcome = Attempt(X_WE_target, &result, &ws);
-      accepted = Accept(outcome, clearance, query, /*from_hint=*/true, &ws, &result);
-    }
-    result.hint_used = accepted;
-  }
-
+  if (query.hint) TryHint(X_WE_target, clearance, query, &ws, &result);
   // 2. Base candidates around the target, restarts at each.
+  SearchBases(X_WE_target, p_WW, rho_lo, rho_hi, clearance, query, watch, &ws, &result);
+  result.total_iterations = options_.max_total_iterations - ws.iterations_left;
+  return finish(DescribeNoSolution(result));
+}
+
+std::string WholeBodyIk::ReachBand(const Eigen::Vector3d& p_WW, WholeBodyIkResult* result,
+                                   double* rho_lo, double* rho_hi) const {
+  // Reach band for the shoulder-to-wrist-centre horizontal distance.
+  const double dz = p_WW.z() - p_BS_.z();
+  result->reach_max_m =
+      options_.reach_max_m > 0.0 ? options_.reach_max_m : options_.stretch_fraction * reach_m_;
+  result->reach_min_m = options_.reach_min_m > 0.0 ? options_.reach_min_m : 0.2 * reach_m_;
+  if (std::abs(dz) >= reach_m_) {
+    std::ostringstream out;
+    out << "target out of reach: its wrist centre is " << dz
+        << " m above the shoulder, the arm reaches " << reach_m_ << " m";
+    return out.str();
+  }
+  *rho_hi = std::sqrt(std::max(result->reach_max_m * result->reach_max_m - dz * dz, 0.0));
+  if (*rho_hi <= 0.0) *rho_hi = 0.5 * std::sqrt(reach_m_ * reach_m_ - dz * dz);
+  *rho_lo = std::min(result->reach_min_m, 0.5 * *rho_hi);
+  return "";
+}
+
+void WholeBodyIk::TryHint(const Eigen::Isometry3d& X_WE_target, const StateClearanceFn& clearance,
+                          const WholeBodyIkQuery& query, Workspace* ws,
+                          WholeBodyIkResult* result) const {
+  ws->state = *query.hint;
+  ws->state.yaw_rad = WrapAngle(ws->state.yaw_rad);
+  const JointLimits& limits = kinematics_.model().joint_limits;
+  const bool within_limits = (ws->state.q_rad.array() >= limits.q_min_rad.array()).all() &&
+                             (ws->state.q_rad.array() <= limits.q_max_rad.array()).all();
+  DlsOutcome outcome = Evaluate(X_WE_target, ws);
+  if (!within_limits) {
+    ws->state.q_rad = ws->state.q_rad.cwiseMax(limits.q_min_rad).cwiseMin(limits.q_max_rad);
+    outcome = Evaluate(X_WE_target, ws);
+  }
+  bool accepted = outcome.converged &&
+                  Accept(outcome, clearance, query, /*from_hint=*/true, ws, result);
+  if (!accepted) {
+    outcome = Attempt(X_WE_target, result, ws);
+    accepted = Accept(outcome, clearance, query, /*from_hint=*/true, ws, result);
+  }
+  result->hint_used = accepted;
+}
+
+bool WholeBodyIk::OutOfBudget(const Stopwatch& watch, const Workspace& ws,
+                              WholeBodyIkResult* result) const {
+  if (ws.iterations_left <= 0 || watch.ElapsedS() > options_.time_budget_s) {
+    result->budget_exhausted = true;
+  }
+  return result->budget_exhausted;
+}
+
+void WholeBodyIk::SearchBases(const Eigen::Isometry3d& X_WE_target, const Eigen::Vector3d& p_WW,
+                              double rho_lo, double rho_hi, const StateClearanceFn& clearance,
+                              const WholeBodyIkQuery& query, const Stopwatch& watch,
+                              Workspace* ws, WholeBodyIkResult* result) const {
   const std::vector<Eigen::Vector3d> bases =
-      SampleBasePoses(p_WW, rho_lo, rho_hi, query, &ws.rng);
+      SampleBasePoses(p_WW, rho_lo, rho_hi, query, &ws->rng);
   const JointLimits& limits = kinematics_.model().joint_limits;
   for (const Eigen::Vector3d& base : bases) {
-    if (enough() || out_of_budget()) break;
-    ++result.base_candidates_tried;
+    if (static_cast<int>(result->solutions.size()) >= options_.max_solutions ||
+        OutOfBudget(watch, *ws, result)) {
+      break;
+    }
+    ++result->base_candidates_tried;
     for (int restart = 0; restart < options_.restarts_per_base; ++restart) {
-      if (out_of_budget()) break;
-      ws.state.x_m = base.x();
-      ws.state.y_m = base.y();
-      ws.state.yaw_rad = base.z();
+      if (OutOfBudget(watch, *ws, result)) break;
+      ws->state.x_m = base.x();
+      ws->state.y_m = base.y();
+      ws->state.yaw_rad = base.z();
       if (restart == 0 && query.hint) {
-        ws.state.q_rad = query.hint->q_rad.cwiseMax(limits.q_min_rad).cwiseMin(limits.q_max_rad);
+        ws->state.q_rad = query.hint->q_rad.cwiseMax(limits.q_min_rad).cwiseMin(limits.q_max_rad);
       } else {
-        for (int j = 0; j < ws.state.num_joints(); ++j) {
-          ws.state.q_rad(j) = ws.rng.Uniform(limits.q_min_rad(j), limits.q_max_rad(j));
+        for (int j = 0; j < ws->state.num_joints(); ++j) {
+          ws->state.q_rad(j) = ws->rng.Uniform(limits.q_min_rad(j), limits.q_max_rad(j));
         }
       }
-      const DlsOutcome outcome = Attempt(X_WE_target, &result, &ws);
-      if (Accept(outcome, clearance, query, /*from_hint=*/false, &ws, &result)) break;
+      const DlsOutcome outcome = Attempt(X_WE_target, result, ws);
+      if (Accept(outcome, clearance, query, /*from_hint=*/false, ws, result)) break;
     }
   }
-  result.total_iterations = options_.max_total_iterations - ws.iterations_left;
+}
 
+std::string WholeBodyIk::DescribeNoSolution(const WholeBodyIkResult& result) const {
   std::ostringstream out;
   out << "no valid solution: " << result.base_candidates_tried << " base poses, "
       << result.dls_runs << " DLS runs; rejected " << result.rejected_not_converged
       << " not converged, " << result.rejected_self_collision << " in self-collision, "
       << result.rejected_clearance << " with clearance <= " << options_.min_clearance_m << " m"
       << (result.budget_exhausted ? "; budget exhausted" : "");
-  return finish(out.str());
+  return out.str();
 }
 
 }  // namespace topay

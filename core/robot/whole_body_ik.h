@@ -10,6 +10,7 @@
 #include <Eigen/Core>
 #include <Eigen/Geometry>
 
+#include "core/common/stopwatch.h"
 #include "core/robot/kinematics.h"
 #include "core/robot/self_collision.h"
 #include "core/robot/whole_body_state.h"
@@ -211,6 +212,26 @@ class WholeBodyIk {
               const WholeBodyIkQuery& query, bool from_hint, Workspace* ws,
               WholeBodyIkResult* result) const;
   double RankCost(const IkSolution& solution, const WholeBodyIkQuery& query) const;
+
+  // The steps of Solve.
+  /// The band of horizontal shoulder-to-wrist-centre distances for the wrist centre p_WW:
+  /// result->reach_min_m / reach_max_m and the sampling ring [*rho_lo, *rho_hi]; the failure
+  /// if the target is out of reach, else "".
+  std::string ReachBand(const Eigen::Vector3d& p_WW, WholeBodyIkResult* result, double* rho_lo,
+                        double* rho_hi) const;
+  /// The hint as is (clamped to the joint limits), else as the seed of one attempt.
+  void TryHint(const Eigen::Isometry3d& X_WE_target, const StateClearanceFn& clearance,
+               const WholeBodyIkQuery& query, Workspace* ws, WholeBodyIkResult* result) const;
+  /// Base candidates on the ring around p_WW, restarts_per_base attempts at each, until
+  /// max_solutions or the budget.
+  void SearchBases(const Eigen::Isometry3d& X_WE_target, const Eigen::Vector3d& p_WW,
+                   double rho_lo, double rho_hi, const StateClearanceFn& clearance,
+                   const WholeBodyIkQuery& query, const Stopwatch& watch, Workspace* ws,
+                   WholeBodyIkResult* result) const;
+  /// True (and result->budget_exhausted set) once the iterations or the time budget are used.
+  bool OutOfBudget(const Stopwatch& watch, const Workspace& ws, WholeBodyIkResult* result) const;
+  /// The failure reason when no solution was accepted: the counts of what was rejected.
+  std::string DescribeNoSolution(const WholeBodyIkResult& result) const;
   bool IsDuplicate(const IkSolution& a, const IkSolution& b) const;
 
   const Kinematics& kinematics_;

@@ -28,16 +28,13 @@ void ArcYawTrajectory::Update(const Eigen::Vector2d& p0_W,
   positions_.Integrate(p0_W, minco_.coefficients(), minco_.durations());
 }
 
-ArcYawPoint ArcYawTrajectory::MakePoint() const {
-  ArcYawPoint point;
-  point.state.q_rad.setZero(num_joints_);
+TrajectorySample ArcYawTrajectory::MakePoint() const {
+  TrajectorySample point = MakeTrajectorySample(num_joints_);
   point.jerk.setZero(num_dims());
-  point.qd_radps.setZero(num_joints_);
-  point.qdd_radps2.setZero(num_joints_);
   return point;
 }
 
-void ArcYawTrajectory::Evaluate(double t_s, ArcYawPoint* point) const {
+void ArcYawTrajectory::Evaluate(double t_s, TrajectorySample* point) const {
   if (std::isnan(t_s)) throw std::invalid_argument("ArcYawTrajectory::Evaluate: t is NaN");
   if (!minco_.solved()) throw std::invalid_argument("ArcYawTrajectory::Evaluate: no Update yet");
   if (point->state.q_rad.size() != num_joints_ || point->jerk.size() != num_dims() ||
@@ -72,7 +69,7 @@ void ArcYawTrajectory::Evaluate(double t_s, ArcYawPoint* point) const {
 const Eigen::Isometry3d& ArcYawTrajectory::EndEffectorPose(double t_s,
                                                            const Kinematics& kinematics,
                                                            KinematicsCache* cache,
-                                                           ArcYawPoint* point) const {
+                                                           TrajectorySample* point) const {
   Evaluate(t_s, point);
   kinematics.Update(point->state, cache);
   return cache->X_WE;

@@ -7,22 +7,9 @@
 #include "core/robot/whole_body_state.h"
 #include "core/trajectory/arc_yaw_position_integrator.h"
 #include "core/trajectory/minco_s3.h"
+#include "core/trajectory/trajectory_sample.h"
 
 namespace topay {
-
-/// The arc length-yaw trajectory at one time t (see ArcYawTrajectory::Evaluate).
-struct ArcYawPoint {
-  double t_s = 0.0;
-  WholeBodyState state;        ///< x_m, y_m (Simpson), yaw_rad, q_rad.
-  double s_m = 0.0;            ///< Arc length s(t).
-  double v_mps = 0.0;          ///< v = s'.
-  double omega_radps = 0.0;    ///< omega = yaw'.
-  double a_mps2 = 0.0;         ///< a = s''.
-  double beta_radps2 = 0.0;    ///< beta = yaw''.
-  Eigen::VectorXd jerk;        ///< [s''' (m/s^3), yaw''' (rad/s^3), q''' (rad/s^3)], D = 2 + N.
-  Eigen::VectorXd qd_radps;    ///< q'.
-  Eigen::VectorXd qdd_radps2;  ///< q''.
-};
 
 /// The whole-body trajectory of TopAY (paper Sec. III-B): a MINCO s = 3 trajectory in
 /// D = 2 + N dimensions ordered [s, yaw, q1..qN] (MincoS3), and the base position (x, y)
@@ -56,19 +43,19 @@ class ArcYawTrajectory {
   const ArcYawPositionIntegrator& positions() const { return positions_; }
   double duration_s() const { return minco_.total_duration(); }
 
-  /// A point sized for this trajectory (allocates once; reuse it).
-  ArcYawPoint MakePoint() const;
+  /// A sample sized for this trajectory, jerk included (allocates once; reuse it).
+  TrajectorySample MakePoint() const;
 
   /// Every quantity of the trajectory at t_s (clamped to [0, duration]): pose (x, y between
   /// samples by one Simpson panel from the previous sample, see ArcYawPositionIntegrator),
-  /// v, omega, a, beta, jerk, q, q', q''. Throws std::invalid_argument for a NaN time, a point
+  /// s, v = s', omega = yaw', a = s'', beta = yaw'', jerk, q, q', q''. Throws std::invalid_argument for a NaN time, a point
   /// of the wrong size or before Update.
-  void Evaluate(double t_s, ArcYawPoint* point) const;
+  void Evaluate(double t_s, TrajectorySample* point) const;
 
   /// Evaluates *point at t_s, updates *cache for its whole-body state and returns X_WE, the
   /// end-effector pose in the world.
   const Eigen::Isometry3d& EndEffectorPose(double t_s, const Kinematics& kinematics,
-                                           KinematicsCache* cache, ArcYawPoint* point) const;
+                                           KinematicsCache* cache, TrajectorySample* point) const;
 
   /// Gradient of a cost C(c, T, p_samples) with respect to MINCO's parameters. dC_dp: 2 x
   /// (M K + 1), dC/d(x, y) of every sample (ArcYawPositionIntegrator::positions). On input

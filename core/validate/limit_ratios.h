@@ -1,7 +1,7 @@
 #pragma once
 
 #include "core/robot/robot_model.h"
-#include "core/validate/trajectory_sample.h"
+#include "core/trajectory/trajectory_sample.h"
 #include "core/validate/validation_report.h"
 
 namespace topay {

@@ -10,7 +10,7 @@
 #include "core/robot/robot_model.h"
 #include "core/robot/self_collision.h"
 #include "core/robot/whole_body_state.h"
-#include "core/validate/trajectory_sample.h"
+#include "core/trajectory/trajectory_sample.h"
 #include "core/validate/validation_report.h"
 
 namespace topay {

@@ -5,7 +5,7 @@
 #include <Eigen/Geometry>
 
 #include "core/collision/scene_clearance.h"
-#include "core/validate/trajectory_sample.h"
+#include "core/trajectory/trajectory_sample.h"
 #include "core/validate/trajectory_validator.h"
 #include "core/validate/validation_report.h"
 

@@ -36,7 +36,7 @@
 #include "core/planning/front_end.h"
 #include "core/planning/planner_fields.h"
 #include "core/robot/kinematics.h"
-#include "core/validate/arc_yaw_sampling.h"
+#include "core/trajectory/arc_yaw_sampling.h"
 #include "core/validate/trajectory_validator.h"
 #include "sim/scenes/task_generator.h"
 
@@ -144,7 +144,7 @@ TrajectoryOptimizerOptions BenchOptimizerOptions() {
   o.time_limit_s = EnvDouble("TOPAY_OPTIM_TIME_LIMIT", o.time_limit_s);
   o.stage1_max_iterations =
       static_cast<int>(EnvDouble("TOPAY_OPTIM_STAGE1_ITERATIONS", o.stage1_max_iterations));
-  o.alm_rho_initial = EnvDouble("TOPAY_OPTIM_RHO0", o.alm_rho_initial);
+  o.alm.rho_initial = EnvDouble("TOPAY_OPTIM_RHO0", o.alm.rho_initial);
   o.lbfgs.relative_decrease_delta = EnvDouble("TOPAY_OPTIM_DELTA", o.lbfgs.relative_decrease_delta);
   o.lbfgs.memory = static_cast<int>(EnvDouble("TOPAY_OPTIM_MEMORY", o.lbfgs.memory));
   o.lbfgs.approximate_eigenvalue_scaling =
@@ -174,7 +174,7 @@ void BM_OptimizerOnFrontEndPaths(benchmark::State& state) {
       problem.start = task.start;
       problem.X_WE_goal = task.X_WE_goal;
       problem.base_limits = limits;
-      const TrajectoryOptimizerSummary summary =
+      const BackEndSummary summary =
           optimizer.Optimize(problem, c.front_end.paths.front().path);
       times_ms.push_back(1e3 * summary.total_s);
       iterations.push_back(summary.inner_iterations());

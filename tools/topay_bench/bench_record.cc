@@ -19,7 +19,7 @@ void FillOutcome(const WholeBodyPlanResult& plan, double time_limit_ms, BenchRec
     r->validation = plan::FiguresOf(*chosen->validation);
   }
   if (const CandidateReport* chosen = plan.chosen_candidate()) {
-    const TrajectoryOptimizerSummary& o = chosen->optimization;
+    const BackEndSummary& o = chosen->optimization;
     r->optimizer = OptimizerWork{o.num_pieces,       o.stage1_iterations,     o.stage2_iterations,
                                  o.outer_iterations, o.objective_evaluations, o.penalty_escalations};
   }

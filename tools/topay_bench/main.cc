@@ -7,13 +7,13 @@
 #include <unistd.h>
 
 #include <CLI/CLI.hpp>
-#include <chrono>
 #include <cstdlib>
 #include <exception>
 #include <iostream>
 #include <string>
 
 #include "core/common/heap_retention.h"
+#include "core/common/stopwatch.h"
 #include "tools/common/tool_cli.h"
 #include "tools/topay_bench/bench_run.h"
 #include "tools/topay_bench/progress_line.h"
@@ -68,10 +68,9 @@ void AddFileOptions(CLI::App* app, bench::BenchOptions* o) {
 
 bench::BenchProgress TerminalProgress() {
   if (::isatty(STDERR_FILENO) == 0) return {};
-  const auto start = std::chrono::steady_clock::now();
-  return [start](int done, int total) {
-    const double elapsed_s =
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  const topay::Stopwatch watch;
+  return [watch](int done, int total) {
+    const double elapsed_s = watch.ElapsedS();
     std::cerr << "\r" << bench::ProgressLine(done, total, elapsed_s) << (done == total ? "\n" : "")
               << std::flush;
   };

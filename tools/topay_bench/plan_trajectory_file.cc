@@ -4,25 +4,7 @@
 #include <stdexcept>
 
 namespace topay::bench {
-namespace {
-
-plan::TrajectorySample FileSample(const TrajectorySample& s) {
-  plan::TrajectorySample out;
-  out.t_s = s.t_s;
-  out.x_m = s.state.x_m;
-  out.y_m = s.state.y_m;
-  out.yaw_rad = s.state.yaw_rad;
-  out.v_mps = s.v_mps;
-  out.omega_radps = s.omega_radps;
-  out.a_mps2 = s.a_mps2;
-  out.beta_radps2 = s.beta_radps2;
-  out.q_rad = s.state.q_rad;
-  return out;
-}
-
-}  // namespace
-
-std::vector<plan::TrajectorySample> SampleForFile(const SampledTrajectory& trajectory,
+std::vector<TrajectorySample> SampleForFile(const SampledTrajectory& trajectory,
                                                   double period_s) {
   if (!(period_s >= 1e-4 && period_s <= 10.0)) {
     throw std::invalid_argument("SampleForFile: period_s outside [1e-4, 10] s");
@@ -32,15 +14,16 @@ std::vector<plan::TrajectorySample> SampleForFile(const SampledTrajectory& traje
   }
   const TrajectorySampler sampler = trajectory.make_sampler();
   TrajectorySample sample = MakeTrajectorySample(trajectory.num_joints);
-  std::vector<plan::TrajectorySample> samples;
+  std::vector<TrajectorySample> samples;
   const double end_s = trajectory.duration_s;
   for (long k = 0;; ++k) {
     const double t_s = static_cast<double>(k) * period_s;
     const bool last = !(t_s < end_s - 1e-9);
     sampler(last ? end_s : t_s, &sample);
-    samples.push_back(FileSample(sample));
+    samples.push_back(sample);
+    samples.back().s_m = 0.0;  // integrated below from |v|
     if (samples.size() > 1) {
-      const plan::TrajectorySample& prev = samples[samples.size() - 2];
+      const TrajectorySample& prev = samples[samples.size() - 2];
       samples.back().s_m = prev.s_m + 0.5 * (std::abs(prev.v_mps) + std::abs(sample.v_mps)) *
                                           (samples.back().t_s - prev.t_s);
     }

@@ -3,7 +3,7 @@
 #include <vector>
 
 #include "core/planner/whole_body_plan_result.h"
-#include "core/validate/trajectory_sample.h"
+#include "core/trajectory/trajectory_sample.h"
 #include "tools/topay_plan/trajectory_record.h"
 
 namespace topay::bench {
@@ -13,8 +13,8 @@ namespace topay::bench {
 /// as plan::SampleTrajectory. s_m is the travelled arc length, the trapezoid integral of
 /// |v| over the samples. Throws std::invalid_argument for a period outside [1e-4, 10] s or a
 /// trajectory without a sampler.
-std::vector<plan::TrajectorySample> SampleForFile(const SampledTrajectory& trajectory,
-                                                  double period_s);
+std::vector<TrajectorySample> SampleForFile(const SampledTrajectory& trajectory,
+                                           double period_s);
 
 /// The trajectory file (tools/topay_plan/trajectory_json.h) of a plan with the given metadata: for
 /// the arc length-yaw trajectory its pieces and plan::SampleTrajectory's samples, as

@@ -75,7 +75,7 @@ struct PlanToolOptions {
 struct CandidateRow {
   int index = 0;
   std::string base_path;    ///< e.g. "PRM class 0, 9.8 m" or "JPS, 10.4 m".
-  std::string optimizer;    ///< ToString(TrajectoryOptimizerStatus), or "not started".
+  std::string optimizer;    ///< ToString(BackEndStatus), or "not started".
   double duration_s = 0.0;  ///< 0 if not started.
   int iterations = 0;       ///< L-BFGS iterations.
   double wall_ms = 0.0;

@@ -117,15 +117,15 @@ Json SamplesJson(const TrajectoryFile& file) {
   Json rows = Json::array();
   for (const TrajectorySample& s : file.samples) {
     rows.push_back({{"t", s.t_s},
-                    {"x", s.x_m},
-                    {"y", s.y_m},
-                    {"yaw", s.yaw_rad},
+                    {"x", s.state.x_m},
+                    {"y", s.state.y_m},
+                    {"yaw", s.state.yaw_rad},
                     {"s", s.s_m},
                     {"v", s.v_mps},
                     {"omega", s.omega_radps},
                     {"a", s.a_mps2},
                     {"beta", s.beta_radps2},
-                    {"q", VectorJson(s.q_rad)}});
+                    {"q", VectorJson(s.state.q_rad)}});
   }
   const Json units = {{"t", "s"},       {"x", "m"},       {"y", "m"},
                       {"yaw", "rad"},   {"s", "m"},       {"v", "m/s"},
@@ -338,15 +338,15 @@ TrajectorySample ReadSample(const JsonFieldReader& r, const nlohmann::json& v,
   r.RequireObject(v, path);
   TrajectorySample s;
   s.t_s = NumberAt(r, v, path, "t");
-  s.x_m = NumberAt(r, v, path, "x");
-  s.y_m = NumberAt(r, v, path, "y");
-  s.yaw_rad = NumberAt(r, v, path, "yaw");
+  s.state.x_m = NumberAt(r, v, path, "x");
+  s.state.y_m = NumberAt(r, v, path, "y");
+  s.state.yaw_rad = NumberAt(r, v, path, "yaw");
   s.s_m = NumberAt(r, v, path, "s");
   s.v_mps = NumberAt(r, v, path, "v");
   s.omega_radps = NumberAt(r, v, path, "omega");
   s.a_mps2 = NumberAt(r, v, path, "a");
   s.beta_radps2 = NumberAt(r, v, path, "beta");
-  s.q_rad = r.NumberArray(r.Member(v, path, "q"), Path(path, "q"), num_joints);
+  s.state.q_rad = r.NumberArray(r.Member(v, path, "q"), Path(path, "q"), num_joints);
   return s;
 }
 

@@ -88,13 +88,13 @@ std::vector<TrajectorySample> SampleTrajectory(const ArcYawTrajectory& trajector
                                 " s is outside [1e-4, 10] s");
   }
   RequireSolved(trajectory, "SampleTrajectory");
-  ArcYawPoint point = trajectory.MakePoint();
+  TrajectorySample point = trajectory.MakePoint();
   std::vector<TrajectorySample> samples;
   auto add = [&](double t_s) {
     trajectory.Evaluate(t_s, &point);
-    samples.push_back({t_s, point.state.x_m, point.state.y_m, point.state.yaw_rad, point.s_m,
-                       point.v_mps, point.omega_radps, point.a_mps2, point.beta_radps2,
-                       point.state.q_rad});
+    TrajectorySample& sample = samples.emplace_back(point);
+    sample.t_s = t_s;
+    sample.jerk = Eigen::VectorXd();
   };
   const double end_s = trajectory.duration_s();
   for (long k = 0;; ++k) {

@@ -12,6 +12,7 @@
 #include "core/robot/robot_model.h"
 #include "core/robot/whole_body_state.h"
 #include "core/trajectory/arc_yaw_trajectory.h"
+#include "core/trajectory/trajectory_sample.h"
 #include "core/validate/validation_report.h"
 
 namespace topay::plan {
@@ -67,26 +68,14 @@ struct TrajectoryPieces {
   Eigen::MatrixXd coefficients;  ///< 6M x D, MincoS3's layout (row 6j + k: t^k of piece j).
 };
 
-/// One sample of the trajectory (ArcYawTrajectory::Evaluate).
-struct TrajectorySample {
-  double t_s = 0.0;
-  double x_m = 0.0;
-  double y_m = 0.0;
-  double yaw_rad = 0.0;
-  double s_m = 0.0;
-  double v_mps = 0.0;
-  double omega_radps = 0.0;
-  double a_mps2 = 0.0;
-  double beta_radps2 = 0.0;
-  Eigen::VectorXd q_rad;
-};
-
 /// Everything a trajectory file holds.
 struct TrajectoryFile {
   TrajectoryMetadata metadata;
   std::optional<TrajectoryPieces> pieces;  ///< Unset when the plan failed.
   double sample_period_s = 0.01;
-  std::vector<TrajectorySample> samples;  ///< Empty when the plan failed.
+  /// Empty when the plan failed. The files hold t, pose, s, v, omega, a, beta (q' and q''
+  /// are not written; jerk is left empty).
+  std::vector<TrajectorySample> samples;
 };
 
 /// The pieces of a solved trajectory. Throws std::invalid_argument if it is not solved.

@@ -133,7 +133,7 @@ TimePlotData SampleTimePlotData(const ArcYawTrajectory& trajectory, double perio
   }
   TimePlotData data;
   data.q_rad.assign(trajectory.num_joints(), {});
-  ArcYawPoint point = trajectory.MakePoint();
+  TrajectorySample point = trajectory.MakePoint();
   const double end_s = trajectory.duration_s();
   auto add = [&](double t_s) {
     trajectory.Evaluate(t_s, &point);

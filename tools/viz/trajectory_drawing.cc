@@ -53,7 +53,7 @@ std::vector<Eigen::Vector2d> SampleBasePath(const ArcYawTrajectory& trajectory, 
     throw std::invalid_argument("SampleBasePath: period " + std::to_string(period_s) +
                                 " s is outside [1e-4, 10] s");
   }
-  ArcYawPoint point = trajectory.MakePoint();
+  TrajectorySample point = trajectory.MakePoint();
   std::vector<Eigen::Vector2d> path;
   const double end_s = trajectory.duration_s();
   for (long k = 0;; ++k) {
@@ -80,7 +80,7 @@ void DrawTrajectory(WorldCanvas* canvas, const ArcYawTrajectory& trajectory,
   DrawPath(canvas, SampleBasePath(trajectory, style.path_sample_period_s), style);
 
   KinematicsCache cache = kinematics.MakeCache();
-  ArcYawPoint point = trajectory.MakePoint();
+  TrajectorySample point = trajectory.MakePoint();
   RobotDrawingStyle robot;
   robot.outline_px = style.footprint_outline_px;
   robot.chassis_fill_alpha = style.chassis_fill_alpha;

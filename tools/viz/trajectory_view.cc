@@ -72,7 +72,7 @@ void DrawLayer(const TrajectoryView& view, const TrajectoryViewOptions& options,
   }
   DrawPose(canvas, *view.kinematics, view.start, colors::kStart, options);
   if (view.trajectory != nullptr) {
-    ArcYawPoint end = view.trajectory->MakePoint();
+    TrajectorySample end = view.trajectory->MakePoint();
     view.trajectory->Evaluate(view.trajectory->duration_s(), &end);
     DrawPose(canvas, *view.kinematics, end.state, colors::kGoal, options);
   }

@@ -27,12 +27,12 @@ TEST(OptimizerConfigTest, ShippedFileRestatesTheDefaults) {
   EXPECT_EQ(o.rate_escalation_step, d.rate_escalation_step);
   EXPECT_EQ(o.ee_position_tolerance_m, d.ee_position_tolerance_m);
   EXPECT_EQ(o.ee_orientation_tolerance_rad, d.ee_orientation_tolerance_rad);
-  EXPECT_EQ(o.alm_rho_initial, d.alm_rho_initial);
-  EXPECT_EQ(o.alm_rho_growth, d.alm_rho_growth);
-  EXPECT_EQ(o.alm_rho_max, d.alm_rho_max);
-  EXPECT_EQ(o.alm_max_outer_iterations, d.alm_max_outer_iterations);
-  EXPECT_EQ(o.alm_position_tolerance_m, d.alm_position_tolerance_m);
-  EXPECT_EQ(o.alm_orientation_tolerance_rad, d.alm_orientation_tolerance_rad);
+  EXPECT_EQ(o.alm.rho_initial, d.alm.rho_initial);
+  EXPECT_EQ(o.alm.rho_growth, d.alm.rho_growth);
+  EXPECT_EQ(o.alm.rho_max, d.alm.rho_max);
+  EXPECT_EQ(o.alm.max_outer_iterations, d.alm.max_outer_iterations);
+  EXPECT_EQ(o.alm.position_tolerance_m, d.alm.position_tolerance_m);
+  EXPECT_EQ(o.alm.orientation_tolerance_rad, d.alm.orientation_tolerance_rad);
   EXPECT_EQ(o.warm_start.piece_duration_s, d.warm_start.piece_duration_s);
   EXPECT_EQ(o.warm_start.min_pieces, d.warm_start.min_pieces);
   EXPECT_EQ(o.warm_start.max_pieces, d.warm_start.max_pieces);
@@ -83,8 +83,8 @@ optimizer:
   feasibility: {rate_tolerance: 0.005}
 )", "inline").optimizer;
   EXPECT_EQ(o.time_limit_s, 1.5);
-  EXPECT_EQ(o.alm_rho_initial, 100.0);
-  EXPECT_EQ(o.alm_max_outer_iterations, 4);
+  EXPECT_EQ(o.alm.rho_initial, 100.0);
+  EXPECT_EQ(o.alm.max_outer_iterations, 4);
   EXPECT_EQ(o.warm_start.piece_duration_s, 2.5);
   EXPECT_EQ(o.lbfgs.memory, 32);
   EXPECT_EQ(o.objective.sample_chunks, 3);
@@ -94,7 +94,7 @@ optimizer:
   EXPECT_EQ(o.feasibility.rate_tolerance, 0.005);
   // Untouched fields keep their defaults.
   const TrajectoryOptimizerOptions d;
-  EXPECT_EQ(o.alm_rho_growth, d.alm_rho_growth);
+  EXPECT_EQ(o.alm.rho_growth, d.alm.rho_growth);
   EXPECT_EQ(o.objective.jerk_weights.arc_length, d.objective.jerk_weights.arc_length);
   EXPECT_EQ(o.objective.penalties.base_obstacle_weight, d.objective.penalties.base_obstacle_weight);
 }

@@ -2,6 +2,8 @@
 // FlatnessOptimizer (issue 4, item 7).
 #include "core/optimization/flatness_optimizer.h"
 
+#include <memory>
+
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -13,6 +15,7 @@
 
 #include <gtest/gtest.h>
 
+#include "core/optimization/back_end_factory.h"
 #include "core/optimization/flat_yaw.h"
 #include "core/optimization/flatness_objective.h"
 #include "core/optimization/flatness_trajectory.h"
@@ -258,9 +261,9 @@ TEST_F(FlatnessOptimizerTest, StraightDriveSucceedsAndPassesTheValidator) {
   q_goal(5) = 1.1;
   const WholeBodyState goal = MakeState(4.0, 0.0, 0.0, q_goal);
   const TrajectoryProblem problem = Problem(start, goal);
-  const FlatnessOptimizerSummary summary = optimizer_.Optimize(problem, StraightPath(start, goal));
+  const BackEndSummary summary = optimizer_.Optimize(problem, StraightPath(start, goal));
   std::printf("straight drive\n%s", summary.Report().c_str());
-  ASSERT_EQ(summary.status, TrajectoryOptimizerStatus::kSuccess) << summary.Report();
+  ASSERT_EQ(summary.status, BackEndStatus::kSuccess) << summary.Report();
   const TrajectoryValidator validator(*world_->kinematics, world_->scene, problem.base_limits);
   const ValidationReport report =
       validator.Validate(summary.Sampled(), problem.start, problem.X_WE_goal);
@@ -272,11 +275,11 @@ TEST_F(FlatnessOptimizerTest, TurnInPlaceReturnsCleanlyWithAReason) {
   const WholeBodyState start = MakeState(0.0, 0.0, 0.0, ReadyJoints());
   const WholeBodyState goal = MakeState(0.0, 0.0, std::numbers::pi, ReadyJoints());
   const TrajectoryProblem problem = Problem(start, goal);
-  const FlatnessOptimizerSummary summary = optimizer_.Optimize(problem, StraightPath(start, goal));
+  const BackEndSummary summary = optimizer_.Optimize(problem, StraightPath(start, goal));
   std::printf("turn in place: %s\n%s", summary.success() ? "SUCCEEDED" : "failed",
               summary.Report().c_str());
-  EXPECT_NE(summary.status, TrajectoryOptimizerStatus::kInvalidInput) << summary.reason;
-  EXPECT_NE(summary.status, TrajectoryOptimizerStatus::kCancelled);
+  EXPECT_NE(summary.status, BackEndStatus::kInvalidInput) << summary.reason;
+  EXPECT_NE(summary.status, BackEndStatus::kCancelled);
   EXPECT_EQ(summary.success(), summary.reason.empty()) << summary.reason;
 }
 
@@ -288,7 +291,7 @@ TEST_F(FlatnessOptimizerTest, BadInputFailsCleanlyWithAReason) {
     TrajectoryProblem problem = Problem(start, goal);
     problem.start.x_m = nan;
     const auto summary = optimizer_.Optimize(problem, StraightPath(start, goal));
-    EXPECT_EQ(summary.status, TrajectoryOptimizerStatus::kInvalidInput);
+    EXPECT_EQ(summary.status, BackEndStatus::kInvalidInput);
     EXPECT_NE(summary.reason.find("start state is not finite"), std::string::npos);
     EXPECT_THROW(summary.Sampled(), std::invalid_argument);
   }
@@ -296,26 +299,26 @@ TEST_F(FlatnessOptimizerTest, BadInputFailsCleanlyWithAReason) {
     TrajectoryProblem problem = Problem(start, goal);
     problem.start.q_rad.resize(3);
     const auto summary = optimizer_.Optimize(problem, StraightPath(start, goal));
-    EXPECT_EQ(summary.status, TrajectoryOptimizerStatus::kInvalidInput);
+    EXPECT_EQ(summary.status, BackEndStatus::kInvalidInput);
     EXPECT_NE(summary.reason.find("joints"), std::string::npos) << summary.reason;
   }
   {
     TrajectoryProblem problem = Problem(start, goal);
     problem.X_WE_goal.translation().x() = nan;
     const auto summary = optimizer_.Optimize(problem, StraightPath(start, goal));
-    EXPECT_EQ(summary.status, TrajectoryOptimizerStatus::kInvalidInput);
+    EXPECT_EQ(summary.status, BackEndStatus::kInvalidInput);
     EXPECT_NE(summary.reason.find("X_WE_goal"), std::string::npos) << summary.reason;
   }
   {
     TrajectoryProblem problem = Problem(start, goal);
     problem.base_limits.v_max_mps = -1.0;
     const auto summary = optimizer_.Optimize(problem, StraightPath(start, goal));
-    EXPECT_EQ(summary.status, TrajectoryOptimizerStatus::kInvalidInput);
+    EXPECT_EQ(summary.status, BackEndStatus::kInvalidInput);
     EXPECT_NE(summary.reason.find("base limits"), std::string::npos) << summary.reason;
   }
   {
     const auto summary = optimizer_.Optimize(Problem(start, goal), WholeBodyPath{});
-    EXPECT_EQ(summary.status, TrajectoryOptimizerStatus::kInvalidInput);
+    EXPECT_EQ(summary.status, BackEndStatus::kInvalidInput);
     EXPECT_NE(summary.reason.find("initial path"), std::string::npos) << summary.reason;
   }
   FlatnessOptimizerOptions options;
@@ -325,7 +328,7 @@ TEST_F(FlatnessOptimizerTest, BadInputFailsCleanlyWithAReason) {
                                  options.objective),
                std::invalid_argument);
   options = FlatnessOptimizerOptions();
-  options.alm_rho_initial = 0.0;
+  options.alm.rho_initial = 0.0;
   EXPECT_THROW(FlatnessOptimizer(*world_->kinematics, world_->base_field(), world_->arm_field(),
                                  options),
                std::invalid_argument);
@@ -337,17 +340,20 @@ TEST_F(FlatnessOptimizerTest, BadInputFailsCleanlyWithAReason) {
 
 // ---- Behind the driver's interface ------------------------------------------------------------
 
-TEST_F(FlatnessOptimizerTest, DriverRunsTheBaselineThroughTheParameterisationOption) {
+TEST_F(FlatnessOptimizerTest, FactoryBuildsTheBaselineFromTheParameterisationOption) {
   TrajectoryOptimizerOptions options;
   options.parameterisation = TrajectoryParameterisation::kFlatness;
-  const TrajectoryOptimizer driver(*world_->kinematics, world_->base_field(),
-                                   world_->arm_field(), options);
+  const std::unique_ptr<TrajectoryBackEnd> back_end = MakeTrajectoryBackEnd(
+      *world_->kinematics, world_->base_field(), world_->arm_field(), options);
+  ASSERT_NE(dynamic_cast<const FlatnessOptimizer*>(back_end.get()), nullptr);
+  EXPECT_EQ(back_end->parameterisation(), TrajectoryParameterisation::kFlatness);
+  const TrajectoryBackEnd& driver = *back_end;
   const WholeBodyState start = MakeState(0.0, 0.0, 0.0, ReadyJoints());
   const WholeBodyState goal = MakeState(4.0, 0.0, 0.0, ReadyJoints());
   const TrajectoryProblem problem = Problem(start, goal);
-  const TrajectoryOptimizerSummary summary = driver.Optimize(problem, StraightPath(start, goal));
+  const BackEndSummary summary = driver.Optimize(problem, StraightPath(start, goal));
   std::printf("driver, flatness\n%s", summary.Report().c_str());
-  ASSERT_EQ(summary.status, TrajectoryOptimizerStatus::kSuccess) << summary.Report();
+  ASSERT_EQ(summary.status, BackEndStatus::kSuccess) << summary.Report();
   EXPECT_EQ(summary.parameterisation, TrajectoryParameterisation::kFlatness);
   EXPECT_THROW(summary.MakeTrajectory(), std::invalid_argument);
   const TrajectoryValidator validator(*world_->kinematics, world_->scene, problem.base_limits);
@@ -355,22 +361,25 @@ TEST_F(FlatnessOptimizerTest, DriverRunsTheBaselineThroughTheParameterisationOpt
       validator.Validate(summary.Sampled(), problem.start, problem.X_WE_goal);
   EXPECT_TRUE(report.ok) << report.Report();
   EXPECT_NEAR(summary.Sampled().duration_s, summary.duration_s, 1e-12);
-  // The driver's own checks still come first (reach), for either parameterisation.
+  // The shared input checks (reach) hold for either back end.
   TrajectoryProblem too_high = problem;
   too_high.X_WE_goal.translation().z() = 3.0;
-  const TrajectoryOptimizerSummary bad = driver.Optimize(too_high, StraightPath(start, goal));
-  EXPECT_EQ(bad.status, TrajectoryOptimizerStatus::kInvalidInput);
+  const BackEndSummary bad = driver.Optimize(too_high, StraightPath(start, goal));
+  EXPECT_EQ(bad.status, BackEndStatus::kInvalidInput);
   EXPECT_THROW(bad.Sampled(), std::invalid_argument);
 }
 
-TEST_F(FlatnessOptimizerTest, DefaultDriverSummaryIsSampledAsArcLengthYaw) {
-  const TrajectoryOptimizer driver(*world_->kinematics, world_->base_field(),
-                                   world_->arm_field());
+TEST_F(FlatnessOptimizerTest, DefaultBackEndIsArcLengthYawAndSampledAsSuch) {
+  const std::unique_ptr<TrajectoryBackEnd> back_end = MakeTrajectoryBackEnd(
+      *world_->kinematics, world_->base_field(), world_->arm_field(), {});
+  ASSERT_NE(dynamic_cast<const TrajectoryOptimizer*>(back_end.get()), nullptr);
+  EXPECT_EQ(back_end->parameterisation(), TrajectoryParameterisation::kArcLengthYaw);
+  const TrajectoryBackEnd& driver = *back_end;
   const WholeBodyState start = MakeState(0.0, 0.0, 0.0, ReadyJoints());
   const WholeBodyState goal = MakeState(2.0, 0.0, 0.0, ReadyJoints());
   const TrajectoryProblem problem = Problem(start, goal);
-  const TrajectoryOptimizerSummary summary = driver.Optimize(problem, StraightPath(start, goal));
-  ASSERT_EQ(summary.status, TrajectoryOptimizerStatus::kSuccess) << summary.Report();
+  const BackEndSummary summary = driver.Optimize(problem, StraightPath(start, goal));
+  ASSERT_EQ(summary.status, BackEndStatus::kSuccess) << summary.Report();
   EXPECT_EQ(summary.parameterisation, TrajectoryParameterisation::kArcLengthYaw);
   const SampledTrajectory sampled = summary.Sampled();
   EXPECT_NEAR(sampled.duration_s, summary.MakeTrajectory().duration_s(), 1e-12);
@@ -385,8 +394,9 @@ TEST_F(FlatnessOptimizerTest, ComparesBothParameterisationsOnIdenticalTasks) {
   TrajectoryOptimizerOptions flat_options;
   flat_options.parameterisation = TrajectoryParameterisation::kFlatness;
   const TrajectoryOptimizer arc(*world_->kinematics, world_->base_field(), world_->arm_field());
-  const TrajectoryOptimizer flat(*world_->kinematics, world_->base_field(), world_->arm_field(),
-                                 flat_options);
+  const std::unique_ptr<TrajectoryBackEnd> flat_back_end = MakeTrajectoryBackEnd(
+      *world_->kinematics, world_->base_field(), world_->arm_field(), flat_options);
+  const TrajectoryBackEnd& flat = *flat_back_end;
   const TrajectoryValidator validator(*world_->kinematics, world_->scene, BenchmarkLimits());
   const WholeBodyState start = MakeState(0.0, 0.0, 0.0, ReadyJoints());
   Eigen::VectorXd q2 = ReadyJoints();
@@ -398,14 +408,14 @@ TEST_F(FlatnessOptimizerTest, ComparesBothParameterisationsOnIdenticalTasks) {
   for (const WholeBodyState& goal : goals) {
     const TrajectoryProblem problem = Problem(start, goal);
     const WholeBodyPath path = StraightPath(start, goal);
-    for (const TrajectoryOptimizer* driver : {&arc, &flat}) {
-      const TrajectoryOptimizerSummary summary = driver->Optimize(problem, path);
-      ASSERT_NE(summary.status, TrajectoryOptimizerStatus::kInvalidInput) << summary.reason;
+    for (const TrajectoryBackEnd* driver : {static_cast<const TrajectoryBackEnd*>(&arc), &flat}) {
+      const BackEndSummary summary = driver->Optimize(problem, path);
+      ASSERT_NE(summary.status, BackEndStatus::kInvalidInput) << summary.reason;
       EXPECT_EQ(summary.success(), summary.reason.empty()) << summary.reason;
       const bool valid = summary.success() &&
                          validator.Validate(summary.Sampled(), problem.start, problem.X_WE_goal).ok;
       std::printf("goal (%.1f, %.1f, %.2f) %-9s: %-13s validated %d, %.2f ms, T %.2f s %s\n",
-                  goal.x_m, goal.y_m, goal.yaw_rad, driver == &arc ? "arc-yaw" : "flatness",
+                  goal.x_m, goal.y_m, goal.yaw_rad, driver == &flat ? "flatness" : "arc-yaw",
                   std::string(ToString(summary.status)).c_str(), valid ? 1 : 0,
                   1e3 * summary.total_s, summary.duration_s, summary.reason.c_str());
     }

@@ -151,7 +151,7 @@ inline ExactCheck CheckTrajectoryExactly(const ArcYawTrajectory& trajectory,
   ExactCheck check;
   const SceneClearanceChecker checker(*world.kinematics, world.scene);
   SceneClearanceWorkspace workspace = checker.MakeWorkspace();
-  ArcYawPoint point = trajectory.MakePoint();
+  TrajectorySample point = trajectory.MakePoint();
   const JointLimits& joints = world.model.joint_limits;
   const auto rate = [&](double ratio, const std::string& what) {
     if (ratio > check.max_rate_ratio) {

@@ -214,7 +214,7 @@ TEST_F(TrajectoryObjectiveTest, PackUnpackRoundTripAndTrajectoryEndsAtTheFreeEnd
   EXPECT_TRUE(end.isApprox(warm_.end, 1e-9));
   double cost = 0.0;
   ASSERT_TRUE(objective.Evaluate(x.data(), &cost, nullptr));
-  ArcYawPoint point = objective.trajectory().MakePoint();
+  TrajectorySample point = objective.trajectory().MakePoint();
   objective.trajectory().Evaluate(objective.trajectory().duration_s(), &point);
   EXPECT_NEAR(point.s_m, warm_.end(0), 1e-9);
   EXPECT_NEAR(point.state.yaw_rad, warm_.end(1), 1e-9);

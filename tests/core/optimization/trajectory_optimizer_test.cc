@@ -15,7 +15,7 @@
 
 #include "core/common/angles.h"
 #include "core/common/random.h"
-#include "core/validate/arc_yaw_sampling.h"
+#include "core/trajectory/arc_yaw_sampling.h"
 #include "core/validate/trajectory_validator.h"
 #include "tests/core/optimization/optimization_test_world.h"
 
@@ -44,7 +44,7 @@ ValidationReport Validate(const ArcYawTrajectory& trajectory, const Optimization
   return validator.Validate(SampleArcYaw(trajectory), problem.start, problem.X_WE_goal);
 }
 
-void PrintCheck(const char* what, const TrajectoryOptimizerSummary& summary,
+void PrintCheck(const char* what, const BackEndSummary& summary,
                 const ExactCheck& check) {
   std::printf("%s\n%s  exact check: obstacle %.4f m, self %.4f m, rate ratio %.4f (%s), "
               "joint excess %.2g rad, EE %.4f m / %.4f rad\n",
@@ -86,16 +86,16 @@ TEST_F(TrajectoryOptimizerTest, TurnInPlaceSucceeds) {
   const WholeBodyState start = MakeState(0.0, 0.0, 0.2, ReadyJoints());
   const WholeBodyState goal = MakeState(0.0, 0.0, 0.2 + std::numbers::pi, ReadyJoints());
   const TrajectoryProblem problem = Problem(start, goal);
-  const TrajectoryOptimizerSummary summary =
+  const BackEndSummary summary =
       optimizer_.Optimize(problem, StraightPath(start, goal));
-  ASSERT_EQ(summary.status, TrajectoryOptimizerStatus::kSuccess) << summary.Report();
+  ASSERT_EQ(summary.status, BackEndStatus::kSuccess) << summary.Report();
   const ArcYawTrajectory trajectory = summary.MakeTrajectory();
   const ExactCheck check = CheckTrajectoryExactly(trajectory, *world_, problem.base_limits,
                                                   problem.X_WE_goal);
   PrintCheck("turn in place", summary, check);
   EXPECT_TRUE(check.Passes()) << summary.Report();
   EXPECT_TRUE(Validate(trajectory, *world_, problem).ok);
-  ArcYawPoint point = trajectory.MakePoint();
+  TrajectorySample point = trajectory.MakePoint();
   double max_offset_m = 0.0;
   for (double t = 0.0; t <= trajectory.duration_s(); t += 0.01) {
     trajectory.Evaluate(t, &point);
@@ -114,15 +114,15 @@ TEST_F(TrajectoryOptimizerTest, TurnInPlaceTaskSucceedsWithTheRobotsLimits) {
   const WholeBodyState start = MakeState(0.0, 0.0, 0.2, ReadyJoints());
   const WholeBodyState goal = MakeState(0.0, 0.0, 0.2 + std::numbers::pi, ReadyJoints());
   const TrajectoryProblem problem = Problem(start, goal);
-  const TrajectoryOptimizerSummary summary =
+  const BackEndSummary summary =
       optimizer_.Optimize(problem, StraightPath(start, goal));
-  ASSERT_EQ(summary.status, TrajectoryOptimizerStatus::kSuccess) << summary.Report();
+  ASSERT_EQ(summary.status, BackEndStatus::kSuccess) << summary.Report();
   const ArcYawTrajectory trajectory = summary.MakeTrajectory();
   const ExactCheck check = CheckTrajectoryExactly(trajectory, *world_, problem.base_limits,
                                                   problem.X_WE_goal);
   EXPECT_TRUE(check.Passes()) << summary.Report();
   EXPECT_TRUE(Validate(trajectory, *world_, problem).ok);
-  ArcYawPoint point = trajectory.MakePoint();
+  TrajectorySample point = trajectory.MakePoint();
   double max_offset_m = 0.0;
   for (double t = 0.0; t <= trajectory.duration_s(); t += 0.01) {
     trajectory.Evaluate(t, &point);
@@ -139,9 +139,9 @@ TEST_F(TrajectoryOptimizerTest, DrivesPastObstaclesToAnEndEffectorGoal) {
   q_goal << 0.6, 0.9, -0.3, -1.2, 0.2, 1.0, 0.4;
   const WholeBodyState goal = MakeState(5.0, 0.4, 0.8, q_goal);
   const TrajectoryProblem problem = Problem(start, goal);
-  const TrajectoryOptimizerSummary summary =
+  const BackEndSummary summary =
       optimizer_.Optimize(problem, StraightPath(start, goal));
-  ASSERT_EQ(summary.status, TrajectoryOptimizerStatus::kSuccess) << summary.Report();
+  ASSERT_EQ(summary.status, BackEndStatus::kSuccess) << summary.Report();
   const ArcYawTrajectory trajectory = summary.MakeTrajectory();
   const ExactCheck check =
       CheckTrajectoryExactly(trajectory, *world_, problem.base_limits, problem.X_WE_goal);
@@ -182,8 +182,8 @@ TEST_F(TrajectoryOptimizerTest, InvalidInputFailsCleanlyWithAReason) {
   add("NaN in the path", "path state 2 is not finite").path.states[2].y_m = nan;
   add("path not at the start", "away from the start").path.states[0].x_m = 1.0;
   for (const Case& c : cases) {
-    const TrajectoryOptimizerSummary summary = optimizer_.Optimize(c.problem, c.path);
-    EXPECT_EQ(summary.status, TrajectoryOptimizerStatus::kInvalidInput) << c.name;
+    const BackEndSummary summary = optimizer_.Optimize(c.problem, c.path);
+    EXPECT_EQ(summary.status, BackEndStatus::kInvalidInput) << c.name;
     EXPECT_NE(summary.reason.find(c.expected), std::string::npos)
         << c.name << ": reason \"" << summary.reason << "\"";
     EXPECT_EQ(summary.objective_evaluations, 0) << c.name;  // refused before any work
@@ -200,9 +200,9 @@ TEST_F(TrajectoryOptimizerTest, UnreachableGoalIsNotConvergedWithAReason) {
   TrajectoryProblem problem = Problem(start, start);
   problem.X_WE_goal.translation() = Eigen::Vector3d(4.55, -1.6, 0.6);  // 5 cm from the face
   const WholeBodyPath path = StraightPath(start, MakeState(4.3, -1.0, -0.5, ReadyJoints()));
-  const TrajectoryOptimizerSummary summary = optimizer_.Optimize(problem, path);
+  const BackEndSummary summary = optimizer_.Optimize(problem, path);
   std::printf("%s", summary.Report().c_str());
-  EXPECT_EQ(summary.status, TrajectoryOptimizerStatus::kNotConverged);
+  EXPECT_EQ(summary.status, BackEndStatus::kNotConverged);
   EXPECT_NE(summary.reason.find("arm clearance short by"), std::string::npos) << summary.reason;
   // Infeasible after the ALM: the violated terms' weights were raised as often as allowed.
   // (So it ended by the escalation count, not by its time limit.)
@@ -214,9 +214,9 @@ TEST_F(TrajectoryOptimizerTest, AlreadyCancelledReturnsAtOnce) {
   const WholeBodyState goal = MakeState(3.0, 0.0, 0.0, ReadyJoints());
   std::stop_source source;
   source.request_stop();
-  const TrajectoryOptimizerSummary summary =
+  const BackEndSummary summary =
       optimizer_.Optimize(Problem(start, goal), StraightPath(start, goal), source.get_token());
-  EXPECT_EQ(summary.status, TrajectoryOptimizerStatus::kCancelled);
+  EXPECT_EQ(summary.status, BackEndStatus::kCancelled);
   EXPECT_EQ(summary.objective_evaluations, 0);
 }
 
@@ -227,7 +227,7 @@ TEST_F(TrajectoryOptimizerTest, CancellationIsHonouredPromptly) {
   TrajectoryOptimizerOptions options;
   options.time_limit_s = 30.0;
   options.lbfgs.relative_decrease_delta = 0.0;  // never converges: only the stop ends it
-  options.alm_max_outer_iterations = 1000;
+  options.alm.max_outer_iterations = 1000;
   const TrajectoryOptimizer optimizer(*world_->kinematics, world_->base_field(),
                                       world_->arm_field(), options);
   const WholeBodyState start = MakeState(-3.0, -2.0, 0.0, ReadyJoints());
@@ -235,7 +235,7 @@ TEST_F(TrajectoryOptimizerTest, CancellationIsHonouredPromptly) {
   const TrajectoryProblem problem = Problem(start, goal);
   const WholeBodyPath path = StraightPath(start, goal);
   std::stop_source source;
-  TrajectoryOptimizerSummary summary;
+  BackEndSummary summary;
   std::chrono::steady_clock::time_point returned;
   std::thread worker([&] {
     summary = optimizer.Optimize(problem, path, source.get_token());
@@ -249,7 +249,7 @@ TEST_F(TrajectoryOptimizerTest, CancellationIsHonouredPromptly) {
   std::printf("cancellation latency %.3f ms after %d objective evaluations\n", latency_ms,
               summary.objective_evaluations);
   RecordProperty("cancel_latency_us", static_cast<int>(1e3 * latency_ms));
-  EXPECT_EQ(summary.status, TrajectoryOptimizerStatus::kCancelled) << summary.Report();
+  EXPECT_EQ(summary.status, BackEndStatus::kCancelled) << summary.Report();
   EXPECT_GT(summary.objective_evaluations, 0);  // it was running when the stop came
 }
 
@@ -257,12 +257,12 @@ TEST_F(TrajectoryOptimizerTest, SummaryRebuildsTheOptimizedTrajectory) {
   const WholeBodyState start = MakeState(0.0, 0.0, 0.0, ReadyJoints());
   const WholeBodyState goal = MakeState(3.0, -1.0, -1.0, ReadyJoints());
   const TrajectoryProblem problem = Problem(start, goal);
-  const TrajectoryOptimizerSummary summary =
+  const BackEndSummary summary =
       optimizer_.Optimize(problem, StraightPath(start, goal));
   ASSERT_TRUE(summary.success()) << summary.Report();
   const ArcYawTrajectory trajectory = summary.MakeTrajectory();
   EXPECT_NEAR(trajectory.duration_s(), summary.duration_s, 1e-12);
-  ArcYawPoint point = trajectory.MakePoint();
+  TrajectorySample point = trajectory.MakePoint();
   KinematicsCache cache = world_->kinematics->MakeCache();
   const Eigen::Isometry3d& X_WE =
       trajectory.EndEffectorPose(trajectory.duration_s(), *world_->kinematics, &cache, &point);
@@ -276,7 +276,7 @@ TEST_F(TrajectoryOptimizerTest, SummaryRebuildsTheOptimizedTrajectory) {
 
 TEST(TrajectoryOptimizerOptionsTest, RejectsOptionsOutOfRange) {
   TrajectoryOptimizerOptions options;
-  options.alm_rho_growth = 0.5;
+  options.alm.rho_growth = 0.5;
   EXPECT_THROW(CheckTrajectoryOptimizerOptions(options), std::invalid_argument);
   options = TrajectoryOptimizerOptions();
   options.time_limit_s = 0.0;
@@ -327,7 +327,7 @@ TEST(TrajectoryOptimizerRandomTest, EndEffectorConvergesOnRandomFreeSpaceTasks) 
     problem.start = start;
     problem.X_WE_goal = world->kinematics->EndEffectorPose(goal);
     problem.base_limits = BenchmarkLimits();
-    const TrajectoryOptimizerSummary summary =
+    const BackEndSummary summary =
         optimizer.Optimize(problem, StraightPath(start, goal));
     total_ms += 1e3 * summary.total_s;
     if (!summary.success()) {

@@ -10,7 +10,7 @@
 #include "core/planner/whole_body_planner.h"
 #include "core/planning/planner_fields.h"
 #include "core/robot/kinematics.h"
-#include "core/validate/trajectory_sample.h"
+#include "core/trajectory/trajectory_sample.h"
 #include "tests/common/make_box.h"
 
 namespace topay {

@@ -13,7 +13,7 @@
 #include "core/map/scene_distance_fields.h"
 #include "core/planning/planner_fields.h"
 #include "core/robot/kinematics.h"
-#include "core/validate/arc_yaw_sampling.h"
+#include "core/trajectory/arc_yaw_sampling.h"
 #include "tests/common/make_box.h"
 
 namespace topay {
@@ -117,7 +117,7 @@ TEST_F(WholeBodyPlannerTest, SequentialModeRunsEveryCandidate) {
   // Sequential: no early termination, so no candidate was cut by the window, and the stages
   // add up to no more than the whole.
   for (const CandidateReport& c : result.candidates) {
-    EXPECT_NE(c.optimization.status, TrajectoryOptimizerStatus::kCancelled);
+    EXPECT_NE(c.optimization.status, BackEndStatus::kCancelled);
   }
   EXPECT_GT(result.timings.optimization_ms, 0.0);
   EXPECT_LE(result.timings.front_end_ms + result.timings.optimization_ms + result.timings.wait_ms,

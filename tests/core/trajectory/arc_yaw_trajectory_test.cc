@@ -46,7 +46,7 @@ class ArcYawTrajectoryTest : public ::testing::Test {
 // max over the trajectory of |f''''| per component, f = v (cos yaw, sin yaw), by fourth
 // central differences of the exactly evaluated f on a 10 ms grid.
 Eigen::Vector2d MaxFourthDerivativeOfIntegrand(const ArcYawTrajectory& trajectory) {
-  ArcYawPoint point = trajectory.MakePoint();
+  TrajectorySample point = trajectory.MakePoint();
   const auto f = [&](double t) {
     trajectory.Evaluate(t, &point);
     return Eigen::Vector2d(point.v_mps * std::cos(point.state.yaw_rad),
@@ -67,7 +67,7 @@ Eigen::Vector2d MaxFourthDerivativeOfIntegrand(const ArcYawTrajectory& trajector
 // and x, y follow x' = v cos(yaw), y' = v sin(yaw) up to the Simpson panel's error.
 TEST_F(ArcYawTrajectoryTest, RatesAreDerivativesOfTheirQuantities) {
   constexpr double kStep = 1e-5;
-  ArcYawPoint at = trajectory_.MakePoint(), plus = trajectory_.MakePoint(),
+  TrajectorySample at = trajectory_.MakePoint(), plus = trajectory_.MakePoint(),
               minus = trajectory_.MakePoint();
   // Between samples x(t) = x_l + delta/6 (f(a) + 4 f(a + delta/2) + f(a + delta)), whose
   // error -(delta/2)^5/90 f''''(xi) has the derivative 5 delta^4 / 2880 f'''': with
@@ -102,7 +102,7 @@ TEST_F(ArcYawTrajectoryTest, RatesAreDerivativesOfTheirQuantities) {
 }
 
 TEST_F(ArcYawTrajectoryTest, BoundaryStatesSamplesAndContinuity) {
-  ArcYawPoint point = trajectory_.MakePoint();
+  TrajectorySample point = trajectory_.MakePoint();
   trajectory_.Evaluate(0.0, &point);
   EXPECT_EQ(point.state.x_m, p0_.x());
   EXPECT_EQ(point.state.y_m, p0_.y());
@@ -124,7 +124,7 @@ TEST_F(ArcYawTrajectoryTest, BoundaryStatesSamplesAndContinuity) {
         << "sample " << g;
   }
   // Across the first joint.
-  ArcYawPoint after = trajectory_.MakePoint();
+  TrajectorySample after = trajectory_.MakePoint();
   trajectory_.Evaluate(in_.durations(0) - 1e-9, &point);
   trajectory_.Evaluate(in_.durations(0) + 1e-9, &after);
   EXPECT_NEAR(point.state.x_m, after.state.x_m, 1e-8);
@@ -137,7 +137,7 @@ TEST_F(ArcYawTrajectoryTest, EndEffectorPoseGoesThroughKinematics) {
   ASSERT_EQ(model.num_joints(), kJoints);
   const Kinematics kinematics(model);
   KinematicsCache cache = kinematics.MakeCache();
-  ArcYawPoint point = trajectory_.MakePoint();
+  TrajectorySample point = trajectory_.MakePoint();
   for (double fraction : {0.0, 0.3, 0.77, 1.0}) {
     const double t = fraction * trajectory_.duration_s();
     const Eigen::Isometry3d X_WE = trajectory_.EndEffectorPose(t, kinematics, &cache, &point);
@@ -151,7 +151,7 @@ TEST_F(ArcYawTrajectoryTest, EvaluateAndEndEffectorPoseDoNotAllocate) {
   const RobotModel model = testing::LoadTopayModel();
   const Kinematics kinematics(model);
   KinematicsCache cache = kinematics.MakeCache();
-  ArcYawPoint point = trajectory_.MakePoint();
+  TrajectorySample point = trajectory_.MakePoint();
   testing::AllocationCounter counter;
   double sum = 0.0;
   for (int i = 0; i <= 20; ++i) {
@@ -202,9 +202,9 @@ TEST_F(ArcYawTrajectoryTest, SampleGradientsThroughMincoMatchCentralDifferences)
 }
 
 TEST_F(ArcYawTrajectoryTest, BadUseThrows) {
-  ArcYawPoint point = trajectory_.MakePoint();
+  TrajectorySample point = trajectory_.MakePoint();
   EXPECT_THROW(trajectory_.Evaluate(std::nan(""), &point), std::invalid_argument);
-  ArcYawPoint unsized;
+  TrajectorySample unsized;
   EXPECT_THROW(trajectory_.Evaluate(0.5, &unsized), std::invalid_argument);
   ArcYawTrajectory fresh(kJoints, kPieces, Panels(12));
   EXPECT_THROW(fresh.Evaluate(0.5, &point), std::invalid_argument);

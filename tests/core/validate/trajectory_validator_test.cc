@@ -14,7 +14,7 @@
 
 #include "core/io/robot_loader.h"
 #include "core/robot/self_collision.h"
-#include "core/validate/arc_yaw_sampling.h"
+#include "core/trajectory/arc_yaw_sampling.h"
 #include "tests/common/make_box.h"
 #include "tests/core/robot/allocation_counter.h"
 #include "tests/core/validate/rest_to_rest_motion.h"
@@ -68,7 +68,7 @@ class TrajectoryValidatorTest : public ::testing::Test {
 
   // The trajectory's own end-effector pose at its end.
   Eigen::Isometry3d EndPose() const {
-    ArcYawPoint point = trajectory_.MakePoint();
+    TrajectorySample point = trajectory_.MakePoint();
     trajectory_.Evaluate(trajectory_.duration_s(), &point);
     return kinematics_.EndEffectorPose(point.state);
   }
@@ -90,7 +90,7 @@ class TrajectoryValidatorTest : public ::testing::Test {
 
   // An independent evaluation of the self-collision pair distances at time t_s.
   Eigen::VectorXd PairDistancesAt(double t_s) const {
-    ArcYawPoint point = trajectory_.MakePoint();
+    TrajectorySample point = trajectory_.MakePoint();
     trajectory_.Evaluate(t_s, &point);
     KinematicsCache cache = kinematics_.MakeCache();
     kinematics_.Update(point.state, &cache);
@@ -238,7 +238,7 @@ TEST_F(TrajectoryValidatorTest, CoupledVelocityViolationFailsAlthoughVAndOmegaAr
   EXPECT_NEAR(report.worst_limit.ratio, 1.4, 1e-9);
   EXPECT_NEAR(report.worst_limit.t_s, 4.0, 1e-9);
   // The box limits alone would pass: v and omega each peak at 70 % of their limits.
-  ArcYawPoint point = trajectory_.MakePoint();
+  TrajectorySample point = trajectory_.MakePoint();
   trajectory_.Evaluate(4.0, &point);
   EXPECT_NEAR(point.v_mps / limits.v_max_mps, 0.7, 1e-9);
   EXPECT_NEAR(point.omega_radps / limits.omega_max_radps, 0.7, 1e-9);

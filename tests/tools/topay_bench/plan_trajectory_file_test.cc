@@ -26,12 +26,12 @@ SampledTrajectory Line() {
 }
 
 TEST(PlanTrajectoryFileTest, SamplesEveryPeriodAndTheEnd) {
-  const std::vector<plan::TrajectorySample> samples = SampleForFile(Line(), 0.01);
+  const std::vector<TrajectorySample> samples = SampleForFile(Line(), 0.01);
   ASSERT_EQ(samples.size(), 4u);  // 0, 0.01, 0.02, 0.025
   EXPECT_DOUBLE_EQ(samples[1].t_s, 0.01);
   EXPECT_DOUBLE_EQ(samples[3].t_s, 0.025);
-  EXPECT_DOUBLE_EQ(samples[3].x_m, 0.025);
-  EXPECT_DOUBLE_EQ(samples[2].q_rad(0), 0.04);
+  EXPECT_DOUBLE_EQ(samples[3].state.x_m, 0.025);
+  EXPECT_DOUBLE_EQ(samples[2].state.q_rad(0), 0.04);
   EXPECT_DOUBLE_EQ(samples[0].s_m, 0.0);
   EXPECT_NEAR(samples[3].s_m, 0.025, 1e-15);  // travelled at 1 m/s
 }

@@ -16,7 +16,7 @@
 #include "core/io/robot_loader.h"
 #include "core/optimization/flatness_trajectory.h"
 #include "core/robot/kinematics.h"
-#include "core/validate/arc_yaw_sampling.h"
+#include "core/trajectory/arc_yaw_sampling.h"
 #include "core/validate/trajectory_validator.h"
 #include "tools/topay_bench/bench_options.h"
 #include "tools/topay_bench/bench_task.h"

@@ -21,7 +21,7 @@ WholeBodyPlanResult MakePlan() {
   CandidateReport ok;
   ok.path_index = 0;
   ok.started = true;
-  ok.optimization.status = TrajectoryOptimizerStatus::kSuccess;
+  ok.optimization.status = BackEndStatus::kSuccess;
   ok.optimization.duration_s = 14.25;
   ok.optimization.stage1_iterations = 100;
   ok.optimization.stage2_iterations = 312;

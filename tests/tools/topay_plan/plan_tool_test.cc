@@ -121,15 +121,15 @@ TEST_F(PlanToolTest, PlansAndWritesTheTrajectoryAndBothPlots) {
   }
   EXPECT_EQ(file.samples.back().t_s, trajectory.duration_s());
   EXPECT_LE(file.samples.back().t_s - file.samples[file.samples.size() - 2].t_s, 0.01 + 1e-12);
-  ArcYawPoint point = trajectory.MakePoint();
+  TrajectorySample point = trajectory.MakePoint();
   for (const TrajectorySample& s : file.samples) {
     trajectory.Evaluate(s.t_s, &point);
-    ASSERT_EQ(s.x_m, point.state.x_m) << s.t_s;
-    ASSERT_EQ(s.y_m, point.state.y_m) << s.t_s;
-    ASSERT_EQ(s.yaw_rad, point.state.yaw_rad) << s.t_s;
+    ASSERT_EQ(s.state.x_m, point.state.x_m) << s.t_s;
+    ASSERT_EQ(s.state.y_m, point.state.y_m) << s.t_s;
+    ASSERT_EQ(s.state.yaw_rad, point.state.yaw_rad) << s.t_s;
     ASSERT_EQ(s.v_mps, point.v_mps) << s.t_s;
     ASSERT_EQ(s.omega_radps, point.omega_radps) << s.t_s;
-    ASSERT_EQ(s.q_rad, point.state.q_rad) << s.t_s;
+    ASSERT_EQ(s.state.q_rad, point.state.q_rad) << s.t_s;
   }
   ASSERT_TRUE(file.pieces.has_value());
   EXPECT_EQ(file.pieces->coefficients, trajectory.minco().coefficients());

@@ -139,15 +139,15 @@ void ExpectSameFile(const TrajectoryFile& a, const TrajectoryFile& b) {
   for (std::size_t i = 0; i < a.samples.size(); ++i) {
     const TrajectorySample &s = a.samples[i], &t = b.samples[i];
     ASSERT_EQ(s.t_s, t.t_s) << i;
-    ASSERT_EQ(s.x_m, t.x_m) << i;
-    ASSERT_EQ(s.y_m, t.y_m) << i;
-    ASSERT_EQ(s.yaw_rad, t.yaw_rad) << i;
+    ASSERT_EQ(s.state.x_m, t.state.x_m) << i;
+    ASSERT_EQ(s.state.y_m, t.state.y_m) << i;
+    ASSERT_EQ(s.state.yaw_rad, t.state.yaw_rad) << i;
     ASSERT_EQ(s.s_m, t.s_m) << i;
     ASSERT_EQ(s.v_mps, t.v_mps) << i;
     ASSERT_EQ(s.omega_radps, t.omega_radps) << i;
     ASSERT_EQ(s.a_mps2, t.a_mps2) << i;
     ASSERT_EQ(s.beta_radps2, t.beta_radps2) << i;
-    ASSERT_EQ(s.q_rad, t.q_rad) << i;
+    ASSERT_EQ(s.state.q_rad, t.state.q_rad) << i;
   }
 }
 
@@ -171,13 +171,13 @@ TEST(TrajectoryJsonTest, PlannedTrajectoryRoundTripsExactly) {
   EXPECT_EQ(TrajectoryToJson(read), ReadText(path));
   // The pieces read back rebuild the trajectory whose samples were written.
   const ArcYawTrajectory rebuilt = RebuildTrajectory(*read.pieces);
-  ArcYawPoint point = rebuilt.MakePoint();
+  TrajectorySample point = rebuilt.MakePoint();
   for (const TrajectorySample& s : read.samples) {
     rebuilt.Evaluate(s.t_s, &point);
-    ASSERT_NEAR(point.state.x_m, s.x_m, 1e-9) << s.t_s;
-    ASSERT_NEAR(point.state.y_m, s.y_m, 1e-9) << s.t_s;
+    ASSERT_NEAR(point.state.x_m, s.state.x_m, 1e-9) << s.t_s;
+    ASSERT_NEAR(point.state.y_m, s.state.y_m, 1e-9) << s.t_s;
     ASSERT_NEAR(point.v_mps, s.v_mps, 1e-9) << s.t_s;
-    ASSERT_LT((point.state.q_rad - s.q_rad).cwiseAbs().maxCoeff(), 1e-9) << s.t_s;
+    ASSERT_LT((point.state.q_rad - s.state.q_rad).cwiseAbs().maxCoeff(), 1e-9) << s.t_s;
   }
   std::remove(path.c_str());
 }

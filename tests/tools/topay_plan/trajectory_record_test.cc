@@ -32,18 +32,18 @@ TEST(TrajectoryRecordTest, SamplesAreAtMultiplesOfThePeriodPlusTheExactEnd) {
     ASSERT_EQ(samples[i].t_s, static_cast<double>(i) * 0.01) << i;
   }
   EXPECT_EQ(samples.back().t_s, trajectory.duration_s());
-  ArcYawPoint point = trajectory.MakePoint();
+  TrajectorySample point = trajectory.MakePoint();
   for (std::size_t i : {std::size_t{0}, std::size_t{123}, samples.size() - 1}) {
     trajectory.Evaluate(samples[i].t_s, &point);
-    EXPECT_EQ(samples[i].x_m, point.state.x_m);
-    EXPECT_EQ(samples[i].y_m, point.state.y_m);
-    EXPECT_EQ(samples[i].yaw_rad, point.state.yaw_rad);
+    EXPECT_EQ(samples[i].state.x_m, point.state.x_m);
+    EXPECT_EQ(samples[i].state.y_m, point.state.y_m);
+    EXPECT_EQ(samples[i].state.yaw_rad, point.state.yaw_rad);
     EXPECT_EQ(samples[i].s_m, point.s_m);
     EXPECT_EQ(samples[i].v_mps, point.v_mps);
     EXPECT_EQ(samples[i].omega_radps, point.omega_radps);
     EXPECT_EQ(samples[i].a_mps2, point.a_mps2);
     EXPECT_EQ(samples[i].beta_radps2, point.beta_radps2);
-    EXPECT_EQ(samples[i].q_rad, point.state.q_rad);
+    EXPECT_EQ(samples[i].state.q_rad, point.state.q_rad);
   }
   // A duration that is a whole number of periods gives no duplicate end sample.
   const std::vector<TrajectorySample> whole = SampleTrajectory(MakeTrajectory({1.0, 0.5, 0.5}));
@@ -64,7 +64,7 @@ TEST(TrajectoryRecordTest, PiecesRebuildTheSameTrajectory) {
   EXPECT_EQ(pieces.panels_per_piece, 12);
   const ArcYawTrajectory rebuilt = RebuildTrajectory(pieces);
   EXPECT_LT((rebuilt.minco().coefficients() - pieces.coefficients).cwiseAbs().maxCoeff(), 1e-9);
-  ArcYawPoint a = trajectory.MakePoint(), b = rebuilt.MakePoint();
+  TrajectorySample a = trajectory.MakePoint(), b = rebuilt.MakePoint();
   for (double t_s : {0.0, 0.7, 1.2, 2.5, 3.445}) {
     trajectory.Evaluate(t_s, &a);
     rebuilt.Evaluate(t_s, &b);

@@ -1,4 +1,4 @@
-#include "core/validate/trajectory_sample.h"
+#include "core/trajectory/trajectory_sample.h"
 
 #include <stdexcept>
 #include <string>

@@ -8,21 +8,30 @@
 
 namespace topay {
 
-/// Everything the validator checks of a whole-body trajectory at one time: the pose and the
-/// rates the paper's dynamic limits bound (eqs. (9)-(12)). Independent of the
-/// parameterisation (arc length-yaw, or a flatness baseline).
+/// A whole-body trajectory at one time: the pose and the rates the paper's dynamic limits
+/// bound (eqs. (9)-(12)). The one sample type of the stack, whatever the parameterisation
+/// (arc length-yaw: ArcYawTrajectory::Evaluate; the flatness baseline:
+/// FlatnessTrajectory::Evaluate), used by the optimizer's checks, the validator and the
+/// trajectory files.
 struct TrajectorySample {
   double t_s = 0.0;
   WholeBodyState state;           ///< x_m, y_m, yaw_rad, q_rad (N).
-  double v_mps = 0.0;             ///< Base forward speed.
+  /// Arc length s(t) (m): the arc length-yaw trajectory's own dimension; other
+  /// parameterisations leave it 0 unless their sampler integrates it.
+  double s_m = 0.0;
+  double v_mps = 0.0;             ///< Base forward speed (arc length-yaw: s').
   double omega_radps = 0.0;       ///< Yaw rate.
   double a_mps2 = 0.0;            ///< Base forward acceleration (dv/dt).
   double beta_radps2 = 0.0;       ///< Yaw acceleration.
   Eigen::VectorXd qd_radps;       ///< Joint velocities (N).
   Eigen::VectorXd qdd_radps2;     ///< Joint accelerations (N).
+  /// Arc length-yaw only: [s''' (m/s^3), yaw''' (rad/s^3), q''' (rad/s^3)], D = 2 + N
+  /// (sized by ArcYawTrajectory::MakePoint); empty elsewhere.
+  Eigen::VectorXd jerk;
 };
 
-/// A sample sized for num_joints joints, every value zero (allocates once; reuse it).
+/// A sample sized for num_joints joints (jerk empty), every value zero (allocates once;
+/// reuse it).
 TrajectorySample MakeTrajectorySample(int num_joints);
 
 /// Writes every field of *sample (sized by MakeTrajectorySample) for time t_s in

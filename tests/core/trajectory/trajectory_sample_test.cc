@@ -1,4 +1,4 @@
-#include "core/validate/trajectory_sample.h"
+#include "core/trajectory/trajectory_sample.h"
 
 #include <stdexcept>
 
@@ -16,6 +16,8 @@ TEST(TrajectorySampleTest, MakeSizesEveryJointVectorWithZeros) {
   EXPECT_TRUE(sample.qd_radps.isZero());
   EXPECT_TRUE(sample.qdd_radps2.isZero());
   EXPECT_EQ(sample.v_mps, 0.0);
+  EXPECT_EQ(sample.s_m, 0.0);
+  EXPECT_EQ(sample.jerk.size(), 0);  // arc length-yaw only (ArcYawTrajectory::MakePoint)
   EXPECT_EQ(MakeTrajectorySample(0).qd_radps.size(), 0);
   EXPECT_THROW(MakeTrajectorySample(-1), std::invalid_argument);
 }

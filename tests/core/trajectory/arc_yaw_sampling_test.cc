@@ -1,4 +1,4 @@
-#include "core/validate/arc_yaw_sampling.h"
+#include "core/trajectory/arc_yaw_sampling.h"
 
 #include <stdexcept>
 
@@ -31,7 +31,7 @@ TEST_F(SampleArcYawTest, CopiesEveryQuantityOfEvaluate) {
   EXPECT_EQ(sampled.num_joints, kJoints);
   const TrajectorySampler sampler = sampled.make_sampler();
   TrajectorySample sample = MakeTrajectorySample(kJoints);
-  ArcYawPoint point = trajectory_.MakePoint();
+  TrajectorySample point = trajectory_.MakePoint();
   for (int trial = 0; trial < 30; ++trial) {
     const double t = trial == 0 ? trajectory_.duration_s()
                                 : rng_.Uniform(0.0, trajectory_.duration_s());
@@ -42,6 +42,7 @@ TEST_F(SampleArcYawTest, CopiesEveryQuantityOfEvaluate) {
     EXPECT_EQ(sample.state.y_m, point.state.y_m);
     EXPECT_EQ(sample.state.yaw_rad, point.state.yaw_rad);
     EXPECT_EQ(sample.state.q_rad, point.state.q_rad);
+    EXPECT_EQ(sample.s_m, point.s_m);
     EXPECT_EQ(sample.v_mps, point.v_mps);
     EXPECT_EQ(sample.omega_radps, point.omega_radps);
     EXPECT_EQ(sample.a_mps2, point.a_mps2);

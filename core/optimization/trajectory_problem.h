@@ -1,0 +1,39 @@
+#pragma once
+
+#include <string>
+
+#include <Eigen/Geometry>
+
+#include "core/map/signed_distance_field3.h"
+#include "core/robot/kinematics.h"
+#include "core/robot/robot_model.h"
+#include "core/robot/whole_body_state.h"
+
+namespace topay {
+
+/// The problem's inputs besides the fields and the robot (paper Sec. III-C).
+struct TrajectoryProblem {
+  WholeBodyState start;           ///< At rest; s(0) = 0.
+  Eigen::Isometry3d X_WE_goal = Eigen::Isometry3d::Identity();  ///< p_e of eq. (7).
+  BaseLimits base_limits;         ///< Caller-chosen (the benchmark: omega_max 1.25).
+};
+
+/// The heights (m, world z) the end-effector frame's origin can reach: joint 1's height -+
+/// the chain's length bound from joint 1 to E (the first movable joint of E's chain stays at
+/// a fixed height over the base; from it, E is at most the sum of the chain's fixed offsets
+/// away: triangle inequality).
+struct ReachHeights {
+  double min_z_m = 0.0;
+  double max_z_m = 0.0;
+};
+ReachHeights ComputeReachHeights(const Kinematics& kinematics);
+
+/// What every back end checks before it starts: the start state (joint count, finite, joints
+/// within limits), the base limits (finite, > 0), the goal pose (finite, orthonormal), its
+/// height within `reach` and the target not clearly inside an obstacle on the 3D field
+/// (negative by more than a cell). Returns the reason the inputs are unusable, or "".
+std::string CheckTrajectoryProblem(const TrajectoryProblem& problem, const Kinematics& kinematics,
+                                   const SignedDistanceField3& arm_field,
+                                   const ReachHeights& reach);
+
+}  // namespace topay
