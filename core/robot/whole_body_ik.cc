@@ -60,8 +60,24 @@ bool IsValidPose(const Eigen::Isometry3d& X, std::string* why) {
 }
 
 
-double ElapsedSeconds(std::chrono::steady_clock::time_point start) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+
+/// The intersection of the lines o1 + s a1 and o2 + t a2 (unit axes): the midpoint of their
+/// closest points (e.g. Eberly, "Distance between lines", the standard 2x2 normal
+/// equations), if the lines are not parallel and pass within kAxesIntersectTolerance_m.
+bool AxesIntersection(const Eigen::Vector3d& o1, const Eigen::Vector3d& a1,
+                      const Eigen::Vector3d& o2, const Eigen::Vector3d& a2,
+                      Eigen::Vector3d* point) {
+  const double b = a1.dot(a2);
+  const double denom = 1.0 - b * b;
+  if (!(denom > 1e-9)) return false;
+  const Eigen::Vector3d r = o1 - o2;
+  const double d = a1.dot(r), e = a2.dot(r);
+  const double s = (b * e - d) / denom;  // along line 1
+  const double t = (e - b * d) / denom;  // along line 2
+  const Eigen::Vector3d c1 = o1 + s * a1, c2 = o2 + t * a2;
+  if (!((c1 - c2).norm() < kAxesIntersectTolerance_m)) return false;
+  *point = 0.5 * (c1 + c2);
+  return true;
 }
 
 }  // namespace
@@ -103,27 +119,6 @@ void CheckWholeBodyIkOptions(const WholeBodyIkOptions& o) {
   require(o.time_budget_s > 0.0, "time_budget_s", "> 0 (+infinity: no limit)");
   require(o.max_total_iterations >= 0, "max_total_iterations", ">= 0");
 }
-
-/// The intersection of the lines o1 + s a1 and o2 + t a2 (unit axes): the midpoint of their
-/// closest points (e.g. Eberly, "Distance between lines", the standard 2x2 normal
-/// equations), if the lines are not parallel and pass within kAxesIntersectTolerance_m.
-bool AxesIntersection(const Eigen::Vector3d& o1, const Eigen::Vector3d& a1,
-                      const Eigen::Vector3d& o2, const Eigen::Vector3d& a2,
-                      Eigen::Vector3d* point) {
-  const double b = a1.dot(a2);
-  const double denom = 1.0 - b * b;
-  if (!(denom > 1e-9)) return false;
-  const Eigen::Vector3d r = o1 - o2;
-  const double d = a1.dot(r), e = a2.dot(r);
-  const double s = (b * e - d) / denom;  // along line 1
-  const double t = (e - b * d) / denom;  // along line 2
-  const Eigen::Vector3d c1 = o1 + s * a1, c2 = o2 + t * a2;
-  if (!((c1 - c2).norm() < kAxesIntersectTolerance_m)) return false;
-  *point = 0.5 * (c1 + c2);
-  return true;
-}
-
-}  // namespace
 
 /// Per-Solve scratch: sized once, then the DLS iterations never allocate.
 struct WholeBodyIk::Workspace {
