@@ -17,8 +17,8 @@ void CheckAugmentedLagrangianOptions(const AugmentedLagrangianOptions& o,
   require(o.rho_growth >= 1.0, "rho_growth must be >= 1");
   require(o.rho_max >= o.rho_initial, "rho_max must be >= rho_initial");
   require(o.max_outer_iterations >= 1, "max_outer_iterations must be >= 1");
-  require(o.position_tolerance_m > 0.0 && o.orientation_tolerance_rad > 0.0,
-          "position_tolerance_m and orientation_tolerance_rad must be > 0");
+  require(o.position_tolerance_m > 0.0, "position_tolerance_m must be > 0");
+  require(o.orientation_tolerance_rad > 0.0, "orientation_tolerance_rad must be > 0");
 }
 
 bool AlmConverged(const AugmentedLagrangianOptions& options, const Vector6d& r) {

@@ -6,6 +6,7 @@
 #include <utility>
 
 #include "core/collision/scene_clearance.h"
+#include "core/collision/start_target_diagnosis.h"
 #include "core/planner/whole_body_planner.h"
 #include "core/planning/planner_fields.h"
 #include "core/planning/stop_deadline.h"
@@ -35,8 +36,21 @@ InputProblem Problem(PlanStatus status, FrontEndStatus front_end, std::string re
   return {status, front_end, std::move(reason)};
 }
 
-InputProblem CheckStart(const Kinematics& kinematics, const SceneClearanceChecker& checker,
-                        const WholeBodyState& start, const TrajectoryValidatorOptions& margins) {
+// The exact diagnosis's words (start_target_diagnosis.h: which joint, box and body) for a
+// problem found here, or `fallback` if it finds none at these margins.
+std::string StartReason(const Kinematics& kinematics, const Scene& scene,
+                        const WholeBodyState& start, const TrajectoryValidatorOptions& margins,
+                        const std::string& fallback) {
+  StartDiagnosisOptions options;
+  options.obstacle_margin_m = margins.obstacle_margin_m;
+  options.self_margin_m = margins.self_margin_m;
+  const auto diagnosis = DiagnoseStartState(kinematics, scene, start, options);
+  return diagnosis ? "start state: " + *diagnosis : fallback;
+}
+
+InputProblem CheckStart(const Kinematics& kinematics, const Scene& scene,
+                        const SceneClearanceChecker& checker, const WholeBodyState& start,
+                        const TrajectoryValidatorOptions& margins) {
   const RobotModel& model = kinematics.model();
   std::ostringstream why;
   if (start.num_joints() != kinematics.num_joints() || !start.IsFinite()) {
@@ -47,7 +61,8 @@ InputProblem CheckStart(const Kinematics& kinematics, const SceneClearanceChecke
   for (int j = 0; j < kinematics.num_joints(); ++j) {
     if (start.q_rad(j) < limits.q_min_rad(j) || start.q_rad(j) > limits.q_max_rad(j)) {
       why << "start state: joint limit (" << model.joint_names[j] << ")";
-      return Problem(PlanStatus::kFrontEndFailed, FrontEndStatus::kStartInvalid, why.str());
+      return Problem(PlanStatus::kFrontEndFailed, FrontEndStatus::kStartInvalid,
+                     StartReason(kinematics, scene, start, margins, why.str()));
     }
   }
   const SceneClearance c = checker.Compute(start);
@@ -64,7 +79,8 @@ InputProblem CheckStart(const Kinematics& kinematics, const SceneClearanceChecke
   } else {
     return {};
   }
-  return Problem(PlanStatus::kFrontEndFailed, FrontEndStatus::kStartInvalid, why.str());
+  return Problem(PlanStatus::kFrontEndFailed, FrontEndStatus::kStartInvalid,
+                 StartReason(kinematics, scene, start, margins, why.str()));
 }
 
 InputProblem CheckTarget(const Scene& scene, const SceneClearanceChecker& checker,
@@ -83,7 +99,9 @@ InputProblem CheckTarget(const Scene& scene, const SceneClearanceChecker& checke
   } else {
     return {};
   }
-  return Problem(PlanStatus::kFrontEndFailed, FrontEndStatus::kNoGoal, why.str());
+  const auto diagnosis = DiagnoseTarget(scene, X_WE_goal);  // below the floor, which box, ...
+  return Problem(PlanStatus::kFrontEndFailed, FrontEndStatus::kNoGoal,
+                 diagnosis ? "target: " + *diagnosis : why.str());
 }
 
 }  // namespace
@@ -109,7 +127,7 @@ ScenePlan PlanInScene(const Kinematics& kinematics, const Scene& scene,
   // 1. Start and target, exactly (no field yet).
   {
     const SceneClearanceChecker checker(kinematics, scene);
-    InputProblem problem = CheckStart(kinematics, checker, start, options.validator);
+    InputProblem problem = CheckStart(kinematics, scene, checker, start, options.validator);
     if (problem.reason.empty()) problem = CheckTarget(scene, checker, X_WE_goal);
     result.timings.start_check_ms = MsBetween(t0, Clock::now());
     if (!problem.reason.empty()) {

@@ -1,11 +1,11 @@
 #include "tools/topay_plan/plan_tool.h"
 
-#include <chrono>
 #include <sstream>
 
 #include "core/io/planner_config.h"
 #include "core/io/robot_loader.h"
 #include "core/map/scene_distance_fields.h"
+#include "core/planner/plan_in_scene.h"
 #include "core/planner/whole_body_planner.h"
 #include "core/planning/planner_fields.h"
 #include "core/robot/kinematics.h"
@@ -20,11 +20,6 @@
 
 namespace topay::plan {
 namespace {
-
-double MillisecondsSince(std::chrono::steady_clock::time_point start) {
-  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
-      .count();
-}
 
 // The planner options in force: the YAML's (or the defaults), then the flags that were given.
 WholeBodyPlannerOptions PlannerOptionsInForce(const PlanToolOptions& o, const RobotModel& model,
@@ -75,11 +70,12 @@ std::string PlanTitle(const PlanToolSummary& s) {
   return out.str();
 }
 
-void WritePathPng(const PlanToolOptions& o, const PlanQuery& q, const SceneDistanceFields& fields,
-                  const Kinematics& kinematics, PlanToolSummary* s) {
+void WritePathPng(const PlanToolOptions& o, const PlanQuery& q,
+                  const std::optional<SceneDistanceFields>& fields, const Kinematics& kinematics,
+                  PlanToolSummary* s) {
   viz::TrajectoryView view;
   view.scene = &q.scene;
-  view.base_field = &fields.base_field_2d;
+  view.base_field = fields ? &fields->base_field_2d : nullptr;  // none if the start was refused
   view.kinematics = &kinematics;
   view.start = q.start;
   view.X_WE_goal = q.X_WE_goal;
@@ -129,24 +125,24 @@ PlanToolSummary RunPlanTool(const PlanToolOptions& options) {
   const WholeBodyPlannerOptions planner_options = PlannerOptionsInForce(options, model, &choice);
   FillPlannerSettings(planner_options, choice, &summary);
 
+  // One time limit over everything: the exact start and target check, the fields, the plan.
   const SceneDistanceFieldsOptions field_options = PlannerFieldOptions(kinematics);
-  const auto map_start = std::chrono::steady_clock::now();
-  const SceneDistanceFields fields = BuildSceneDistanceFields(query.scene, field_options);
-  summary.map_build_ms = MillisecondsSince(map_start);
+  ScenePlan scene_plan =
+      PlanInScene(kinematics, query.scene, planner_options, query.start, query.X_WE_goal,
+                  summary.used_goal_hint ? query.goal_state : std::nullopt, {}, field_options);
+  summary.plan = std::move(scene_plan.result);
+  summary.map_build_ms = summary.plan.timings.map_ms;
   summary.arm_field_resolution_m = field_options.resolution_m;
   summary.base_field_resolution_m = field_options.base_resolution_m > 0.0
                                         ? field_options.base_resolution_m
                                         : field_options.resolution_m;
-  summary.arm_field_cells = fields.field_3d.geometry().dims;
-
-  const WholeBodyPlanner planner(kinematics, fields.base_field_2d, fields.field_3d, query.scene,
-                                 planner_options);
-  summary.plan = planner.Plan(query.start, query.X_WE_goal,
-                              summary.used_goal_hint ? query.goal_state : std::nullopt);
+  if (scene_plan.fields) summary.arm_field_cells = scene_plan.fields->field_3d.geometry().dims;
   summary.candidates = CandidateRows(summary.plan);
 
   if (!options.trajectory_json_out.empty()) WriteJson(options, &summary);
-  if (!options.path_png_out.empty()) WritePathPng(options, query, fields, kinematics, &summary);
+  if (!options.path_png_out.empty()) {
+    WritePathPng(options, query, scene_plan.fields, kinematics, &summary);
+  }
   if (!options.time_png_out.empty()) WriteTimePng(options, kinematics, &summary);
   return summary;
 }

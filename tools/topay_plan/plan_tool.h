@@ -104,7 +104,7 @@ struct PlanToolSummary {
   int num_threads = 0;
   double time_limit_s = 0.0;
   bool sequential = false;
-  // Map (built before planning; not part of the planning time).
+  // Map (built inside the plan, under its time limit; 0 if the start or target was refused).
   double map_build_ms = 0.0;
   double arm_field_resolution_m = 0.0;
   double base_field_resolution_m = 0.0;

@@ -56,7 +56,7 @@ void ReportInputs(const PlanToolSummary& s, std::ostream& out) {
   out << "map:        built in " << Number(s.map_build_ms, 1) << " ms (arm 3D field "
       << Number(s.arm_field_resolution_m * 100.0, 0) << " cm, " << s.arm_field_cells.x() << " x "
       << s.arm_field_cells.y() << " x " << s.arm_field_cells.z() << " cells; base 2D field "
-      << Number(s.base_field_resolution_m * 100.0, 0) << " cm), not part of the planning time\n";
+      << Number(s.base_field_resolution_m * 100.0, 0) << " cm), inside the planning time and its limit\n";
   out << "planner:    " << (s.sequential ? "sequential" : "parallel") << ", " << s.num_threads
       << " threads, time limit " << Number(s.time_limit_s, 1) << " s\n";
 }

@@ -43,7 +43,10 @@ TEST(AugmentedLagrangianTest, CheckNamesTheOwnerAndTheField) {
   o.max_outer_iterations = 0;
   EXPECT_NE(message(o).find("alm.max_outer_iterations"), std::string::npos);
   o = {};
-  o.orientation_tolerance_rad = 0.0;
+  o.orientation_tolerance_rad = 0.0;  // each tolerance is named alone
+  EXPECT_NE(message(o).find("alm.orientation_tolerance_rad"), std::string::npos);
+  o = {};
+  o.position_tolerance_m = -1.0;
   EXPECT_NE(message(o).find("alm.position_tolerance_m"), std::string::npos);
 }
 

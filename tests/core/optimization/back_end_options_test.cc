@@ -34,7 +34,10 @@ TEST(BackEndOptionsTest, DefaultsPassAndBadFieldsAreNamed) {
   EXPECT_EQ(CheckMessage(o), "");
   o = {};
   o.ee_position_tolerance_m = -0.01;
-  EXPECT_NE(CheckMessage(o).find("end-effector tolerances"), std::string::npos);
+  EXPECT_NE(CheckMessage(o).find("ee_position_tolerance_m"), std::string::npos);
+  o = {};
+  o.ee_orientation_tolerance_rad = 0.0;
+  EXPECT_NE(CheckMessage(o).find("ee_orientation_tolerance_rad"), std::string::npos);
   o = {};
   o.alm.rho_growth = 0.5;
   EXPECT_NE(CheckMessage(o).find("Owner: alm.rho_growth"), std::string::npos);

@@ -151,7 +151,7 @@ TEST_F(PlanToolTest, PlansAndWritesTheTrajectoryAndBothPlots) {
   const std::string report = summary.Report();
   for (const char* part :
        {"SUCCESS", "search", "sampling", "optimization", "wait", "total", "duration",
-        "min clearance", "worst constraint ratio", "map:", "not part of the planning time",
+        "min clearance", "worst constraint ratio", "map:", "inside the planning time",
         "omega_max 1.25", "benchmark", "(chosen)", "verdict"}) {
     EXPECT_NE(report.find(part), std::string::npos) << part << "\n" << report;
   }
