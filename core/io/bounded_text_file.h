@@ -6,7 +6,7 @@
 namespace topay {
 
 /// Size limits of the files the loaders read (bytes). A file above its limit is an error, not
-/// an allocation of all memory (the issue's `--scene /dev/zero`).
+/// an allocation of all memory (e.g. `--scene-file /dev/zero`).
 /// URDF, robot YAML and planner YAML: hand-written descriptions of a few kB (the shipped
 /// topay_mm.urdf is 9 kB).
 inline constexpr std::size_t kMaxConfigFileBytes = std::size_t{16} << 20;  // 16 MiB

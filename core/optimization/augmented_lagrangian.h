@@ -10,9 +10,9 @@ namespace topay {
 /// eq. (7)), the outer loop both back ends (arc length-yaw and the flatness baseline) run
 /// around their L-BFGS solves: minimise with (lambda, rho); lambda <- lambda + rho r;
 /// rho <- min(gamma rho, beta), until |r| is within tolerance or the outer limit.
-/// Defaults: the facts sheet's "Trajectory optimizer figures" unless stated.
+/// Defaults: the authors' code's "Trajectory optimizer figures" unless stated.
 struct AugmentedLagrangianOptions {
-  double rho_initial = 1e4;  ///< rho_0 (facts sheet).
+  double rho_initial = 1e4;  ///< rho_0 (the authors' code).
   double rho_growth = 10.0;  ///< gamma: rho *= growth after every outer iteration...
   double rho_max = 1e10;     ///< beta: ...up to this.
   int max_outer_iterations = 8;

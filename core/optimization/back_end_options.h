@@ -10,7 +10,7 @@ namespace topay {
 
 /// The options every trajectory back end takes (TrajectoryBackEnd: the arc length-yaw
 /// TrajectoryOptimizer and the flatness baseline FlatnessOptimizer), Ceres style; each
-/// back end's options struct derives from it and adds its own. Defaults: the facts sheet's
+/// back end's options struct derives from it and adds its own. Defaults: the authors' code's
 /// "Trajectory optimizer figures"; departures are stated field by field.
 struct BackEndOptions {
   /// Piece count and initial durations (continuous-profile time / 1.0 s, >= 3 pieces).
@@ -19,7 +19,7 @@ struct BackEndOptions {
   LbfgsOptions lbfgs;
   /// The outer PHR-ALM loop on FK(s_f) = p_e, eq. (7).
   AugmentedLagrangianOptions alm;
-  /// The end-effector tolerances of a success (the and the validator's).
+  /// The end-effector tolerances of a success (the validator's: 0.01 m / 0.02 rad).
   double ee_position_tolerance_m = 0.01;
   double ee_orientation_tolerance_rad = 0.02;
   /// Wall-clock bound on one Optimize call (s), warm start to the final check (the check

@@ -7,7 +7,7 @@
 namespace topay {
 
 /// The base's heading and rates from the flat outputs' derivatives (REMANI-style flatness
-/// baseline; facts sheet "REMANI (the baseline) in one paragraph"), forward driving only
+/// baseline; REMANI's flatness, paper Sec. III-B), forward driving only
 /// (eta = +1):
 ///   yaw   = atan2(dy, dx),                           v = |u|,   u = (dx, dy) = p',
 ///   a     = (u . w) / v,                             w = p'',

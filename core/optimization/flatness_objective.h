@@ -21,7 +21,7 @@
 
 namespace topay {
 
-/// Weights and sampling of FlatnessObjective. Defaults: the facts sheet's REMANI paragraph
+/// Weights and sampling of FlatnessObjective. Defaults: REMANI's public code where it has a figure
 /// where it has a figure, else TrajectoryObjectiveOptions' values.
 struct FlatnessObjectiveOptions {
   /// Jerk weights: x and y both take the arc length weight, the joints theirs (yaw is not a
@@ -67,7 +67,7 @@ struct FlatnessBreakdown {
   double total = 0.0;
 };
 
-/// The REMANI-style flatness baseline's objective (issue 4, item 7): base position x(t),
+/// The REMANI-style flatness baseline's objective : base position x(t),
 /// y(t) and the joints as ONE MINCO s = 3 trajectory (minimum jerk; REMANI uses minimum snap,
 /// s = 4: our MINCO is s = 3), yaw = atan2(dy, dx) (forward only, eta = +1), decision vector
 ///   x = [tau (M) | inner waypoints, (M - 1) blocks of D = 2 + N: x, y, xi_1..xi_N |

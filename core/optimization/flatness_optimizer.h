@@ -27,7 +27,7 @@ struct FlatnessOptimizerOptions : BackEndOptions {
   double check_period_s = 0.01;
 };
 
-/// The REMANI-style flatness baseline (issue 4, item 7) behind the back-end interface
+/// The REMANI-style flatness baseline behind the back-end interface
 /// (TrajectoryBackEnd: TrajectoryProblem + a front-end WholeBodyPath), as TrajectoryOptimizer:
 ///  0. the same input checks (CheckTrajectoryProblem);
 ///  1. warm start: MakeWarmStart's durations and joints, base positions from its path

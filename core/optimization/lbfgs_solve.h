@@ -12,7 +12,7 @@
 namespace topay {
 
 /// Options of the inner solver (Ceres' GradientProblemSolver, L-BFGS direction, Wolfe line
-/// search). Defaults: the facts sheet's L-BFGS figures.
+/// search). Defaults: the authors' code's L-BFGS figures.
 struct LbfgsOptions {
   /// Memory (rank of the inverse Hessian approximation).
   int memory = 256;

@@ -356,7 +356,7 @@ bool SamplePenalties::AddSelfCollision(bool with_gradient, double* total, Penalt
   return any_active;
 }
 
-// Arm above the chassis (facts sheet): margin - (z_s - r_s - top) <= 0.
+// Arm above the chassis (the authors' code): margin - (z_s - r_s - top) <= 0.
 bool SamplePenalties::AddChassis(bool with_gradient, double* total, PenaltyValues* costs) {
   const RobotModel& model = kinematics_.model();
   const double top = model.base_cylinder.height_m;

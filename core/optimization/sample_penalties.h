@@ -27,7 +27,7 @@ enum class PenaltyTerm : int {
   kBaseObstacle,       ///< Base cylinder on the 2D field, eq. (13).
   kArmObstacle,        ///< Every arm sphere on the 3D field, eq. (13).
   kSelfCollision,      ///< Self-collision sphere pairs, eq. (14).
-  kChassis,            ///< Every arm sphere above the chassis top (facts sheet).
+  kChassis,            ///< Every arm sphere above the chassis top (the authors' code).
 };
 inline constexpr int kNumPenaltyTerms = 10;
 std::string_view ToString(PenaltyTerm term);
@@ -52,7 +52,7 @@ inline PenaltyMask NoPenalties() {
   return mask;
 }
 
-/// Weights, margins and smoothing of the sample penalties. Defaults: the facts sheet's stage-2
+/// Weights, margins and smoothing of the sample penalties. Defaults: the authors' code's stage-2
 /// figures (reference implementation), except where a field note says otherwise.
 struct SamplePenaltyOptions {
   /// mu of the C2 smoothing (core/optimization/smooth_penalty.h), in the unit of each
@@ -69,13 +69,13 @@ struct SamplePenaltyOptions {
   double base_obstacle_weight = 5e5;
   double arm_obstacle_weight = 5e5;
   double self_collision_weight = 5e5;
-  double chassis_weight = 5e5;  ///< Not in the facts sheet; the self-collision weight.
+  double chassis_weight = 5e5;  ///< Not in the authors' code; the self-collision weight.
 
   /// Terms evaluated (all by default); tests switch them one by one.
   PenaltyMask enabled = AllPenalties();
 
   /// Base cylinder: field2(x, y) >= base_radius_factor x radius + base_field_margin_m.
-  /// The facts sheet's chassis safety factor 1.05.
+  /// r_thr of eq. (13): the authors' code's chassis factor 1.05.
   double base_radius_factor = 1.05;
   /// Arm sphere s: field3(p_WS) >= sphere_radius_factor x r_s + arm_field_margin_m (facts
   /// sheet: 1.1). The reference code also clamped radii below 0.055 m up to 0.055 m; not done

@@ -9,7 +9,7 @@ struct SmoothPenaltyValue {
 };
 
 /// The C2 smoothing L of max{0, x} that turns an inequality constraint C <= 0 into a penalty
-/// (TopAY paper eq. (23); the facts sheet's piecewise form, reference mu = 1e-3):
+/// (TopAY paper eq. (23); the authors' code's piecewise form, reference mu = 1e-3):
 ///   L(x) = 0                              x <= 0,
 ///   L(x) = x^3 / mu^2 - x^4 / (2 mu^3)    0 < x < mu,
 ///   L(x) = x - mu / 2                     x >= mu.

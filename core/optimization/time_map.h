@@ -3,7 +3,7 @@
 namespace topay {
 
 /// The C2 map between an unconstrained variable tau and a piece duration T > 0 (TopAY paper
-/// eq. (21), tau = L_c2(T); its inverse as the facts sheet states it):
+/// eq. (21), tau = L_c2(T); its inverse as the authors' code states it):
 ///   T(tau) = tau^2 / 2 + tau + 1            tau > 0,
 ///   T(tau) = 1 / (tau^2 / 2 - tau + 1)      tau <= 0,
 /// onto (0, inf), increasing, with T(0) = 1, T'(0) = 1 and T''(0) = 1 from both sides.

@@ -24,18 +24,18 @@
 
 namespace topay {
 
-/// Weights and sampling of TrajectoryObjective. Defaults: the facts sheet's stage-2 figures.
+/// Weights and sampling of TrajectoryObjective. Defaults: the authors' code's stage-2 figures.
 struct TrajectoryObjectiveOptions {
   /// W of eq. (6): (arc length, yaw, joints) = (1, 0.33, 1).
   JerkWeightOptions jerk_weights;
-  /// rho of eq. (6), weight of the total duration (per s; facts sheet: time weight 50).
+  /// rho of eq. (6), weight of the total duration (per s; authors' code: time weight 50).
   double time_weight = 50.0;
   /// K: constraint samples per piece are its K + 1 panel end points (the Simpson panels of
-  /// the x, y integration, facts sheet: 12), with trapezoid weights.
+  /// the x, y integration, authors' code: 12), with trapezoid weights.
   int panels_per_piece = 12;
   /// The inequality penalties (weights, margins, smoothing).
   SamplePenaltyOptions penalties;
-  /// Stage 1's path-fit term (facts sheet: "path-position terms"): weight per m^2 of base
+  /// Stage 1's path-fit term (authors' code: "path-position terms"): weight per m^2 of base
   /// position error and per rad^2 of yaw and joint error, averaged over the samples of a
   /// piece (trapezoid weights / K, not scaled by the duration, so the fit does not pull on
   /// the time).
@@ -69,7 +69,7 @@ struct ObjectiveBreakdown {
   double total = 0.0;
 };
 
-/// The objective of the TopAY trajectory optimization (paper Sec. III-C, eqs. (6)-(23)) as a
+/// The objective of the TopAY trajectory optimization (paper Sec. III-C and III-D, eqs. (6)-(23)) as a
 /// function of the decision vector
 ///   x = [tau (M) | inner waypoints, (M - 1) blocks of D = 2 + N: s, yaw, xi_1..xi_N |
 ///        free end (s_f, yaw_f, xi_f,1..N)],

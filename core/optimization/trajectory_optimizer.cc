@@ -20,7 +20,7 @@ std::string Format(const char* format, double a, double b = 0.0, double c = 0.0,
   return buffer;
 }
 
-/// Stage 1's terms (facts sheet): jerk, time, path fit and the kinodynamic penalties.
+/// Stage 1's terms (the authors' code): jerk, time, path fit and the kinodynamic penalties.
 ObjectiveTerms Stage1Terms() {
   ObjectiveTerms terms;
   terms.end_effector = false;

@@ -21,14 +21,14 @@
 namespace topay {
 
 /// Options of TrajectoryOptimizer, Ceres style: the shared BackEndOptions (warm start,
-/// L-BFGS, ALM, success tolerances, time limit) and its own. Defaults: the facts sheet's
+/// L-BFGS, ALM, success tolerances, time limit) and its own. Defaults: the authors' code's
 /// "Trajectory optimizer figures"; departures are stated field by field.
 struct TrajectoryOptimizerOptions : BackEndOptions {
   /// Stage 2's objective: jerk weights, time weight 50, K = 12, the penalty weights, margins
   /// and smoothing (core/optimization/trajectory_objective.h, sample_penalties.h).
   TrajectoryObjectiveOptions objective;
 
-  // ---- Stage 1: fit the initial path (facts sheet) ---------------------------------------
+  // ---- Stage 1: fit the initial path (the authors' code) ---------------------------------------
   /// Run stage 1: jerk + time + path fit + the base kinodynamic penalties (v-omega, a, beta)
   /// and the joint limit penalties (position, velocity, acceleration), no collision and no
   /// end-effector term.
@@ -69,11 +69,11 @@ struct TrajectoryOptimizerOptions : BackEndOptions {
 /// constructor).
 void CheckTrajectoryOptimizerOptions(const TrajectoryOptimizerOptions& options);
 
-/// The planner's back end (paper Sec. III-B..C, issue 4 items 3-4): the arc length-yaw MINCO
+/// The planner's back end (paper Sec. III-B..D): the arc length-yaw MINCO
 /// trajectory optimization of eqs. (6)-(23) from a front-end whole-body path.
 ///  1. Warm start (MakeWarmStart): M pieces, durations from trapezoidal profiles, waypoints
 ///     and the free end from the path.
-///  2. Stage 1 (facts sheet): fit the path (jerk, time, path fit, kinodynamic penalties).
+///  2. Stage 1 (the authors' code): fit the path (jerk, time, path fit, kinodynamic penalties).
 ///  3. Stage 2: every term; the end-effector constraint FK(s_f) = p_e (position and
 ///     orientation) by PHR-ALM: minimise with lambda, rho; lambda += rho r; rho *= 10 up to
 ///     1e10, until |r| is within tolerance. Inner solver: Ceres' GradientProblemSolver with

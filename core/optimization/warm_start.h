@@ -9,10 +9,10 @@
 
 namespace topay {
 
-/// Options of MakeWarmStart. Defaults: the facts sheet's figures.
+/// Options of MakeWarmStart. Defaults: the authors' code's figures.
 struct WarmStartOptions {
   /// Piece count M = ceil(continuous profile duration / piece_duration_s), clamped to
-  /// [min_pieces, max_pieces] (facts sheet: total time / 1.5 s, at least 3 pieces). The
+  /// [min_pieces, max_pieces] (authors' code: total time / 1.5 s, at least 3 pieces). The
   /// continuous profile drives the whole path without stopping at its vertices
   /// (WarmStart::continuous_duration_s); the rest-to-rest profile that times the warm start
   /// stops at every turn and gave about twice the pieces the optimized trajectory needs.
@@ -36,7 +36,7 @@ struct WarmStartOptions {
 /// > 0, 1 <= min_pieces <= max_pieces, rate_fraction in (0, 1] and min_duration_s > 0.
 void CheckWarmStartOptions(const WarmStartOptions& options);
 
-/// The optimizer's initial guess (paper Sec. III-C; issue item 4): piece durations,
+/// The optimizer's initial guess (paper Sec. III-C): piece durations,
 /// waypoints and the free end in the arc length-yaw variables, and stage 1's path reference.
 struct WarmStart {
   int num_pieces = 0;

@@ -47,7 +47,7 @@ struct CandidateReport {
   bool validated() const { return validation.has_value() && validation->ok; }
 };
 
-/// Wall-clock timings (ms) of one plan, as the CLI prints them.
+/// Wall-clock timings (ms) of one plan, as topay-plan prints them.
 struct PlanTimings {
   double search_ms = 0.0;        ///< Goal candidates (IK) + topological base paths.
   double sampling_ms = 0.0;      ///< DiscreteSE2 + the parallel arm RRT* stage.

@@ -15,7 +15,7 @@ namespace topay {
 
 /// Options of PlanArmRrtStar (paper Algorithm 1, the inner loop for one base path).
 struct ArmRrtStarOptions {
-  /// t_smax: wall-clock budget (s) of the anytime search (facts sheet: 0.2 s). The search
+  /// t_smax: wall-clock budget (s) of the anytime search (authors' code: 0.2 s). The search
   /// also ends at max_iterations, on cancellation, or when the cost reaches its lower bound.
   double time_budget_s = 0.2;
   /// Iteration cap (0: none). With a cap and a budget that is not reached, the result is a
@@ -23,7 +23,7 @@ struct ArmRrtStarOptions {
   std::int64_t max_iterations = 0;
   /// End at the first solution (the reference code's behaviour) instead of improving it.
   bool stop_at_first_solution = false;
-  /// Probability that a sample is the other tree's root (facts sheet: 0.4).
+  /// Probability that a sample is the other tree's root (authors' code: 0.4).
   double goal_bias = 0.4;
   /// Probability that a sample (when not the goal) is the robot's stowed configuration
   /// (RobotModel::stow_q_rad, clamped to the layer's velocity-reachable box) on a random layer.

@@ -15,7 +15,7 @@ namespace topay {
 /// spheres and the shoulder sphere, top at 0.4915 m); they lie over the base's footprint, so
 /// the base cannot pass under anything lower than their top whatever the arm does. With only
 /// the chassis band (0.155 m) the topological base paths run under floating boxes and table
-/// tops where no arm configuration is valid (the facts sheet's "weak point" of the reference
+/// tops where no arm configuration is valid (the authors' code's "weak point" of the reference
 /// harness), and the arm search on them is bound to fail.
 /// arm_margin_m: the margin of the arm spheres on the 3D field (WholeBodyValidity's default is
 /// sqrt(3) x the 3D field's resolution). A sphere is rigid when its position varies by less

@@ -13,7 +13,7 @@ namespace topay {
 struct DiscreteSE2Options {
   /// Delta l: largest distance (m) between consecutive base states along a straight segment;
   /// each segment of length D is split into ceil(D / delta_l_m) equal steps. Default: the
-  /// reference implementation's 1.414 m (facts sheet).
+  /// reference implementation's 1.414 m (the authors' code).
   double delta_l_m = 1.414;
   /// Largest yaw change (rad) between consecutive turn-in-place states; a turn by |dyaw| is
   /// split into ceil(|dyaw| / max_turn_step_rad) equal steps.

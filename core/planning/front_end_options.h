@@ -27,17 +27,17 @@ struct FrontEndOptions {
   int max_goal_attempts = 2;
 
   // ---- Base paths ------------------------------------------------------------------------
-  /// Topological PRM + JPS (facts sheet: 10 ms / 5000 samples, 300 raw paths, 25 kept,
+  /// Topological PRM + JPS (authors' code: 10 ms / 5000 samples, 300 raw paths, 25 kept,
   /// <= 6 classes within 2 x the shortest, JPS appended). mode = kJpsOnly is the Table I
   /// ablation. base_radius_m is overwritten by the model's base cylinder radius, and
   /// clearance_m is raised to the validity's base margin if smaller, so that every base path
   /// passes the arm search's base check.
   /// Front-end departures from the search's own defaults (which follow the 2D field's cell
-  /// size): shortcut resampling every 0.05 m and UVD at 0.1 m (the facts sheet's map
+  /// size): shortcut resampling every 0.05 m and UVD at 0.1 m (the authors' code's map
   /// resolution), so that the fine (0.01 m) base field does not make them 2.5-5x slower.
   TopologicalPathSearchOptions topology = DefaultTopologyOptions();
   /// Clearance (m) beyond the base radius for a second base path search, run when the first
-  /// one (at topology.clearance_m, the facts sheet's 0.1 m) finds no path or finds the start
+  /// one (at topology.clearance_m, the authors' code's 0.1 m) finds no path or finds the start
   /// or goal closer than that to an obstacle: narrow passages and cluttered corners. It is
   /// raised to the validity's base margin if smaller (so 0 means "as close as the validity
   /// allows"). No second search when it is not below topology.clearance_m.
@@ -68,8 +68,8 @@ struct FrontEndOptions {
   WholeBodyValidityOptions validity;
   /// After the first solution of any job, all jobs (that one included) get at most this long
   /// (s) to improve or finish before they are cancelled; cancelled jobs that have a solution
-  /// keep their best one (facts sheet: ~100 ms in the reference code, not a bound there; here
-  /// it is, and smaller, for the issue's 40 ms median goal). +infinity: wait for all jobs.
+  /// keep their best one (authors' code: ~100 ms in the reference code, not a bound there; here
+  /// it is, and smaller, for a 40 ms front-end median). +infinity: wait for all jobs.
   double improvement_window_s = 0.01;
   /// Bound (s) on the whole arm-search stage of one goal attempt, from its start: jobs still
   /// running then are cancelled. Jobs queue when there are more paths than threads.

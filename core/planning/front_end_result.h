@@ -89,7 +89,7 @@ struct FrontEndResult {
   FrontEndStatus status = FrontEndStatus::kInvalidInput;
   /// Empty on success; otherwise what failed and where, e.g. "start state: arm collision".
   std::string failure_reason;
-  /// Successful whole-body paths, shortest duration first (the facts sheet's choice rule),
+  /// Successful whole-body paths, shortest duration first (the authors' code's choice rule),
   /// at most one per base path.
   std::vector<FrontEndPath> paths;
   /// The goal state the paths end at (the chosen candidate), and all candidates.

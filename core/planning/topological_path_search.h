@@ -22,7 +22,7 @@ enum class BasePathMode {
   kJpsOnly,             ///< The "JPS only" ablation: one JPS path.
 };
 
-/// Options of SearchTopologicalBasePaths; defaults are the facts sheet's
+/// Options of SearchTopologicalBasePaths; defaults are the authors' code's
 /// front-end figures.
 struct TopologicalPathSearchOptions {
   BasePathMode mode = BasePathMode::kTopologicalWithJps;

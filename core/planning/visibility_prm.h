@@ -9,7 +9,7 @@
 
 namespace topay {
 
-/// Options of BuildVisibilityPrm (defaults: the facts sheet's front-end
+/// Options of BuildVisibilityPrm (defaults: the authors' code's front-end
 /// figures).
 struct VisibilityPrmOptions {
   /// Samples are drawn uniformly in a rectangle centred between start and goal,

@@ -15,7 +15,7 @@ namespace topay {
 /// that link's own).
 std::vector<int> RigidBodiesOfLinks(const RobotModel& model);
 
-/// The sphere pairs worth checking for self-collision (TopAY facts sheet): spheres i < j that
+/// The sphere pairs worth checking for self-collision (the authors' code): spheres i < j that
 /// lie on different rigid bodies, on bodies not directly joined by one movable joint, and that
 /// do not overlap at q = 0 (base at the origin). Sorted by (i, j).
 std::vector<std::pair<int, int>> FindSelfCollisionPairs(const RobotModel& model);

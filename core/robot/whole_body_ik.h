@@ -53,7 +53,7 @@ struct WholeBodyIkOptions {
   bool whole_body_polish = true;
   double polish_start_error = 0.15;
 
-  // ---- Acceptance (the criteria) -------------------------------------------------
+  // ---- Acceptance (1 mm / 0.01 rad) -------------------------------------------------
   double position_tolerance_m = 1e-3;
   double orientation_tolerance_rad = 1e-2;
   /// DLS iterates until the error is below this fraction of the tolerances (a margin, so the

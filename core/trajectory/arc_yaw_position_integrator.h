@@ -28,7 +28,7 @@ namespace topay {
 class ArcYawPositionIntegrator {
  public:
   struct Options {
-    /// K, Simpson panels per piece (facts sheet: 12).
+    /// K, Simpson panels per piece (authors' code: 12).
     int panels_per_piece = 12;
   };
 

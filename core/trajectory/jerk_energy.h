@@ -5,7 +5,7 @@
 namespace topay {
 
 /// Diagonal jerk weights W of the arc length-yaw trajectory (dimension order s, yaw, q1..qN).
-/// Defaults: the reference implementation's (facts sheet, "Trajectory optimizer figures").
+/// Defaults: the reference implementation's (the authors' code).
 struct JerkWeightOptions {
   double arc_length = 1.0;  ///< Weight of s''' (m/s^3)^2.
   double yaw = 0.33;        ///< Weight of yaw''' (rad/s^3)^2.

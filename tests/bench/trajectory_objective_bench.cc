@@ -45,7 +45,7 @@ namespace {
 
 BaseLimits BenchmarkLimits(const RobotModel& model) {
   BaseLimits limits = model.base_limits;
-  limits.omega_max_radps = 1.25;  // the paper's simulation benchmark (facts sheet)
+  limits.omega_max_radps = 1.25;  // the paper's simulation benchmark (the authors' code)
   return limits;
 }
 

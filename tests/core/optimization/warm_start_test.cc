@@ -23,7 +23,7 @@ constexpr int kPanels = 12;
 class WarmStartTest : public ::testing::Test {
  protected:
   WarmStartTest() : model_(testing::LoadTopayModel()) {}
-  // The facts sheet's 1.5 s pieces unless the test says otherwise (the default is 1.0 s).
+  // The authors' code's 1.5 s pieces unless the test says otherwise (the default is 1.0 s).
   static WarmStartOptions FactsSheetPieces() {
     WarmStartOptions options;
     options.piece_duration_s = 1.5;
@@ -98,7 +98,7 @@ TEST_F(WarmStartTest, ArmOnlyMotionIsTimedByTheSlowestJoint) {
 
 // An L of two 4 m drives with a quarter turn in place at the corner: the warm start is timed
 // rest to rest (drive, turn, drive), but its piece count comes from the continuous profile,
-// one trapezoid over the 8 m (facts sheet: total time / 1.5 s).
+// one trapezoid over the 8 m (authors' code: total time / 1.5 s).
 TEST_F(WarmStartTest, PieceCountFollowsTheContinuousProfile) {
   const WholeBodyState start = MakeState(0.0, 0.0, 0.0, ReadyJoints());
   const double half_pi = 0.5 * std::numbers::pi;

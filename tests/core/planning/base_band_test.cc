@@ -22,7 +22,7 @@ class BaseBandTest : public ::testing::Test {
   Kinematics kinematics_;
 };
 
-// The facts sheet's robot: chassis top 0.155 m; the arm is mounted at (0, 0.115) and its two
+// The authors' code's robot: chassis top 0.155 m; the arm is mounted at (0, 0.115) and its two
 // link-1 spheres (0.220 and 0.310 m, r 0.06) and the shoulder sphere (0.4115 m, r 0.08) lie on
 // joint 1's axis, so no joint moves them: top 0.4915 m, reach 0.115 + 0.08 = 0.195 m.
 TEST_F(BaseBandTest, RigidLowerBodyOfTheTopayArm) {

@@ -64,7 +64,7 @@ Eigen::MatrixXd NumericPoseJacobian(const Eigen::VectorXd& z, PoseFn pose_at) {
 }
 
 TEST_F(KinematicsTest, SphereCentresAtZeroLieOnArmAxisAtTheFactSheetHeights) {
-  // TopAY facts sheet: sphere centre heights at q = 0, arm axis at (0, 0.115) in the base frame.
+  // TopAY authors' code: sphere centre heights at q = 0, arm axis at (0, 0.115) in the base frame.
   const double heights_m[] = {0.220, 0.310, 0.4115, 0.484,  0.564,  0.6675,
                               0.726, 0.796, 0.8775, 0.9515, 1.0215, 1.1215};
   ASSERT_EQ(model_.spheres.size(), std::size(heights_m));

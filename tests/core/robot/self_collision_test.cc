@@ -44,7 +44,7 @@ double RelativeError(const Eigen::MatrixXd& analytic, const Eigen::MatrixXd& num
 
 TEST(SelfCollisionPairsTest, TopayPairsAreNonAdjacentAndSeparatedAtZero) {
   const RobotModel model = LoadTopayModel();
-  // From the facts sheet: the arm link each sphere moves with, its height at q = 0 (all on
+  // From the authors' code: the arm link each sphere moves with, its height at q = 0 (all on
   // the arm axis) and radius. Links k and k +- 1 are adjacent (one joint apart).
   const int arm_link[] = {1, 1, 2, 3, 3, 4, 5, 5, 6, 7, 7, 7};
   const double height_m[] = {0.220, 0.310, 0.4115, 0.484,  0.564,  0.6675,
@@ -185,7 +185,7 @@ TEST_F(SelfCollisionTest, ChassisMarginsAtZeroAreHeightMinusRadiusMinusChassisTo
   kinematics_.Update(state, &cache_);
   Eigen::VectorXd margins(self_collision_.num_spheres());
   self_collision_.ChassisMargins(cache_, margins);
-  // Lowest sphere (facts sheet): centre 0.220 m, radius 0.06 m, chassis top 0.155 m.
+  // Lowest sphere (the authors' code): centre 0.220 m, radius 0.06 m, chassis top 0.155 m.
   EXPECT_NEAR(margins(0), 0.220 - 0.06 - 0.155, 1e-12);
   EXPECT_NEAR(margins(11), 1.1215 - 0.08 - 0.155, 1e-12);
   EXPECT_GT(margins.minCoeff(), 0.0);
