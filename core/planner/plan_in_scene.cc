@@ -7,6 +7,7 @@
 
 #include "core/collision/scene_clearance.h"
 #include "core/collision/start_target_diagnosis.h"
+#include "core/common/stopwatch.h"
 #include "core/planner/whole_body_planner.h"
 #include "core/planning/planner_fields.h"
 #include "core/planning/stop_deadline.h"
@@ -14,16 +15,13 @@
 namespace topay {
 namespace {
 
-using Clock = std::chrono::steady_clock;
+using Clock = Stopwatch::Clock;
 
 double MsBetween(Clock::time_point a, Clock::time_point b) {
-  return std::chrono::duration<double, std::milli>(b - a).count();
+  return Stopwatch::MillisecondsBetween(a, b);
 }
 
-Clock::time_point After(Clock::time_point t, double seconds) {
-  if (!(seconds < 1e6)) return Clock::time_point::max();  // +infinity: no deadline
-  return t + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(seconds));
-}
+Clock::time_point After(Clock::time_point t, double seconds) { return DeadlineAfter(t, seconds); }
 
 // What is wrong with the start or the target, found exactly against the scene.
 struct InputProblem {

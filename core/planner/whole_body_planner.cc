@@ -14,23 +14,21 @@
 #include <tbb/task_arena.h>
 #include <tbb/task_group.h>
 
-#include "core/planner/failure_cause.h"
+#include "core/common/stopwatch.h"
 #include "core/optimization/back_end_factory.h"
+#include "core/planner/failure_cause.h"
 #include "core/planning/stop_deadline.h"
 
 namespace topay {
 namespace {
 
-using Clock = std::chrono::steady_clock;
+using Clock = Stopwatch::Clock;
 
 double MsBetween(Clock::time_point a, Clock::time_point b) {
-  return std::chrono::duration<double, std::milli>(b - a).count();
+  return Stopwatch::MillisecondsBetween(a, b);
 }
 
-Clock::time_point After(Clock::time_point t, double seconds) {
-  if (!(seconds < 1e6)) return Clock::time_point::max();  // +infinity: no deadline
-  return t + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(seconds));
-}
+Clock::time_point After(Clock::time_point t, double seconds) { return DeadlineAfter(t, seconds); }
 
 WholeBodyPlannerOptions Checked(WholeBodyPlannerOptions options) {
   CheckWholeBodyPlannerOptions(options);

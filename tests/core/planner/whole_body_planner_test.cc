@@ -9,6 +9,8 @@
 
 #include <gtest/gtest.h>
 
+#include "tests/common/arm_state.h"
+
 #include "core/io/robot_loader.h"
 #include "core/map/scene_distance_fields.h"
 #include "core/planning/planner_fields.h"
@@ -38,15 +40,7 @@ class WholeBodyPlannerTest : public ::testing::Test {
     return scene;
   }
 
-  WholeBodyState State(double x, double y, double yaw) const {
-    WholeBodyState state;
-    state.x_m = x;
-    state.y_m = y;
-    state.yaw_rad = yaw;
-    state.q_rad.resize(model_.num_joints());
-    state.q_rad << 0.3, 0.8, 0.1, 1.2, 0.2, 0.6, 0.1;
-    return state;
-  }
+  WholeBodyState State(double x, double y, double yaw) const { return BentArmState(x, y, yaw); }
 
   static WholeBodyPlannerOptions Options() {
     WholeBodyPlannerOptions options;

@@ -16,6 +16,8 @@
 
 #include <gtest/gtest.h>
 
+#include "tests/common/arm_state.h"
+
 #include "tests/core/planning/stop_latency.h"
 
 #include "core/collision/scene_clearance.h"
@@ -100,15 +102,7 @@ class FrontEndTest : public ::testing::Test {
     return scene;
   }
 
-  WholeBodyState State(double x, double y, double yaw) const {
-    WholeBodyState state;
-    state.x_m = x;
-    state.y_m = y;
-    state.yaw_rad = yaw;
-    state.q_rad.resize(model_.num_joints());
-    state.q_rad << 0.3, 0.8, 0.1, 1.2, 0.2, 0.6, 0.1;
-    return state;
-  }
+  WholeBodyState State(double x, double y, double yaw) const { return BentArmState(x, y, yaw); }
 
   // Success rate of the front end on `num_tasks` random small-range tasks of `kind`, every
   // returned path checked exactly.
