@@ -1,7 +1,7 @@
 # Two commands on a fresh Debian 12 machine:
 #   make demo   install what is missing, build, run the main job
 #   make test   install what is missing, build (with assertions), run every test
-.PHONY: all deps build build-test test demo bench clean
+.PHONY: all deps build build-test test test-fast demo bench clean
 
 BUILD_DIR      ?= build
 TEST_BUILD_DIR ?= build-test
@@ -26,6 +26,11 @@ build-test: deps
 
 test: build-test
 	@cd $(TEST_BUILD_DIR) && ctest --output-on-failure -j $(JOBS)
+
+# The fast suite: every test but the long ones (labelled long/<folder>: the 100-task runs and
+# the benchmark harness's smoke runs). CI runs `make test`, all of them.
+test-fast: build-test
+	@cd $(TEST_BUILD_DIR) && ctest --output-on-failure -j $(JOBS) -LE '^long'
 
 # The main job until the process graph exists: one TopAY plan (front end, parallel trajectory
 # optimization, independent validation) on a seeded Tables room and a medium-range task,
