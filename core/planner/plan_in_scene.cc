@@ -17,12 +17,6 @@ namespace {
 
 using Clock = Stopwatch::Clock;
 
-double MsBetween(Clock::time_point a, Clock::time_point b) {
-  return Stopwatch::MillisecondsBetween(a, b);
-}
-
-Clock::time_point After(Clock::time_point t, double seconds) { return DeadlineAfter(t, seconds); }
-
 // What is wrong with the start or the target, found exactly against the scene.
 struct InputProblem {
   PlanStatus status = PlanStatus::kSuccess;
@@ -111,14 +105,14 @@ ScenePlan PlanInScene(const Kinematics& kinematics, const Scene& scene,
                       const std::optional<SceneDistanceFieldsOptions>& field_options) {
   const Clock::time_point t0 = Clock::now();
   CheckWholeBodyPlannerOptions(options);
-  const Clock::time_point deadline = After(t0, options.time_limit_s);
+  const Clock::time_point deadline = DeadlineAfter(t0, options.time_limit_s);
   ScenePlan plan;
   WholeBodyPlanResult& result = plan.result;
   const auto finish = [&](PlanStatus status, PlanStage stage, std::string reason) {
     result.status = status;
     result.stopped_stage = stage;
     result.failure_reason = std::move(reason);
-    result.timings.total_ms = MsBetween(t0, Clock::now());
+    result.timings.total_ms = Stopwatch::MillisecondsBetween(t0, Clock::now());
     return std::move(plan);
   };
 
@@ -127,7 +121,7 @@ ScenePlan PlanInScene(const Kinematics& kinematics, const Scene& scene,
     const SceneClearanceChecker checker(kinematics, scene);
     InputProblem problem = CheckStart(kinematics, scene, checker, start, options.validator);
     if (problem.reason.empty()) problem = CheckTarget(scene, checker, X_WE_goal);
-    result.timings.start_check_ms = MsBetween(t0, Clock::now());
+    result.timings.start_check_ms = Stopwatch::MillisecondsBetween(t0, Clock::now());
     if (!problem.reason.empty()) {
       result.front_end.status = problem.front_end;
       result.front_end.failure_reason = problem.reason;
@@ -146,7 +140,7 @@ ScenePlan PlanInScene(const Kinematics& kinematics, const Scene& scene,
         scene, field_options.value_or(PlannerFieldOptions(kinematics)), map_stop.get_token()));
     map_stopped = plan.fields->summary.stopped;
   }
-  result.timings.map_ms = MsBetween(t_map, Clock::now());
+  result.timings.map_ms = Stopwatch::MillisecondsBetween(t_map, Clock::now());
   if (map_stopped) {
     plan.fields.reset();
     if (stop.stop_requested()) {
@@ -165,7 +159,7 @@ ScenePlan PlanInScene(const Kinematics& kinematics, const Scene& scene,
   result = planner.PlanBy(deadline, start, X_WE_goal, hint, stop);
   result.timings.start_check_ms = before.start_check_ms;
   result.timings.map_ms = before.map_ms;
-  result.timings.total_ms = MsBetween(t0, Clock::now());
+  result.timings.total_ms = Stopwatch::MillisecondsBetween(t0, Clock::now());
   return plan;
 }
 

@@ -24,12 +24,6 @@ namespace {
 
 using Clock = Stopwatch::Clock;
 
-double MsBetween(Clock::time_point a, Clock::time_point b) {
-  return Stopwatch::MillisecondsBetween(a, b);
-}
-
-Clock::time_point After(Clock::time_point t, double seconds) { return DeadlineAfter(t, seconds); }
-
 WholeBodyPlannerOptions Checked(WholeBodyPlannerOptions options) {
   CheckWholeBodyPlannerOptions(options);
   return options;
@@ -125,20 +119,20 @@ WholeBodyPlanResult WholeBodyPlanner::PlanBy(Clock::time_point deadline,
   const std::stop_callback forward(stop, [&plan_stop] { plan_stop.request_stop(); });
   std::atomic<bool> time_limit_hit{false};
   {
-    const Clock::time_point end = std::min(deadline, After(t0, options_.time_limit_s));
+    const Clock::time_point end = std::min(deadline, DeadlineAfter(t0, options_.time_limit_s));
     if (Clock::now() >= end) plan_stop.request_stop();  // already due: no race with the watcher
     const StopDeadline limit(&plan_stop, end);
     result.front_end = front_end_.Plan(start, X_WE_goal, hint, plan_stop.get_token());
     const FrontEndStats& stats = result.front_end.stats;
     result.timings.search_ms = stats.goal_ms + stats.topology_ms;
     result.timings.sampling_ms = stats.discretisation_ms + stats.acquisition_ms;
-    result.timings.front_end_ms = MsBetween(t0, Clock::now());
+    result.timings.front_end_ms = Stopwatch::MillisecondsBetween(t0, Clock::now());
     if (result.front_end.success()) {
       OptimizeCandidates(start, X_WE_goal, plan_stop.get_token(), &result);
     }
     time_limit_hit = plan_stop.stop_requested() && !stop.stop_requested();
   }
-  result.timings.total_ms = MsBetween(t0, Clock::now());
+  result.timings.total_ms = Stopwatch::MillisecondsBetween(t0, Clock::now());
 
   if (!result.front_end.success()) {
     result.status = FromFrontEnd(result.front_end.status);
@@ -204,7 +198,7 @@ void WholeBodyPlanner::RunCandidate(const TrajectoryProblem& problem, const Whol
       report->validation = failed;
     }
   }
-  report->wall_ms = MsBetween(t, Clock::now());
+  report->wall_ms = Stopwatch::MillisecondsBetween(t, Clock::now());
 }
 
 void WholeBodyPlanner::OptimizeCandidates(const WholeBodyState& start,
@@ -238,7 +232,7 @@ void WholeBodyPlanner::OptimizeCandidates(const WholeBodyState& start,
         if (options_.early_termination_window_s <= 0.0) {
           stage_stop.request_stop();  // at once, not when the deadline's thread wakes
         } else {
-          window.Tighten(After(now, options_.early_termination_window_s));
+          window.Tighten(DeadlineAfter(now, options_.early_termination_window_s));
         }
       }
     }
@@ -273,9 +267,9 @@ void WholeBodyPlanner::OptimizeCandidates(const WholeBodyState& start,
   if (first != std::numeric_limits<std::int64_t>::max()) {
     const double first_ms = std::chrono::duration<double, std::milli>(Clock::duration(first)).count();
     result->timings.optimization_ms = first_ms;
-    result->timings.wait_ms = MsBetween(t_begin, t_end) - first_ms;
+    result->timings.wait_ms = Stopwatch::MillisecondsBetween(t_begin, t_end) - first_ms;
   } else {
-    result->timings.optimization_ms = MsBetween(t_begin, t_end);
+    result->timings.optimization_ms = Stopwatch::MillisecondsBetween(t_begin, t_end);
   }
 }
 

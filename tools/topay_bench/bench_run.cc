@@ -12,7 +12,6 @@
 #include "tools/topay_bench/bench_record_json.h"
 #include "tools/topay_bench/bench_task.h"
 #include "tools/topay_plan/planner_overrides.h"
-#include "tools/common/usage_error.h"
 
 namespace topay::bench {
 namespace {
@@ -41,10 +40,6 @@ BenchPlannerSettings SettingsInForce(const BenchOptions& o, const RobotModel& mo
   overrides.num_threads = o.num_threads;
   if (o.time_limit_ms) overrides.time_limit_s = *o.time_limit_ms / 1000.0;
   if (!o.base_limits.empty()) overrides.base_limits = plan::ParseBaseLimitChoice(o.base_limits);
-  if (overrides.base_limits == plan::BaseLimitChoice::kConfig && !loaded.base_limits) {
-    throw plan::UsageError("--base-limits config: the planner YAML (" + o.planner_config +
-                     ") sets no planner.base_limits");
-  }
   WholeBodyPlannerOptions in_force = loaded;
   *choice = plan::ApplyPlannerOverrides(overrides, model, &in_force);
   BenchPlannerSettings settings;

@@ -1,6 +1,6 @@
 #include "tools/topay_plan/base_limit_choice.h"
 
-#include <stdexcept>
+#include "tools/common/usage_error.h"
 
 namespace topay::plan {
 
@@ -36,7 +36,7 @@ BaseLimits ChooseBaseLimits(BaseLimitChoice choice, const RobotModel& model,
     case BaseLimitChoice::kRobot: return model.base_limits;
     case BaseLimitChoice::kConfig:
       if (!configured) {
-        throw std::invalid_argument(
+        throw tools::UsageError(
             "--base-limits config: the planner YAML sets no planner.base_limits");
       }
       return *configured;

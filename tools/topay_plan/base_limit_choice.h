@@ -27,7 +27,7 @@ std::optional<BaseLimitChoice> ParseBaseLimitChoice(std::string_view name);
 BaseLimits BenchmarkBaseLimits();
 
 /// The limits of `choice` for a robot model; `configured`: the planner YAML's
-/// planner.base_limits (unset if it has none). Throws std::invalid_argument for kConfig
+/// planner.base_limits (unset if it has none). Throws tools::UsageError for kConfig
 /// without configured limits.
 BaseLimits ChooseBaseLimits(BaseLimitChoice choice, const RobotModel& model,
                             const std::optional<BaseLimits>& configured = std::nullopt);

@@ -9,7 +9,6 @@
 #include "core/planner/whole_body_planner.h"
 #include "core/planning/planner_fields.h"
 #include "core/robot/kinematics.h"
-#include "tools/common/usage_error.h"
 #include "tools/topay_plan/candidate_table.h"
 #include "tools/topay_plan/plan_query.h"
 #include "tools/topay_plan/plan_summary_fill.h"
@@ -28,10 +27,6 @@ WholeBodyPlannerOptions PlannerOptionsInForce(const PlanToolOptions& o, const Ro
       o.planner_config.empty() ? WholeBodyPlannerOptions{} : LoadPlannerOptions(o.planner_config);
   PlannerOverrides overrides = o.overrides;
   if (!o.base_limits.empty()) overrides.base_limits = ParseBaseLimitChoice(o.base_limits);
-  if (overrides.base_limits == BaseLimitChoice::kConfig && !options.base_limits) {
-    throw UsageError("--base-limits config: the planner YAML (" + o.planner_config +
-                     ") sets no planner.base_limits");
-  }
   *choice = ApplyPlannerOverrides(overrides, model, &options);
   return options;
 }

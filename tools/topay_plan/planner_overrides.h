@@ -22,7 +22,8 @@ struct PlannerOverrides {
 
 /// Applies the given overrides to `options` (loaded from the YAML) and sets the base limits
 /// in force (BaseLimitChoiceInForce of the flag and the YAML's planner.base_limits). Returns
-/// the base limit choice in force.
+/// the base limit choice in force. Throws tools::UsageError for kConfig when the YAML sets no
+/// planner.base_limits.
 BaseLimitChoice ApplyPlannerOverrides(const PlannerOverrides& overrides, const RobotModel& model,
                                       WholeBodyPlannerOptions* options);
 

@@ -278,7 +278,7 @@ TEST_F(TopayBenchTest, UsageErrorsExitWithTwoAndNameTheOption) {
       {"--method remani" + out, "--method"},        {"--method topay,flatness" + out, "--compare"},
       {"--compare topay,topay" + out, "--compare"}, {"--tasks 0" + out, "--tasks"},
       {"--scene forest" + out, "--scene"},          {"--tasks 1", "--out"},
-      {"--seed -1" + out, "--seed"},                {"--time-limit-ms -5" + out, "--time-limit-ms"},
+      {"--seed -1" + out, "--seed"},                {"--base-limits config" + out, "--base-limits config"},                {"--time-limit-ms -5" + out, "--time-limit-ms"},
   };
   for (const Case& c : cases) {
     const RunResult run = Run(c.args);

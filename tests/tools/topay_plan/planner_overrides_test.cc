@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include "core/io/robot_loader.h"
+#include "tools/common/usage_error.h"
 
 namespace topay::plan {
 namespace {
@@ -81,7 +82,7 @@ TEST(PlannerOverridesTest, ConfigChoiceWithoutYamlLimitsIsAnError) {
   WholeBodyPlannerOptions o = Loaded();
   PlannerOverrides flags;
   flags.base_limits = BaseLimitChoice::kConfig;
-  EXPECT_THROW(ApplyPlannerOverrides(flags, Model(), &o), std::invalid_argument);
+  EXPECT_THROW(ApplyPlannerOverrides(flags, Model(), &o), tools::UsageError);
 }
 
 }  // namespace

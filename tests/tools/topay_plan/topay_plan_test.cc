@@ -87,6 +87,9 @@ TEST_F(TopayPlanTest, UsageErrorsExitWithCode2AndNameTheOption) {
   run = Run("--scene tables --range small --base-limits fast");
   EXPECT_EQ(run.exit_code, plan::kExitUsage);
   EXPECT_NE(run.err.find("--base-limits"), std::string::npos) << run.err;
+  run = Run("--scene tables --range small --base-limits config");  // the YAML sets none
+  EXPECT_EQ(run.exit_code, plan::kExitUsage) << run.out << run.err;
+  EXPECT_NE(run.err.find("--base-limits config"), std::string::npos) << run.err;
   run = Run("");
   EXPECT_EQ(run.exit_code, plan::kExitUsage);
   EXPECT_NE(run.err.find("--scene"), std::string::npos) << run.err;
