@@ -77,6 +77,8 @@ class SceneClearanceChecker {
                         const SceneClearanceOptions& options = {});
 
   SceneClearanceWorkspace MakeWorkspace() const;
+  const Scene& scene() const { return scene_; }
+  const Kinematics& kinematics() const { return kinematics_; }
 
   /// Clearance of `state`; allocation-free given a workspace. Throws std::invalid_argument
   /// for a state of the wrong size or with a NaN (from Kinematics::Update).

@@ -37,6 +37,9 @@ FrontEndOptions FrontEndOptionsFor(const WholeBodyPlannerOptions& options,
                                    const Kinematics& kinematics) {
   FrontEndOptions front_end = options.front_end;
   front_end.base_limits = ResolveLimits(options, kinematics);
+  // A state the exact zones accept must pass the validator.
+  front_end.exact_zones.obstacle_margin_m = options.validator.obstacle_margin_m;
+  front_end.exact_zones.self_margin_m = options.validator.self_margin_m;
   return front_end;
 }
 
@@ -96,9 +99,10 @@ WholeBodyPlanner::WholeBodyPlanner(const Kinematics& kinematics,
                                    WholeBodyPlannerOptions options)
     : options_(Checked(std::move(options))),
       base_limits_(ResolveLimits(options_, kinematics)),
-      front_end_(kinematics, base_field, arm_field, FrontEndOptionsFor(options_, kinematics)),
-      back_end_(MakeTrajectoryBackEnd(kinematics, base_field, arm_field, options_.optimizer)),
-      validator_(kinematics, scene, base_limits_, options_.validator) {}
+      validator_(kinematics, scene, base_limits_, options_.validator),
+      front_end_(kinematics, base_field, arm_field, FrontEndOptionsFor(options_, kinematics),
+                 &validator_.checker()),
+      back_end_(MakeTrajectoryBackEnd(kinematics, base_field, arm_field, options_.optimizer)) {}
 
 WholeBodyPlanResult WholeBodyPlanner::Plan(const WholeBodyState& start,
                                            const Eigen::Isometry3d& X_WE_goal,
@@ -179,12 +183,15 @@ WholeBodyPlanResult WholeBodyPlanner::PlanBy(Clock::time_point deadline,
   return result;
 }
 
-void WholeBodyPlanner::RunCandidate(const TrajectoryProblem& problem, const WholeBodyPath& path,
-                                    std::stop_token stop, std::stop_token plan_stop,
-                                    CandidateReport* report) const {
+void WholeBodyPlanner::RunCandidate(const TrajectoryProblem& plan_problem,
+                                    const FrontEndPath& path, std::stop_token stop,
+                                    std::stop_token plan_stop, CandidateReport* report) const {
   const Clock::time_point t = Clock::now();
   report->started = true;
-  report->optimization = back_end_->Optimize(problem, path, stop);
+  TrajectoryProblem problem = plan_problem;
+  problem.exact_prefix_states = path.exact_prefix_states;
+  problem.exact_suffix_states = path.exact_suffix_states;
+  report->optimization = back_end_->Optimize(problem, path.path, stop);
   if (report->optimization.success()) {
     try {  // either parameterisation (arc length-yaw, or the flatness baseline)
       // The plan's stop (time limit, caller), not the early-termination window: a
@@ -223,7 +230,7 @@ void WholeBodyPlanner::OptimizeCandidates(const WholeBodyState& start,
       const int i = next.fetch_add(1);
       if (i >= n) return;
       CandidateReport& report = result->candidates[i];
-      RunCandidate(problem, paths[i].path, stage_stop.get_token(), plan_stop, &report);
+      RunCandidate(problem, paths[i], stage_stop.get_token(), plan_stop, &report);
       if (report.validated()) {
         const Clock::time_point now = Clock::now();
         std::int64_t expected = std::numeric_limits<std::int64_t>::max();

@@ -27,7 +27,11 @@ namespace topay {
 ///     worker by the back end options.optimizer chooses (MakeTrajectoryBackEnd: arc
 ///     length-yaw or the flatness baseline, core/optimization/trajectory_back_end.h); an
 ///     optimizer success is then checked by the independent validator against the exact
-///     scene (core/validate). After the first validated success
+///     scene (core/validate). A start or goal that the fields reject but the exact scene
+///     accepts is planned for (the front end's exact zones, with the validator's exact
+///     checker and margins); the back end relaxes its margins over the path's first and last
+///     states that needed it (TrajectoryProblem::exact_prefix_states). After the first
+///     validated success
 ///     the others get early_termination_window_s, then they are cancelled; the shortest
 ///     validated trajectory wins. options.sequential: one after another, no early stop.
 /// A success is only ever a trajectory the validator accepted.
@@ -67,15 +71,15 @@ class WholeBodyPlanner {
   struct Stage;
   void OptimizeCandidates(const WholeBodyState& start, const Eigen::Isometry3d& X_WE_goal,
                           std::stop_token plan_stop, WholeBodyPlanResult* result) const;
-  void RunCandidate(const TrajectoryProblem& problem, const WholeBodyPath& path,
+  void RunCandidate(const TrajectoryProblem& problem, const FrontEndPath& path,
                     std::stop_token stop, std::stop_token plan_stop,
                     CandidateReport* report) const;
 
   WholeBodyPlannerOptions options_;
   BaseLimits base_limits_;
+  TrajectoryValidator validator_;  // before front_end_, which uses its exact checker
   FrontEnd front_end_;
   std::unique_ptr<const TrajectoryBackEnd> back_end_;
-  TrajectoryValidator validator_;
 };
 
 /// "time limit 3.000 s reached during <stage>: ", the prefix of a kTimeLimit plan's reason.

@@ -10,10 +10,13 @@
 
 #include <tbb/task_arena.h>
 
+#include "core/collision/start_target_diagnosis.h"
 #include "core/common/random.h"
 #include "core/common/stopwatch.h"
+#include "core/planning/base_escape.h"
+#include "core/planning/base_free_space.h"
 #include "core/planning/base_reachable_region.h"
-#include "core/planning/field_clearance.h"
+#include "core/planning/goal_clearance.h"
 #include "core/planning/parallel_acquisition.h"
 
 namespace topay {
@@ -51,6 +54,36 @@ std::string SummariseJobFailures(const std::vector<ArmJobReport>& jobs) {
   return out;
 }
 
+// The IK options of the goal search's second round.
+WholeBodyIkOptions RetryIkOptions(const FrontEndOptions& o) {
+  WholeBodyIkOptions ik = o.ik;
+  const GoalRetryOptions& retry = o.goal_retry;
+  ik.max_base_candidates = std::max(ik.max_base_candidates, retry.max_base_candidates);
+  ik.restarts_per_base = std::max(ik.restarts_per_base, retry.restarts_per_base);
+  ik.time_budget_s = std::max(ik.time_budget_s, retry.time_budget_s);
+  ik.max_total_iterations = std::max(ik.max_total_iterations, retry.max_total_iterations);
+  ik.seed = DeriveSeed(o.ik.seed, 1);  // other base poses and restarts than the first round
+  return ik;
+}
+
+Eigen::Vector2d BaseOf(const WholeBodyState& state) { return {state.x_m, state.y_m}; }
+
+// 1 + the index of the last of the first states within the zone around `centre` (from the
+// front, or from the back) that the fields reject; 0 if none.
+int CountRejectedInZone(const WholeBodyValidity& validity, const std::vector<WholeBodyState>& states,
+                        const Eigen::Vector2d& centre, bool from_back) {
+  WholeBodyValidityWorkspace workspace = validity.MakeWorkspace();
+  const double radius_m = validity.exact_zones().options.radius_m;
+  const int n = static_cast<int>(states.size());
+  int count = 0;
+  for (int k = 0; k < n; ++k) {
+    const WholeBodyState& state = states[from_back ? n - 1 - k : k];
+    if ((BaseOf(state) - centre).norm() > radius_m) break;
+    if (validity.CheckOnFields(state, &workspace) != ValidityFailure::kNone) count = k + 1;
+  }
+  return count;
+}
+
 }  // namespace
 
 struct FrontEnd::Arena {
@@ -66,16 +99,21 @@ struct FrontEnd::PlanContext {
   std::stop_token stop;
   Clock::time_point t0;
   FrontEndResult* result;
+  /// Set if the fields reject the start but the exact scene accepts it (CheckStart).
+  std::optional<Eigen::Vector2d> start_zone_W;
 };
 
 FrontEnd::FrontEnd(const Kinematics& kinematics, const SignedDistanceField2& base_field,
-                   const SignedDistanceField3& arm_field, FrontEndOptions options)
+                   const SignedDistanceField3& arm_field, FrontEndOptions options,
+                   const SceneClearanceChecker* exact)
     : kinematics_(kinematics),
       base_field_(base_field),
       arm_field_(arm_field),
       options_((CheckFrontEndOptions(options), std::move(options))),
       validity_(kinematics, base_field, arm_field, options_.validity),
       ik_(kinematics, options_.ik),
+      ik_retry_(kinematics, RetryIkOptions(options_)),
+      exact_(exact),
       arena_(std::make_unique<Arena>(options_.num_threads)) {}
 
 FrontEnd::~FrontEnd() = default;
@@ -102,15 +140,11 @@ FrontEndResult FrontEnd::Plan(const WholeBodyState& start, const Eigen::Isometry
     why = CheckState(*hint, n);
     if (!why.empty()) return fail(FrontEndStatus::kInvalidInput, "goal hint: " + why);
   }
-  WholeBodyValidityWorkspace workspace = validity_.MakeWorkspace();
-  const ValidityFailure start_failure = validity_.Check(start, &workspace);
-  if (start_failure != ValidityFailure::kNone) {
-    return fail(FrontEndStatus::kStartInvalid,
-                "start state: " + std::string(ToString(start_failure)));
-  }
+  PlanContext context{start, X_WE_target, hint, stop, t0, &result, std::nullopt};
+  why = CheckStart(&context);
+  if (!why.empty()) return fail(FrontEndStatus::kStartInvalid, "start state: " + why);
   if (stop.stop_requested()) return fail(FrontEndStatus::kCancelled, "cancelled before start");
 
-  PlanContext context{start, X_WE_target, hint, stop, t0, &result};
   arena_->arena.execute([&] { PlanInArena(&context); });
 
   std::stable_sort(result.paths.begin(), result.paths.end(),
@@ -160,25 +194,93 @@ bool FrontEnd::AttemptGoals(int first, PlanContext* context) const {
   return false;
 }
 
+std::string FrontEnd::CheckStart(PlanContext* context) const {
+  const WholeBodyState& start = context->start;
+  WholeBodyValidityWorkspace workspace = validity_.MakeWorkspace();
+  const ValidityFailure failure = validity_.Check(start, &workspace);
+  if (failure == ValidityFailure::kNone) return "";
+  if (exact_ == nullptr ||
+      (failure != ValidityFailure::kBaseCollision && failure != ValidityFailure::kArmCollision)) {
+    return std::string(ToString(failure));
+  }
+  // The fields are conservative: the exact scene decides.
+  const ExactZones zone{exact_, options_.exact_zones, {BaseOf(start)}};
+  if (validity_.WithExactZones(zone).Check(start, &workspace) == ValidityFailure::kNone) {
+    context->start_zone_W = BaseOf(start);
+    context->result->stats.start_in_exact_zone = true;
+    return "";
+  }
+  StartDiagnosisOptions diagnosis;
+  diagnosis.obstacle_margin_m = options_.exact_zones.obstacle_margin_m;
+  diagnosis.self_margin_m = std::max(options_.exact_zones.self_margin_m, options_.validity.self_margin_m);
+  const auto why = DiagnoseStartState(kinematics_, exact_->scene(), start, diagnosis);
+  return why ? *why : std::string(ToString(ValidityFailure::kExactCollision));
+}
+
+GoalCandidatesResult FrontEnd::SearchGoals(
+    const WholeBodyState* hint, const std::function<bool(const WholeBodyState&)>& admit,
+    PlanContext* context) const {
+  FrontEndStats& stats = context->result->stats;
+  const Stopwatch watch;
+  GoalClearance goal_clearance(validity_, base_field_, arm_field_, exact_, options_.exact_zones);
+  const std::stop_token& stop = context->stop;
+  // Cancelled: every state is rejected (NaN), so the IK ends within its current DLS run.
+  const StateClearanceFn clearance = [&](const WholeBodyState& state) {
+    if (stop.stop_requested()) return std::numeric_limits<double>::quiet_NaN();
+    if (admit && !admit(state)) return -1.0;  // rejected like a collision
+    return goal_clearance(state);
+  };
+  const std::optional<WholeBodyState> hint_state =
+      hint ? std::optional<WholeBodyState>(*hint) : std::nullopt;
+  GoalCandidatesResult found = FindGoalCandidates(ik_, context->X_WE_target, context->start,
+                                                  hint_state, clearance, options_.goal);
+  if (!found.success() && options_.goal_retry.enabled && !stop.stop_requested()) {
+    stats.used_goal_retry = true;
+    GoalCandidatesResult again = FindGoalCandidates(ik_retry_, context->X_WE_target,
+                                                    context->start, hint_state, clearance,
+                                                    options_.goal);
+    again.time_s += found.time_s;
+    if (!again.success()) {
+      again.failure_reason = found.failure_reason + "; again with more base poses and "
+                             "restarts: " + again.failure_reason;
+    }
+    found = std::move(again);
+  }
+  const GoalClearanceTally& tally = goal_clearance.tally();
+  if (!found.success()) found.failure_reason += " (" + tally.Describe() + ")";
+  GoalClearanceTally& sum = stats.goal_clearance;
+  sum.field_accepted += tally.field_accepted;
+  sum.exact_accepted += tally.exact_accepted;
+  sum.joint_limit += tally.joint_limit;
+  sum.self_collision += tally.self_collision;
+  sum.exact_base += tally.exact_base;
+  sum.exact_arm += tally.exact_arm;
+  sum.field_only += tally.field_only;
+  stats.goal_ms += watch.ElapsedMs();
+  return found;
+}
+
 bool FrontEnd::FindReachableGoals(PlanContext* context) const {
   FrontEndResult& result = *context->result;
   result.stats.used_reachable_goal_search = true;
-  const Stopwatch watch;
   const double safe_distance_m =
       kinematics_.model().base_cylinder.radius_m +
       std::max(options_.fallback_base_clearance_m, validity_.base_margin_m());
-  const BaseReachableRegion region(base_field_, {context->start.x_m, context->start.y_m},
-                                   safe_distance_m);
-  WholeBodyValidityWorkspace workspace = validity_.MakeWorkspace();
-  const std::stop_token& stop = context->stop;
-  const StateClearanceFn clearance = [&](const WholeBodyState& state) {
-    if (stop.stop_requested()) return std::numeric_limits<double>::quiet_NaN();
-    if (!region.Contains({state.x_m, state.y_m})) return -1.0;  // rejected like a collision
-    return FieldClearance(validity_, base_field_, arm_field_, state, &workspace);
-  };
-  GoalCandidatesResult more = FindGoalCandidates(ik_, context->X_WE_target, context->start,
-                                                 std::nullopt, clearance, options_.goal);
-  result.stats.goal_ms += watch.ElapsedMs();
+  Eigen::Vector2d seed_W = BaseOf(context->start);
+  if (context->start_zone_W) {  // a start the field rejects: from its escape position
+    const BaseFreeSpace free_space(base_field_, safe_distance_m);
+    const WholeBodyValidity validity =
+        validity_.WithExactZones({exact_, options_.exact_zones, {*context->start_zone_W}});
+    if (!free_space.IsFree(seed_W)) {
+      seed_W = FindBaseEscape(free_space, validity, seed_W, context->start.yaw_rad,
+                              options_.base_escape)
+                   .value_or(seed_W);
+    }
+  }
+  const BaseReachableRegion region(base_field_, seed_W, safe_distance_m);
+  GoalCandidatesResult more = SearchGoals(
+      nullptr, [&region](const WholeBodyState& state) { return region.Contains(BaseOf(state)); },
+      context);
   if (!more.success()) {
     result.failure_reason = region.start_joins_grid() ? more.failure_reason
                                                       : "the start base position joins no "
@@ -193,17 +295,8 @@ bool FrontEnd::FindReachableGoals(PlanContext* context) const {
 
 bool FrontEnd::FindGoals(PlanContext* context) const {
   FrontEndResult& result = *context->result;
-  const Stopwatch watch;
-  WholeBodyValidityWorkspace workspace = validity_.MakeWorkspace();
-  const std::stop_token& stop = context->stop;
-  // Cancelled: every state is rejected (NaN), so the IK ends within its current DLS run.
-  const StateClearanceFn clearance = [&](const WholeBodyState& state) {
-    if (stop.stop_requested()) return std::numeric_limits<double>::quiet_NaN();
-    return FieldClearance(validity_, base_field_, arm_field_, state, &workspace);
-  };
-  result.goal_candidates = FindGoalCandidates(ik_, context->X_WE_target, context->start,
-                                              context->hint, clearance, options_.goal);
-  result.stats.goal_ms += watch.ElapsedMs();
+  result.goal_candidates =
+      SearchGoals(context->hint ? &*context->hint : nullptr, nullptr, context);
   result.stats.num_goal_candidates = static_cast<int>(result.goal_candidates.candidates.size());
   if (!result.goal_candidates.success()) {
     result.status = FrontEndStatus::kNoGoal;
@@ -213,20 +306,34 @@ bool FrontEnd::FindGoals(PlanContext* context) const {
   return true;
 }
 
+WholeBodyValidity FrontEnd::AttemptValidity(const GoalCandidate& goal,
+                                            PlanContext* context) const {
+  ExactZones zones{exact_, options_.exact_zones, {}};
+  if (context->start_zone_W) zones.centres_W_m.push_back(*context->start_zone_W);
+  if (exact_ != nullptr) {
+    WholeBodyValidityWorkspace workspace = validity_.MakeWorkspace();
+    if (validity_.CheckOnFields(goal.state, &workspace) != ValidityFailure::kNone) {
+      zones.centres_W_m.push_back(BaseOf(goal.state));
+    }
+  }
+  return validity_.WithExactZones(std::move(zones));
+}
+
 bool FrontEnd::AttemptGoal(int attempt, PlanContext* context) const {
   FrontEndResult& result = *context->result;
   const GoalCandidate& goal = result.goal_candidates.candidates[attempt];
   const std::string where = "goal candidate " + std::to_string(attempt) + ": ";
   ++result.stats.num_goal_attempts;
 
-  const TopologicalPathSearchResult search = SearchBasePaths(attempt, goal, context);
+  const WholeBodyValidity validity = AttemptValidity(goal, context);
+  const TopologicalPathSearchResult search = SearchBasePaths(attempt, goal, validity, context);
   if (!search.ok()) {
     result.status = FrontEndStatus::kNoBasePath;
     result.failure_reason = where + "base paths: " + search.reason;
     return false;
   }
   const std::vector<ArmJob> jobs = MakeArmJobs(attempt, goal, search, context);
-  ParallelAcquisitionResult acquired = AcquireArmPaths(attempt, goal, jobs, context);
+  ParallelAcquisitionResult acquired = AcquireArmPaths(attempt, goal, jobs, validity, context);
   const int job_offset = static_cast<int>(result.jobs.size());
   result.jobs.insert(result.jobs.end(), acquired.jobs.begin(), acquired.jobs.end());
   if (acquired.paths.empty()) {
@@ -235,7 +342,21 @@ bool FrontEnd::AttemptGoal(int attempt, PlanContext* context) const {
                             " base paths: " + SummariseJobFailures(acquired.jobs);
     return false;
   }
-  for (FrontEndPath& path : acquired.paths) path.job += job_offset;
+  // AttemptValidity added the goal's zone after the start's.
+  const bool goal_zone = validity.exact_zones().centres_W_m.size() >
+                         (context->start_zone_W ? 1u : 0u);
+  for (FrontEndPath& path : acquired.paths) {
+    path.job += job_offset;
+    if (context->start_zone_W) {
+      path.exact_prefix_states =
+          CountRejectedInZone(validity, path.path.states, *context->start_zone_W, false);
+    }
+    if (goal_zone) {
+      path.exact_suffix_states =
+          CountRejectedInZone(validity, path.path.states, BaseOf(goal.state), true);
+    }
+  }
+  result.stats.goal_in_exact_zone = goal_zone;
   result.paths = std::move(acquired.paths);
   result.goal = goal.state;
   result.stats.goal_from_hint = goal.from_hint;
@@ -243,19 +364,18 @@ bool FrontEnd::AttemptGoal(int attempt, PlanContext* context) const {
 }
 
 TopologicalPathSearchResult FrontEnd::SearchBasePaths(int attempt, const GoalCandidate& goal,
+                                                      const WholeBodyValidity& validity,
                                                       PlanContext* context) const {
   FrontEndResult& result = *context->result;
   FrontEndStats& stats = result.stats;
-  const WholeBodyState& start = context->start;
   // Base paths, free at the validity's base margin at least.
   TopologicalPathSearchOptions topology = options_.topology;
   topology.base_radius_m = kinematics_.model().base_cylinder.radius_m;
   topology.clearance_m = std::max(topology.clearance_m, validity_.base_margin_m());
   topology.prm.seed = DeriveSeed(options_.seed, 2 * static_cast<std::uint64_t>(attempt));
   const Stopwatch watch;
-  const Eigen::Vector2d start_W(start.x_m, start.y_m), goal_W(goal.state.x_m, goal.state.y_m);
   TopologicalPathSearchResult search =
-      SearchTopologicalBasePaths(base_field_, start_W, goal_W, topology, context->stop);
+      SearchBasePathsAt(topology.clearance_m, goal, topology, validity, context);
   // Narrow passages, or a start or goal near an obstacle: search again at the smallest
   // clearance the validity allows.
   const double fallback_clearance_m =
@@ -263,8 +383,7 @@ TopologicalPathSearchResult FrontEnd::SearchBasePaths(int attempt, const GoalCan
   if (!search.ok() && search.status != TopologicalPathSearchResult::Status::kCancelled &&
       search.status != TopologicalPathSearchResult::Status::kInvalidInput &&
       fallback_clearance_m < topology.clearance_m) {
-    topology.clearance_m = fallback_clearance_m;
-    search = SearchTopologicalBasePaths(base_field_, start_W, goal_W, topology, context->stop);
+    search = SearchBasePathsAt(fallback_clearance_m, goal, topology, validity, context);
     stats.used_fallback_base_clearance = true;
   }
   stats.topology_ms += watch.ElapsedMs();
@@ -275,6 +394,39 @@ TopologicalPathSearchResult FrontEnd::SearchBasePaths(int attempt, const GoalCan
   stats.num_classes_kept = search.stats.num_classes_kept;
   stats.num_base_paths = static_cast<int>(search.paths.size());
   stats.jps_ok = search.stats.jps_ok;
+  return search;
+}
+
+TopologicalPathSearchResult FrontEnd::SearchBasePathsAt(
+    double clearance_m, const GoalCandidate& goal, const TopologicalPathSearchOptions& topology,
+    const WholeBodyValidity& validity, PlanContext* context) const {
+  TopologicalPathSearchOptions options = topology;
+  options.clearance_m = clearance_m;
+  const BaseFreeSpace free_space(base_field_, options.base_radius_m + clearance_m);
+  // A start or goal in an exact zone that the field rejects at this clearance: search from
+  // (to) the nearest position it accepts.
+  const auto escape = [&](const WholeBodyState& state, bool* escaped) {
+    const Eigen::Vector2d p_W = BaseOf(state);
+    if (free_space.IsFree(p_W) || !validity.exact_zones().Contains(p_W)) return p_W;
+    const auto exit = FindBaseEscape(free_space, validity, p_W, state.yaw_rad, options_.base_escape);
+    *escaped = exit.has_value();
+    return exit.value_or(p_W);
+  };
+  bool start_escaped = false, goal_escaped = false;
+  const Eigen::Vector2d start_W = escape(context->start, &start_escaped);
+  const Eigen::Vector2d goal_W = escape(goal.state, &goal_escaped);
+  TopologicalPathSearchResult search =
+      SearchTopologicalBasePaths(base_field_, start_W, goal_W, options, context->stop);
+  if (!search.ok() || !(start_escaped || goal_escaped)) return search;
+  for (BasePath& path : search.paths) {
+    std::vector<Eigen::Vector2d>& waypoints = path.waypoints_W_m;
+    if (start_escaped) waypoints.insert(waypoints.begin(), BaseOf(context->start));
+    if (goal_escaped) waypoints.push_back(BaseOf(goal.state));
+    path.length_m = PolylineLength(waypoints);
+  }
+  FrontEndStats& stats = context->result->stats;
+  stats.start_base_escape = stats.start_base_escape || start_escaped;
+  stats.goal_base_escape = goal_escaped;
   return search;
 }
 
@@ -309,6 +461,7 @@ std::vector<ArmJob> FrontEnd::MakeArmJobs(int attempt, const GoalCandidate& goal
 
 ParallelAcquisitionResult FrontEnd::AcquireArmPaths(int attempt, const GoalCandidate& goal,
                                                     const std::vector<ArmJob>& jobs,
+                                                    const WholeBodyValidity& validity,
                                                     PlanContext* context) const {
   FrontEndStats& stats = context->result->stats;
   ParallelAcquisitionOptions acquisition;
@@ -318,7 +471,7 @@ ParallelAcquisitionResult FrontEnd::AcquireArmPaths(int attempt, const GoalCandi
   acquisition.num_workers = tbb::this_task_arena::max_concurrency();
   acquisition.goal_attempt = attempt;
   ParallelAcquisitionResult acquired =
-      AcquireWholeBodyPaths(jobs, context->start.q_rad, goal.state.q_rad, validity_, acquisition,
+      AcquireWholeBodyPaths(jobs, context->start.q_rad, goal.state.q_rad, validity, acquisition,
                             context->t0, context->stop);
   stats.acquisition_ms += acquired.wall_ms;
   stats.num_jobs += static_cast<int>(acquired.jobs.size());

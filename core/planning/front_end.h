@@ -1,5 +1,6 @@
 #pragma once
 
+#include <functional>
 #include <memory>
 #include <optional>
 #include <stop_token>
@@ -7,6 +8,7 @@
 
 #include <Eigen/Geometry>
 
+#include "core/collision/scene_clearance.h"
 #include "core/map/signed_distance_field2.h"
 #include "core/map/signed_distance_field3.h"
 #include "core/planning/front_end_options.h"
@@ -31,7 +33,13 @@ namespace topay {
 ///  4. if no job succeeds, the next goal candidate (up to max_goal_attempts); if none had a
 ///     base path, goal candidates whose base the start can reach (BaseReachableRegion).
 /// Validity everywhere is WholeBodyValidity on the two fields (with its default margins a
-/// valid state is exactly clear of the scene the fields were built from).
+/// valid state is exactly clear of the scene the fields were built from). Given an exact
+/// checker (the scene, or later the map's voxels), a start or goal candidate the fields
+/// reject but the exact scene accepts is valid: it gets an exact zone (ExactZones,
+/// FrontEndOptions::exact_zones) in which the fields' rejections are checked again exactly,
+/// and the base path search leaves (reaches) it by a straight escape move
+/// (FindBaseEscape); the paths say how many of their first and last states needed the
+/// exact check (FrontEndPath::exact_prefix_states).
 ///
 /// Cancellation: Plan polls `stop` between stages and passes it (merged with its own
 /// deadlines) to the base path search and to every arm job, which poll it every iteration.
@@ -42,8 +50,10 @@ namespace topay {
 class FrontEnd {
  public:
   /// Throws std::invalid_argument for options out of range (naming them).
+  /// `exact`, if given, must outlive this object (with its scene).
   FrontEnd(const Kinematics& kinematics, const SignedDistanceField2& base_field,
-           const SignedDistanceField3& arm_field, FrontEndOptions options = {});
+           const SignedDistanceField3& arm_field, FrontEndOptions options = {},
+           const SceneClearanceChecker* exact = nullptr);
   ~FrontEnd();
   FrontEnd(const FrontEnd&) = delete;
   FrontEnd& operator=(const FrontEnd&) = delete;
@@ -65,6 +75,16 @@ class FrontEnd {
   struct PlanContext;
 
   void PlanInArena(PlanContext* context) const;
+  /// Empty if the start is usable (on the fields, or exactly inside a new exact zone, which
+  /// it records in the context), else the reason it is not.
+  std::string CheckStart(PlanContext* context) const;
+  /// The goal search (FindGoalCandidates with GoalClearance), with its second round.
+  GoalCandidatesResult SearchGoals(const WholeBodyState* hint,
+                                   const std::function<bool(const WholeBodyState&)>& admit,
+                                   PlanContext* context) const;
+  /// validity_ with the exact zones of this attempt: the start's, and the goal's if the
+  /// fields reject it.
+  WholeBodyValidity AttemptValidity(const GoalCandidate& goal, PlanContext* context) const;
   bool FindGoals(PlanContext* context) const;
   /// Tries goal candidates [first, first + max_goal_attempts) in turn. True on success.
   bool AttemptGoals(int first, PlanContext* context) const;
@@ -78,7 +98,15 @@ class FrontEnd {
   /// Topological base paths to the goal's base (again at the fallback clearance if none);
   /// records the search's figures in the result.
   TopologicalPathSearchResult SearchBasePaths(int attempt, const GoalCandidate& goal,
+                                              const WholeBodyValidity& validity,
                                               PlanContext* context) const;
+  /// One base path search at `clearance_m`, from and to the escape positions of a start or
+  /// goal the field rejects there (in an exact zone), the escape moves put back into the
+  /// paths.
+  TopologicalPathSearchResult SearchBasePathsAt(double clearance_m, const GoalCandidate& goal,
+                                                const TopologicalPathSearchOptions& topology,
+                                                const WholeBodyValidity& validity,
+                                                PlanContext* context) const;
   /// One arm job per base path, shortest first, each with its DiscreteSE2 layers.
   std::vector<ArmJob> MakeArmJobs(int attempt, const GoalCandidate& goal,
                                   const TopologicalPathSearchResult& search,
@@ -86,6 +114,7 @@ class FrontEnd {
   /// The parallel arm RRT* stage on the jobs; records its figures in the result's stats.
   ParallelAcquisitionResult AcquireArmPaths(int attempt, const GoalCandidate& goal,
                                             const std::vector<ArmJob>& jobs,
+                                            const WholeBodyValidity& validity,
                                             PlanContext* context) const;
 
   const Kinematics& kinematics_;
@@ -94,6 +123,8 @@ class FrontEnd {
   FrontEndOptions options_;
   WholeBodyValidity validity_;
   WholeBodyIk ik_;
+  WholeBodyIk ik_retry_;  ///< ik_ with FrontEndOptions::goal_retry's figures.
+  const SceneClearanceChecker* exact_;
   std::unique_ptr<Arena> arena_;
 };
 

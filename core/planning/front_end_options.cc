@@ -19,6 +19,12 @@ void CheckFrontEndOptions(const FrontEndOptions& o) {
           "fallback_base_clearance_m", "finite and >= 0");
   require(o.num_threads >= 0, "num_threads", ">= 0 (0: all cores)");
   CheckGoalCandidatesOptions(o.goal);
+  require(o.goal_retry.max_base_candidates >= 0, "goal_retry.max_base_candidates", ">= 0");
+  require(o.goal_retry.restarts_per_base >= 1, "goal_retry.restarts_per_base", ">= 1");
+  require(o.goal_retry.time_budget_s > 0.0, "goal_retry.time_budget_s", "> 0");
+  require(o.goal_retry.max_total_iterations >= 1, "goal_retry.max_total_iterations", ">= 1");
+  CheckExactZoneOptions(o.exact_zones);
+  CheckBaseEscapeOptions(o.base_escape);
 }
 
 }  // namespace topay

@@ -4,7 +4,9 @@
 #include <optional>
 
 #include "core/planning/arm_rrt_star.h"
+#include "core/planning/base_escape.h"
 #include "core/planning/discrete_se2.h"
+#include "core/planning/exact_zones.h"
 #include "core/planning/goal_candidates.h"
 #include "core/planning/topological_path_search.h"
 #include "core/planning/whole_body_validity.h"
@@ -12,6 +14,18 @@
 #include "core/robot/whole_body_ik.h"
 
 namespace topay {
+
+/// The goal search's second round (FrontEndOptions::goal_retry): when the IK finds no goal
+/// within its first budget, it searches again with these figures in place of the IK's own
+/// (a new seed, more base poses and restarts, a longer time budget) before the front end
+/// gives up.
+struct GoalRetryOptions {
+  bool enabled = true;
+  int max_base_candidates = 64;
+  int restarts_per_base = 8;
+  double time_budget_s = 0.25;
+  int max_total_iterations = 100000;
+};
 
 /// Options of FrontEnd (paper Sec. III-A, Algorithm 1), Ceres style. Defaults follow the facts
 /// sheet's front-end figures where it gives one; departures are stated field by field.
@@ -25,6 +39,18 @@ struct FrontEndOptions {
   /// Goal candidates tried in turn (each: base paths + arm search) until one yields at least
   /// one whole-body path.
   int max_goal_attempts = 2;
+
+  /// Second round of the goal search when the first finds no goal (not when it was stopped).
+  GoalRetryOptions goal_retry;
+
+  // ---- Exact zones (a FrontEnd built with an exact checker) --------------------------------
+  /// Around a start, or a goal candidate, that the fields reject but the exact scene accepts,
+  /// states are checked exactly where the fields reject them (ExactZones: within radius_m of
+  /// its base position; the margins are the exact clearances required, which the planner
+  /// sets to its validator's), and the base path search starts (ends) at the nearest
+  /// position it accepts, reached by a straight move (base_escape).
+  ExactZoneOptions exact_zones;
+  BaseEscapeOptions base_escape;
 
   // ---- Base paths ------------------------------------------------------------------------
   /// Topological PRM + JPS (authors' code: 10 ms / 5000 samples, 300 raw paths, 25 kept,

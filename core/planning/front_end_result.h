@@ -10,6 +10,7 @@
 #include "core/planning/base_path.h"
 #include "core/planning/discrete_se2.h"
 #include "core/planning/goal_candidates.h"
+#include "core/planning/goal_clearance.h"
 #include "core/planning/topological_path_search.h"
 #include "core/planning/whole_body_path.h"
 
@@ -37,6 +38,12 @@ struct FrontEndPath {
   BasePath base_path;
   DiscreteSE2Path base_sequence;  ///< The layers path.states lie on, in order.
   int job = 0;                    ///< Index into FrontEndResult::jobs.
+  /// Leading (trailing) states of path that lie in the start's (goal's) exact zone and that
+  /// the fields reject: 1 + the index of the last such state from the start (from the end);
+  /// 0 when the start (goal) is clear on the fields. The back end relaxes its margins there
+  /// (TrajectoryProblem::exact_prefix_states).
+  int exact_prefix_states = 0;
+  int exact_suffix_states = 0;
 
   double duration_s() const { return path.times_s.empty() ? 0.0 : path.times_s.back(); }
 };
@@ -50,6 +57,16 @@ struct FrontEndStats {
   /// The goal candidates ran out without a base path and the reachable-goal search ran
   /// (FrontEndOptions::reachable_goal_search); its candidates follow the first ones.
   bool used_reachable_goal_search = false;
+  /// The goal search's second round ran (FrontEndOptions::goal_retry).
+  bool used_goal_retry = false;
+  /// What the goal search's clearance function decided (both rounds).
+  GoalClearanceTally goal_clearance;
+  /// The start (the chosen goal) was rejected by the fields but is exactly clear: it got an
+  /// exact zone (ExactZones) and, if the base path search needed one, a base escape move.
+  bool start_in_exact_zone = false;
+  bool goal_in_exact_zone = false;
+  bool start_base_escape = false;
+  bool goal_base_escape = false;
   // Base paths (the goal attempt that produced the result, else the last one).
   int num_prm_nodes = 0;           ///< Guards + connectors.
   int num_raw_paths = 0;           ///< DFS.

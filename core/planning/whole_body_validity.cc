@@ -4,6 +4,7 @@
 #include <cmath>
 #include <stdexcept>
 #include <string>
+#include <utility>
 
 #include "core/planning/base_band.h"
 
@@ -75,6 +76,8 @@ std::string_view ToString(ValidityFailure failure) {
       return "self collision";
     case ValidityFailure::kChassis:
       return "arm below the chassis top";
+    case ValidityFailure::kExactCollision:
+      return "collision (exact geometry)";
   }
   return "unknown";
 }
@@ -105,14 +108,48 @@ WholeBodyValidityWorkspace WholeBodyValidity::MakeWorkspace() const {
   return workspace;
 }
 
-bool WholeBodyValidity::IsBaseValid(const Eigen::Vector2d& p_WB) const {
+WholeBodyValidity WholeBodyValidity::WithExactZones(ExactZones zones) const {
+  CheckExactZoneOptions(zones.options);
+  WholeBodyValidity copy(*this);
+  copy.zones_ = std::move(zones);
+  return copy;
+}
+
+bool WholeBodyValidity::IsBaseValidOnField(const Eigen::Vector2d& p_WB) const {
   // NaN compares false, so a NaN position is invalid.
   return base_field_.Distance(p_WB) >= model().base_cylinder.radius_m + base_margin_m_;
+}
+
+bool WholeBodyValidity::IsBaseValid(const Eigen::Vector2d& p_WB) const {
+  if (IsBaseValidOnField(p_WB)) return true;
+  if (!p_WB.allFinite() || !zones_.Contains(p_WB)) return false;
+  const double margin_m = zones_.options.obstacle_margin_m;
+  return zones_.checker->BaseClearance(p_WB, margin_m) > margin_m;
 }
 
 ValidityFailure WholeBodyValidity::Check(const WholeBodyState& state,
                                          WholeBodyValidityWorkspace* workspace,
                                          bool check_base) const {
+  if (zones_.empty() || !std::isfinite(state.x_m) || !std::isfinite(state.y_m) ||
+      !zones_.Contains(state)) {
+    return CheckOnFields(state, workspace, check_base);
+  }
+  const ValidityFailure failure = CheckOnFields(state, workspace, /*check_base=*/true);
+  if (failure != ValidityFailure::kBaseCollision && failure != ValidityFailure::kArmCollision) {
+    return failure;
+  }
+  // The fields are conservative here: ask the exact scene (every part, at the zones' margins).
+  if (!workspace->exact) workspace->exact = zones_.checker->MakeWorkspace();
+  const double self_margin_m = std::max(zones_.options.self_margin_m, options_.self_margin_m);
+  return zones_.checker->IsCollisionFree(state, zones_.options.obstacle_margin_m, self_margin_m,
+                                         &*workspace->exact)
+             ? ValidityFailure::kNone
+             : ValidityFailure::kExactCollision;
+}
+
+ValidityFailure WholeBodyValidity::CheckOnFields(const WholeBodyState& state,
+                                                 WholeBodyValidityWorkspace* workspace,
+                                                 bool check_base) const {
   const RobotModel& robot = model();
   if (state.num_joints() != robot.num_joints() || !state.IsFinite()) {
     return ValidityFailure::kMalformed;
@@ -123,7 +160,7 @@ ValidityFailure WholeBodyValidity::Check(const WholeBodyState& state,
       return ValidityFailure::kJointLimit;
     }
   }
-  if (check_base && !IsBaseValid(Eigen::Vector2d(state.x_m, state.y_m))) {
+  if (check_base && !IsBaseValidOnField(Eigen::Vector2d(state.x_m, state.y_m))) {
     return ValidityFailure::kBaseCollision;
   }
   kinematics_.Update(state, &workspace->cache);

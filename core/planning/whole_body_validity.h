@@ -1,14 +1,16 @@
 #pragma once
 
-#include <Eigen/Core>
 #include <optional>
 #include <string_view>
-
-#include "core/map/signed_distance_field2.h"
-#include "core/map/signed_distance_field3.h"
-#include "core/robot/kinematics.h"
 #include <vector>
 
+#include <Eigen/Core>
+
+#include "core/collision/scene_clearance.h"
+#include "core/map/signed_distance_field2.h"
+#include "core/map/signed_distance_field3.h"
+#include "core/planning/exact_zones.h"
+#include "core/robot/kinematics.h"
 #include "core/robot/self_collision.h"
 #include "core/robot/whole_body_state.h"
 
@@ -49,6 +51,8 @@ enum class ValidityFailure {
   kArmCollision,   ///< An arm sphere too close on the 3D field.
   kSelfCollision,  ///< A self-collision pair too close.
   kChassis,        ///< An arm sphere not above the chassis top.
+  /// In an exact zone (ExactZones): the fields rejected the state and the exact scene too.
+  kExactCollision,
 };
 std::string_view ToString(ValidityFailure failure);
 
@@ -58,6 +62,8 @@ struct WholeBodyValidityWorkspace {
   Eigen::VectorXd pair_distances_m;
   Eigen::VectorXd chassis_margins_m;
   WholeBodyState interpolated;
+  /// For the exact checks in exact zones; made on first use.
+  std::optional<SceneClearanceWorkspace> exact;
 };
 
 /// The planner's whole-body validity test on the distance fields (the optimizer's view of the
@@ -67,6 +73,12 @@ struct WholeBodyValidityWorkspace {
 /// (core/collision/scene_clearance.h) whose rasterisation made the fields, for every robot
 /// part at least half a cell inside the fields' volume (beyond it the fields assume free
 /// space) and with the fields' default zero level (SignedDistanceFieldOptions).
+/// With exact zones (WithExactZones): a state whose base lies in a zone and that the fields
+/// reject for its base or an arm sphere is checked again against the exact scene (base
+/// cylinder and every sphere at the zones' margins, self and chassis as below), and is valid
+/// if that passes; in a zone the base is always checked (check_base only skips it outside
+/// the zones), since the exact check must then cover the rigid spheres the 2D field stands
+/// for.
 /// Const methods are thread-safe given one workspace per thread. The kinematics (and model)
 /// and both fields must outlive this object.
 class WholeBodyValidity {
@@ -78,6 +90,11 @@ class WholeBodyValidity {
                     const WholeBodyValidityOptions& options = {});
 
   WholeBodyValidityWorkspace MakeWorkspace() const;
+
+  /// A copy that also accepts states the exact scene accepts in `zones` (see the class
+  /// comment). Throws std::invalid_argument for bad zone options.
+  WholeBodyValidity WithExactZones(ExactZones zones) const;
+  const ExactZones& exact_zones() const { return zones_; }
 
   const Kinematics& kinematics() const { return kinematics_; }
   const RobotModel& model() const { return kinematics_.model(); }
@@ -94,8 +111,14 @@ class WholeBodyValidity {
   bool IsValid(const WholeBodyState& state, WholeBodyValidityWorkspace* workspace) const {
     return Check(state, workspace) == ValidityFailure::kNone;
   }
-  /// The base cylinder alone at p_WB on the 2D field.
+  /// Check on the fields alone, ignoring the exact zones.
+  ValidityFailure CheckOnFields(const WholeBodyState& state, WholeBodyValidityWorkspace* workspace,
+                                bool check_base = true) const;
+  /// The base cylinder alone at p_WB on the 2D field; in an exact zone, where the field
+  /// rejects it, its exact clearance (base band boxes) above the zones' obstacle margin.
   bool IsBaseValid(const Eigen::Vector2d& p_WB) const;
+  /// The base cylinder alone on the 2D field (no zones).
+  bool IsBaseValidOnField(const Eigen::Vector2d& p_WB) const;
 
   /// Checks the straight segment from a to b (linear in x, y, yaw and q; yaw not wrapped) at
   /// EdgeSteps(a, b) + 1 evenly spaced states, a and b included. With check_base = false the
@@ -130,6 +153,7 @@ class WholeBodyValidity {
   std::vector<int> arm_field_spheres_;
   double base_margin_m_ = 0.0;
   double arm_margin_m_ = 0.0;
+  ExactZones zones_;
 };
 
 }  // namespace topay

@@ -1,0 +1,41 @@
+#pragma once
+
+#include <optional>
+
+#include <Eigen/Core>
+
+#include "core/planning/base_free_space.h"
+#include "core/planning/whole_body_validity.h"
+
+namespace topay {
+
+/// Options of FindBaseEscape.
+struct BaseEscapeOptions {
+  /// Exits are searched on rings of radius step_m, 2 step_m, ... up to max_distance_m (m)
+  /// around the trapped position, num_directions per ring.
+  double max_distance_m = 1.0;
+  double step_m = 0.02;
+  int num_directions = 32;
+  /// The straight move to an exit is checked every check_step_m (m), both ends included.
+  double check_step_m = 0.01;
+};
+
+/// Throws std::invalid_argument naming the first option out of range (distances and steps
+/// finite and > 0, at least 4 directions).
+void CheckBaseEscapeOptions(const BaseEscapeOptions& options);
+
+/// A way out for a base position the base path search cannot start from (or end at): a start
+/// or goal inside an exact zone (ExactZones) that the 2D field rejects at the search's
+/// clearance. Returns the nearest exit p_exit (smallest ring first; on a ring, the directions
+/// closest to the base's axis first, backwards before forwards, as a robot backs away from
+/// a table) such that free_space.IsFree(p_exit) and every checked point of the straight move
+/// p_W -> p_exit passes validity.IsBaseValid (the 2D field, or in a zone the exact base
+/// cylinder). nullopt if there is none within max_distance_m. `heading_rad`: the base's yaw.
+/// The base path search then runs from p_exit, and the move is the path's first segment (the
+/// arm search checks every whole-body state along it, exactly inside the zone).
+std::optional<Eigen::Vector2d> FindBaseEscape(const BaseFreeSpace& free_space,
+                                              const WholeBodyValidity& validity,
+                                              const Eigen::Vector2d& p_W, double heading_rad,
+                                              const BaseEscapeOptions& options = {});
+
+}  // namespace topay
