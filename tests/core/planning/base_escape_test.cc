@@ -1,0 +1,103 @@
+#include "core/planning/base_escape.h"
+
+#include <stdexcept>
+
+#include <gtest/gtest.h>
+
+#include "core/collision/scene_clearance.h"
+#include "core/io/robot_loader.h"
+#include "core/map/scene_distance_fields.h"
+#include "core/planning/planner_fields.h"
+#include "tests/common/tight_scenes.h"
+
+namespace topay {
+namespace {
+
+class BaseEscapeTest : public ::testing::Test {
+ protected:
+  BaseEscapeTest()
+      : model_(LoadRobotModel(TOPAY_SOURCE_DIR "/config/robot/topay_mm.urdf",
+                              TOPAY_SOURCE_DIR "/config/robot/topay_mm.yaml")),
+        kinematics_(model_) {}
+
+  RobotModel model_;
+  Kinematics kinematics_;
+};
+
+TEST(BaseEscapeOptionsTest, RejectsBadValuesByName) {
+  BaseEscapeOptions options;
+  EXPECT_NO_THROW(CheckBaseEscapeOptions(options));
+  options.num_directions = 3;
+  EXPECT_THROW(CheckBaseEscapeOptions(options), std::invalid_argument);
+  options = {};
+  options.step_m = 0.0;
+  try {
+    CheckBaseEscapeOptions(options);
+    FAIL() << "no throw";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("step_m"), std::string::npos);
+  }
+}
+
+// The base stands partly under a low table top behind it (the 2D field's upper band rejects
+// it, the exact base is 3 mm clear): the nearest exit lies ahead (away from the table), is
+// free on the field, and the straight move to it passes the zone's base check.
+TEST_F(BaseEscapeTest, LeavesALowTableTopByTheNearestFreePosition) {
+  const TightScene tight = MakeTightScene(kinematics_, TightSpot::kBaseUnderLowTableTop, 0.003);
+  const SceneDistanceFields fields =
+      BuildSceneDistanceFields(tight.scene, PlannerFieldOptions(kinematics_));
+  const SceneClearanceChecker checker(kinematics_, tight.scene);
+  const WholeBodyValidity validity =
+      WholeBodyValidity(kinematics_, fields.base_field_2d, fields.field_3d)
+          .WithExactZones({&checker, {}, {{0.0, 0.0}}});
+  const double clearance_m = 0.1;
+  const BaseFreeSpace free_space(fields.base_field_2d,
+                                 model_.base_cylinder.radius_m + clearance_m);
+  ASSERT_FALSE(free_space.IsFree({0.0, 0.0}));
+  ASSERT_TRUE(validity.IsBaseValid({0.0, 0.0}));
+  ASSERT_FALSE(validity.IsBaseValidOnField({0.0, 0.0}));
+
+  const auto exit = FindBaseEscape(free_space, validity, {0.0, 0.0}, 0.0);
+  ASSERT_TRUE(exit.has_value());
+  EXPECT_TRUE(free_space.IsFree(*exit));
+  EXPECT_GT(exit->x(), 0.0) << exit->transpose();  // away from the table behind
+  EXPECT_LE(exit->norm(), BaseEscapeOptions{}.max_distance_m + 1e-9);
+  // Nearest: no position on a smaller ring is free.
+  const double step_m = BaseEscapeOptions{}.step_m;
+  for (double r = step_m; r < exit->norm() - 1e-9; r += step_m) {
+    for (int k = 0; k < 32; ++k) {
+      const double a = 2.0 * 3.14159265358979 * k / 32;
+      EXPECT_FALSE(free_space.IsFree(Eigen::Vector2d(r * std::cos(a), r * std::sin(a))))
+          << "ring " << r;
+    }
+  }
+  // Outside every zone the base check is the field's alone: no escape through exact space.
+  const WholeBodyValidity fields_only(kinematics_, fields.base_field_2d, fields.field_3d);
+  EXPECT_FALSE(FindBaseEscape(free_space, fields_only, {0.0, 0.0}, 0.0).has_value());
+}
+
+// Walled in on every side within the escape distance: no exit.
+TEST_F(BaseEscapeTest, NoExitWhenWalledIn) {
+  Scene scene;
+  scene.bounds_W_m = Eigen::AlignedBox3d(Eigen::Vector3d(-4, -4, 0), Eigen::Vector3d(4, 4, 1.6));
+  for (const Eigen::Vector3d& wall : {Eigen::Vector3d(0.45, 0, 0.5), Eigen::Vector3d(-0.45, 0, 0.5)}) {
+    scene.boxes.push_back(MakeBox(wall, {0.04, 1.0, 1.0}));
+  }
+  for (const Eigen::Vector3d& wall : {Eigen::Vector3d(0, 0.45, 0.5), Eigen::Vector3d(0, -0.45, 0.5)}) {
+    scene.boxes.push_back(MakeBox(wall, {1.0, 0.04, 1.0}));
+  }
+  const SceneDistanceFields fields = BuildSceneDistanceFields(scene, PlannerFieldOptions(kinematics_));
+  const SceneClearanceChecker checker(kinematics_, scene);
+  const WholeBodyValidity validity =
+      WholeBodyValidity(kinematics_, fields.base_field_2d, fields.field_3d)
+          .WithExactZones({&checker, {}, {{0.0, 0.0}}});
+  // 3 cm of room on each side, the search needs 10 cm.
+  const BaseFreeSpace free_space(fields.base_field_2d, model_.base_cylinder.radius_m + 0.1);
+  ASSERT_FALSE(free_space.IsFree({0.0, 0.0}));
+  ASSERT_TRUE(validity.IsBaseValid({0.0, 0.0}));
+  EXPECT_FALSE(FindBaseEscape(free_space, validity, {0.0, 0.0}, 0.0).has_value());
+  EXPECT_FALSE(FindBaseEscape(free_space, validity, {std::nan(""), 0.0}, 0.0).has_value());
+}
+
+}  // namespace
+}  // namespace topay
