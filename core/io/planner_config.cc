@@ -113,6 +113,23 @@ void ReadFrontEnd(YamlSection section, FrontEndOptions* o) {
   ik.Read("max_base_candidates", &o->ik.max_base_candidates);
   ik.Read("restarts_per_base", &o->ik.restarts_per_base);
   ik.Finish();
+  YamlSection retry = section.Section("goal_retry");
+  retry.Read("enabled", &o->goal_retry.enabled);
+  retry.Read("max_base_candidates", &o->goal_retry.max_base_candidates);
+  retry.Read("restarts_per_base", &o->goal_retry.restarts_per_base);
+  retry.Read("time_budget_s", &o->goal_retry.time_budget_s);
+  retry.Read("max_total_iterations", &o->goal_retry.max_total_iterations);
+  retry.Finish();
+  // The zones' margins are the validator's (set by the planner), so only the radius is read.
+  YamlSection zones = section.Section("exact_zones");
+  zones.Read("radius_m", &o->exact_zones.radius_m);
+  zones.Finish();
+  YamlSection escape = section.Section("base_escape");
+  escape.Read("max_distance_m", &o->base_escape.max_distance_m);
+  escape.Read("step_m", &o->base_escape.step_m);
+  escape.Read("num_directions", &o->base_escape.num_directions);
+  escape.Read("check_step_m", &o->base_escape.check_step_m);
+  escape.Finish();
   ReadTopology(section.Section("topology"), &o->topology);
   YamlSection discretisation = section.Section("discretisation");
   discretisation.Read("delta_l_m", &o->discretisation.delta_l_m);
