@@ -12,7 +12,8 @@
 namespace topay {
 namespace {
 
-// Unit directions by preference: smallest angle to the base's axis first, backwards first.
+// Unit directions by preference: smallest angle to the base's axis first, forwards first
+// (DiscreteSE2 drives forwards only: an exit behind costs a turn in place first).
 std::vector<Eigen::Vector2d> PreferredDirections(double heading_rad, int count) {
   struct Direction {
     double off_axis_rad;
@@ -29,7 +30,7 @@ std::vector<Eigen::Vector2d> PreferredDirections(double heading_rad, int count) 
   }
   std::stable_sort(directions.begin(), directions.end(), [](const Direction& a, const Direction& b) {
     if (a.off_axis_rad != b.off_axis_rad) return a.off_axis_rad < b.off_axis_rad - 1e-12;
-    return !a.forwards && b.forwards;
+    return a.forwards && !b.forwards;
   });
   std::vector<Eigen::Vector2d> units;
   for (const Direction& d : directions) units.push_back(d.u);

@@ -27,9 +27,9 @@ void CheckBaseEscapeOptions(const BaseEscapeOptions& options);
 /// A way out for a base position the base path search cannot start from (or end at): a start
 /// or goal inside an exact zone (ExactZones) that the 2D field rejects at the search's
 /// clearance. Returns the nearest exit p_exit (smallest ring first; on a ring, the directions
-/// closest to the base's axis first, backwards before forwards, as a robot backs away from
-/// a table) such that free_space.IsFree(p_exit) and every checked point of the straight move
-/// p_W -> p_exit passes validity.IsBaseValid (the 2D field, or in a zone the exact base
+/// closest to the base's axis first, forwards before backwards, as the base paths are driven
+/// forwards and an exit behind costs a turn in place first) such that
+/// free_space.IsFree(p_exit) and every checked point of the straight move p_W -> p_exit passes validity.IsBaseValid (the 2D field, or in a zone the exact base
 /// cylinder). nullopt if there is none within max_distance_m. `heading_rad`: the base's yaw.
 /// The base path search then runs from p_exit, and the move is the path's first segment (the
 /// arm search checks every whole-body state along it, exactly inside the zone).
