@@ -16,6 +16,11 @@ struct TrajectoryProblem {
   WholeBodyState start;           ///< At rest; s(0) = 0.
   Eigen::Isometry3d X_WE_goal = Eigen::Isometry3d::Identity();  ///< p_e of eq. (7).
   BaseLimits base_limits;         ///< Caller-chosen (the benchmark: omega_max 1.25).
+  /// Leading and trailing states of the front-end path that were validated exactly rather than
+  /// on the fields (the start or the goal lies inside the fields' margins; core/planning).
+  /// The back end relaxes its clearance margins there (EndpointRelief). 0: none (default).
+  int exact_prefix_states = 0;
+  int exact_suffix_states = 0;
 };
 
 /// The heights (m, world z) the end-effector frame's origin can reach: joint 1's height -+
@@ -35,5 +40,9 @@ ReachHeights ComputeReachHeights(const Kinematics& kinematics);
 std::string CheckTrajectoryProblem(const TrajectoryProblem& problem, const Kinematics& kinematics,
                                    const SignedDistanceField3& arm_field,
                                    const ReachHeights& reach);
+
+/// The problem's exact_prefix_states and exact_suffix_states against the path they count
+/// states of: each in [0, path size]. Returns the reason they are unusable, or "".
+std::string CheckExactPathStretches(const TrajectoryProblem& problem, int path_size);
 
 }  // namespace topay
