@@ -110,6 +110,7 @@ std::string BackEndSummary::Report() const {
     out << Format("  trajectory: %.0f pieces, %.3f s; end effector error %.4f m / %.4f rad\n",
                   num_pieces, duration_s, ee_position_error_m, ee_orientation_error_rad);
   }
+  if (!endpoint_relief.empty()) out << "  endpoint relief: " << endpoint_relief << "\n";
   out << Format("  iterations: stage 1 %.0f, stage 2 %.0f (%.0f outer, final rho %.3g",
                 stage1_iterations, stage2_iterations, outer_iterations, final_rho)
       << Format(", %.0f penalty escalations)\n", penalty_escalations);

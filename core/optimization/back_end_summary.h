@@ -67,6 +67,10 @@ struct BackEndSummary {
   double final_min_speed_cost = 0.0;  ///< Flatness only: its minimum-speed term.
   /// Arc length-yaw: the final check on the fields (CheckFeasibilityOnFields).
   FieldFeasibilityReport feasibility;
+  /// Arc length-yaw: the clearance relief near the start / goal inside the margins
+  /// (EndpointRelief::Describe, e.g. "start base 0.031 m, arm max 0.072 m over the first
+  /// 18 %"); "" if none was used. The flatness baseline uses none.
+  std::string endpoint_relief;
   /// Flatness: per term, the worst sample penalty of its final dense check (> 0: violated).
   PenaltyValues check_violations{};
 

@@ -6,6 +6,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "core/optimization/endpoint_relief.h"
 #include "core/planning/base_band.h"
 
 namespace topay {
@@ -83,21 +84,46 @@ void CheckRatesAndJoints(const TrajectorySample& point, const RobotModel& model,
   }
 }
 
+/// The endpoint relief at a sample (none: relief null).
+struct SampleRelief {
+  const EndpointRelief* relief = nullptr;
+  EndpointRelief::Weights weights;
+
+  double base_m() const { return relief ? relief->base_m(weights) : 0.0; }
+  double sphere_m(int s) const { return relief ? relief->sphere_m(s, weights) : 0.0; }
+};
+
+/// The relief at global time t: its piece-index fraction (piece j, local tau: (j + tau / T_j)
+/// / M), as the optimizer's samples have it.
+SampleRelief ReliefAt(const EndpointRelief* relief, const ArcYawTrajectory& trajectory,
+                      double t) {
+  SampleRelief out;
+  if (relief == nullptr) return out;
+  const MincoS3& minco = trajectory.minco();
+  double local_s = 0.0;
+  const int piece = minco.LocatePiece(t, &local_s);
+  const double fraction = local_s / minco.durations()(piece);
+  out.relief = relief;
+  out.weights = relief->WeightsAt(PieceFraction(piece, fraction, minco.num_pieces()));
+  return out;
+}
+
 /// Clearances (eqs. (13)-(14)) of one sample: base on the 2D field, arm spheres on the 3D
-/// field, chassis and self-collision pairs; `cache` is updated for the sample's state.
+/// field (each requirement less its endpoint relief), chassis and self-collision pairs;
+/// `cache` is updated for the sample's state.
 void CheckClearances(const TrajectorySample& point, const KinematicsCache& cache,
                      const RobotModel& model, const SignedDistanceField2& base_field,
                      const SignedDistanceField3& arm_field,
                      const std::vector<int>& arm_field_spheres, const FieldMargins& margins,
-                     const FieldFeasibilityOptions& options, Checker* check,
-                     FieldFeasibilityReport* report) {
+                     const SampleRelief& relief, const FieldFeasibilityOptions& options,
+                     Checker* check, FieldFeasibilityReport* report) {
   const double t = point.t_s;
   const double base = base_field.Distance(Eigen::Vector2d(point.state.x_m, point.state.y_m)) -
-                      model.base_cylinder.radius_m - margins.base_m;
+                      model.base_cylinder.radius_m - margins.base_m + relief.base_m();
   check->Clearance(base, &report->min_base_clearance_m, "base clearance", -1, t);
   for (const int s : arm_field_spheres) {
-    const double arm =
-        arm_field.Distance(cache.p_WS[s]) - model.spheres[s].radius_m - margins.arm_m;
+    const double arm = arm_field.Distance(cache.p_WS[s]) - model.spheres[s].radius_m -
+                       margins.arm_m + relief.sphere_m(s);
     check->Clearance(arm, &report->min_arm_clearance_m, "arm sphere clearance, sphere", s, t);
   }
   const int num_spheres = static_cast<int>(model.spheres.size());
@@ -153,7 +179,8 @@ FieldFeasibilityReport CheckFeasibilityOnFields(const ArcYawTrajectory& trajecto
                                                 const SignedDistanceField2& base_field,
                                                 const SignedDistanceField3& arm_field,
                                                 const BaseLimits& limits,
-                                                const FieldFeasibilityOptions& options) {
+                                                const FieldFeasibilityOptions& options,
+                                                const EndpointRelief* relief) {
   if (!(options.sample_period_s > 0.0 && options.rate_tolerance >= 0.0 &&
         options.joint_position_tolerance_rad >= 0.0)) {
     throw std::invalid_argument(
@@ -170,6 +197,7 @@ FieldFeasibilityReport CheckFeasibilityOnFields(const ArcYawTrajectory& trajecto
   const int steps = static_cast<int>(std::ceil(duration / options.sample_period_s));
   // The rigid spheres the base field covers pass with the base's check below.
   const std::vector<int> arm_field_spheres = SpheresToCheckOnArmField(kinematics, base_field);
+  if (relief != nullptr && relief->empty()) relief = nullptr;
   for (int i = 0; i <= steps; ++i) {
     const double t = std::min(i * options.sample_period_s, duration);
     trajectory.Evaluate(t, &point);
@@ -177,7 +205,7 @@ FieldFeasibilityReport CheckFeasibilityOnFields(const ArcYawTrajectory& trajecto
     CheckRatesAndJoints(point, kinematics.model(), limits, options, &check, &report);
     kinematics.Update(point.state, &cache);
     CheckClearances(point, cache, kinematics.model(), base_field, arm_field, arm_field_spheres,
-                    margins, options, &check, &report);
+                    margins, ReliefAt(relief, trajectory, t), options, &check, &report);
   }
   return report;
 }

@@ -11,6 +11,8 @@
 
 namespace topay {
 
+class EndpointRelief;
+
 /// Options of CheckFeasibilityOnFields: the hard version of the optimizer's constraints.
 struct FieldFeasibilityOptions {
   /// Samples at 0, period, 2 period, ... and at the end (the independent validator's 10 ms).
@@ -56,12 +58,17 @@ std::string DescribeViolations(const FieldFeasibilityReport& report,
 /// coupled v-omega, a, beta, q', q''), joint position limits, base and arm clearance on the
 /// fields, self-collision pairs and arm above the chassis. The optimizer's own success test;
 /// the exact-geometry validator (core/validate) is the independent one.
+/// With an endpoint relief (the optimizer's, EndpointRelief) the base and arm-sphere
+/// requirements near the start and the goal are radius + margin - relief(u), u the sample's
+/// piece-index fraction (piece j of M, local time tau: (j + tau / T_j) / M), and the report's
+/// clearances are beyond those relieved requirements; null or empty: no relief.
 /// Throws std::invalid_argument for a non-positive period or tolerance.
 FieldFeasibilityReport CheckFeasibilityOnFields(const ArcYawTrajectory& trajectory,
                                                 const Kinematics& kinematics,
                                                 const SignedDistanceField2& base_field,
                                                 const SignedDistanceField3& arm_field,
                                                 const BaseLimits& base_limits,
-                                                const FieldFeasibilityOptions& options = {});
+                                                const FieldFeasibilityOptions& options = {},
+                                                const EndpointRelief* relief = nullptr);
 
 }  // namespace topay

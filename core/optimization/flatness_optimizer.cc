@@ -72,6 +72,10 @@ BackEndSummary FlatnessOptimizer::Optimize(const TrajectoryProblem& problem,
   if (stop.stop_requested()) return run.Finish(BackEndStatus::kCancelled, "cancelled");
   const std::string error = CheckTrajectoryProblem(problem, kinematics_, arm_field_, reach_);
   if (!error.empty()) return run.Finish(BackEndStatus::kInvalidInput, error);
+  // Checked like the arc length-yaw back end's, but not used (see the class comment).
+  const std::string stretch_error =
+      CheckExactPathStretches(problem, static_cast<int>(initial_path.states.size()));
+  if (!stretch_error.empty()) return run.Finish(BackEndStatus::kInvalidInput, stretch_error);
   if (!Prepare(initial_path, &run)) return run.summary;
   try {
     RunAugmentedLagrangian(&run);

@@ -36,6 +36,9 @@ struct FlatnessOptimizerOptions : BackEndOptions {
 ///     FlatnessObjective terms (no stage 1 path fit, no penalty escalation);
 ///  3. success = end effector within tolerance and the dense sample check clean.
 /// Forward driving only (eta = +1). Optimize is const and thread-safe.
+/// The endpoint relief (TrajectoryProblem::exact_prefix_states / exact_suffix_states,
+/// EndpointRelief) is checked but ignored: the REMANI-style baseline keeps its full margins
+/// everywhere, so a start or goal inside them fails its dense check.
 class FlatnessOptimizer : public TrajectoryBackEnd {
  public:
   /// Throws std::invalid_argument for options out of range.

@@ -1,5 +1,6 @@
 #include "core/optimization/piece_sampler.h"
 
+#include "core/optimization/endpoint_relief.h"
 #include "core/trajectory/quintic_basis.h"
 
 namespace topay {
@@ -15,6 +16,7 @@ PieceSampler::PieceSampler(const Kinematics& kinematics, const SignedDistanceFie
                            const PathFitWeights& fit_weights, int num_pieces,
                            int panels_per_piece)
     : num_joints_(kinematics.num_joints()),
+      num_pieces_(num_pieces),
       panels_per_piece_(panels_per_piece),
       fit_weights_(fit_weights),
       penalties_(kinematics, base_field, arm_field, base_limits, penalty_options) {
@@ -64,7 +66,10 @@ void PieceSampler::AddPiece(const PieceSampleContext& context, int piece) {
     double penalty = 0.0;
     if (context.penalties_on) {
       PenaltyValues costs{};
-      penalty = penalties_.Evaluate(sample_, with_gradient ? &sample_gradient_ : nullptr, &costs);
+      // The endpoint relief's ramp coordinate: the piece-index fraction, fixed per sample.
+      const double u = PieceFraction(piece, static_cast<double>(l) / K, num_pieces_);
+      penalty = penalties_.Evaluate(sample_, u, with_gradient ? &sample_gradient_ : nullptr,
+                                    &costs);
       for (int term = 0; term < kNumPenaltyTerms; ++term) {
         penalty_costs_[term] += w_time * costs[term];
       }

@@ -46,7 +46,9 @@ struct PieceSampleContext {
 /// coefficients and durations, and to the Simpson positions. Each sampler has its own
 /// scratch, so that several evaluate disjoint piece ranges at once; their position
 /// gradients, costs and breakdowns are summed by the caller (the Simpson sample at a piece
-/// boundary belongs to two pieces, possibly of two samplers).
+/// boundary belongs to two pieces, possibly of two samplers). Sample l of piece j is
+/// penalised at ramp coordinate u = (j + l / K) / M (PieceFraction), the endpoint relief's
+/// (SamplePenalties::set_endpoint_relief).
 ///
 /// Construction allocates; Run does not.
 class PieceSampler {
@@ -83,6 +85,7 @@ class PieceSampler {
                   const Eigen::Ref<const Eigen::Vector2d>& p_W, int g, bool with_gradient);
 
   int num_joints_;
+  int num_pieces_;
   int panels_per_piece_;
   PathFitWeights fit_weights_;
   SamplePenalties penalties_;

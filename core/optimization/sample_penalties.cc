@@ -6,6 +6,7 @@
 #include <string>
 #include <utility>
 
+#include "core/optimization/endpoint_relief.h"
 #include "core/optimization/smooth_penalty.h"
 #include "core/planning/base_band.h"
 
@@ -201,18 +202,30 @@ double SamplePenalties::Add(PenaltyTerm term, double constraint, double* total,
   return weight * l.derivative;
 }
 
+double SamplePenalties::Evaluate(const SampleQuantities& sample, double u,
+                                 SampleQuantities* gradient, PenaltyValues* costs) {
+  return EvaluateWith(sample, relief_, u, gradient, costs);
+}
+
 double SamplePenalties::Evaluate(const SampleQuantities& sample, SampleQuantities* gradient,
                                  PenaltyValues* costs) {
+  return EvaluateWith(sample, nullptr, 0.0, gradient, costs);
+}
+
+double SamplePenalties::EvaluateWith(const SampleQuantities& sample,
+                                     const EndpointRelief* relief, double u,
+                                     SampleQuantities* gradient, PenaltyValues* costs) {
   if (gradient) gradient->SetZero();
   double total = 0.0;
-  EvaluateBase(sample, gradient, &total, costs);
+  EvaluateBase(sample, relief, u, gradient, &total, costs);
   EvaluateJoints(sample, gradient, &total, costs);
-  EvaluateGeometry(sample, gradient, &total, costs);
+  EvaluateGeometry(sample, relief, u, gradient, &total, costs);
   return total;
 }
 
-void SamplePenalties::EvaluateBase(const SampleQuantities& sample, SampleQuantities* gradient,
-                                   double* total, PenaltyValues* costs) {
+void SamplePenalties::EvaluateBase(const SampleQuantities& sample, const EndpointRelief* relief,
+                                   double u, SampleQuantities* gradient, double* total,
+                                   PenaltyValues* costs) {
   const double rate_scale = tightening_.rate_scale;
   const double v_max = rate_scale * limits_.v_max_mps;
   const double w_max = rate_scale * limits_.omega_max_radps;
@@ -241,12 +254,15 @@ void SamplePenalties::EvaluateBase(const SampleQuantities& sample, SampleQuantit
     if (gradient) gradient->beta_radps2 += slope * 2.0 * b;
   }
   if (enabled(PenaltyTerm::kBaseObstacle)) {
-    // Eq. (13), base cylinder on the 2D field: threshold - SDF(x, y) <= 0.
+    // Eq. (13), base cylinder on the 2D field: threshold - SDF(x, y) <= 0, the threshold
+    // tightened and relieved near an endpoint (a constant at this u).
     Eigen::Vector2d field_gradient;
     const double distance = base_field_.DistanceAndGradient(
         Eigen::Vector2d(sample.x_m, sample.y_m), &field_gradient);
+    const double relief_m = relief ? relief->base_m(u) : 0.0;
     const double slope =
-        Add(PenaltyTerm::kBaseObstacle, base_threshold_m_ + tightening_.base_m - distance, total, costs);
+        Add(PenaltyTerm::kBaseObstacle,
+            base_threshold_m_ + tightening_.base_m - relief_m - distance, total, costs);
     if (gradient && slope != 0.0) {
       gradient->x_m -= slope * field_gradient.x();
       gradient->y_m -= slope * field_gradient.y();
@@ -287,6 +303,7 @@ void SamplePenalties::EvaluateJoints(const SampleQuantities& sample, SampleQuant
 }
 
 void SamplePenalties::EvaluateGeometry(const SampleQuantities& sample,
+                                       const EndpointRelief* relief, double u,
                                        SampleQuantities* gradient, double* total,
                                        PenaltyValues* costs) {
   if (!NeedsKinematics(options_.enabled)) return;
@@ -299,7 +316,7 @@ void SamplePenalties::EvaluateGeometry(const SampleQuantities& sample,
   bool any_active = false;
   const bool with_gradient = gradient != nullptr;
   if (enabled(PenaltyTerm::kArmObstacle)) {
-    any_active = AddArmObstacle(with_gradient, total, costs) || any_active;
+    any_active = AddArmObstacle(relief, u, with_gradient, total, costs) || any_active;
   }
   if (enabled(PenaltyTerm::kSelfCollision)) {
     any_active = AddSelfCollision(with_gradient, total, costs) || any_active;
@@ -315,16 +332,21 @@ void SamplePenalties::EvaluateGeometry(const SampleQuantities& sample,
   }
 }
 
-// Eq. (13), arm spheres on the 3D field: threshold_s - SDF(p_WS) <= 0.
-bool SamplePenalties::AddArmObstacle(bool with_gradient, double* total, PenaltyValues* costs) {
+// Eq. (13), arm spheres on the 3D field: threshold_s - SDF(p_WS) <= 0, the threshold
+// tightened and relieved near an endpoint (a constant at this u).
+bool SamplePenalties::AddArmObstacle(const EndpointRelief* relief, double u, bool with_gradient,
+                                     double* total, PenaltyValues* costs) {
   const RobotModel& model = kinematics_.model();
+  const EndpointRelief::Weights weights =
+      relief ? relief->WeightsAt(u) : EndpointRelief::Weights();
   bool any_active = false;
   for (const int s : arm_field_spheres_) {
     Eigen::Vector3d field_gradient;
     const double distance = arm_field_.DistanceAndGradient(cache_.p_WS[s], &field_gradient);
+    const double relief_m = relief ? relief->sphere_m(s, weights) : 0.0;
     const double slope =
-        Add(PenaltyTerm::kArmObstacle, sphere_thresholds_m_(s) + tightening_.arm_m - distance,
-            total, costs);
+        Add(PenaltyTerm::kArmObstacle,
+            sphere_thresholds_m_(s) + tightening_.arm_m - relief_m - distance, total, costs);
     if (with_gradient && slope != 0.0) {
       kinematics_.AddPointJacobianTransposeTimes(cache_, model.spheres[s].link, cache_.p_WS[s],
                                                  -slope * field_gradient, gradient_z_);

@@ -15,6 +15,8 @@
 
 namespace topay {
 
+class EndpointRelief;
+
 /// The inequality constraints of the TopAY problem (paper eqs. (9)-(14)), each turned into a
 /// penalty on the trajectory's time samples (eq. (23)).
 enum class PenaltyTerm : int {
@@ -150,7 +152,9 @@ struct SampleQuantities {
 ///   q_k: (q_k - m_k)^2 - h_k^2, m_k the middle of the range, h_k its half width minus
 ///        joint_position_margin_rad;
 ///   q'_k: q'_k^2 - q'_max,k^2;   q''_k: q''_k^2 - q''_max,k^2               (eqs. (11)-(12))
-///   base: threshold - field2(x, y);  sphere s: threshold_s - field3(p_WS)  (eq. (13))
+///   base: threshold - field2(x, y);  sphere s: threshold_s - field3(p_WS)  (eq. (13)),
+///        each threshold + its tightening - its endpoint relief at the sample's u
+///        (EndpointRelief, only with the Evaluate that takes u and a relief set)
 ///   pair (i, j): margin - (|p_i - p_j| - r_i - r_j)                        (eq. (14))
 ///   chassis, sphere s: margin - (z_s - r_s - chassis top)
 /// The sphere terms need forward kinematics (once per sample, only if one of the four
@@ -178,33 +182,55 @@ class SamplePenalties {
   /// 1 mrad of half range), every rate limit is multiplied by rate_scale.
   void set_tightening(const PenaltyTightening& tightening) { tightening_ = tightening; }
   const PenaltyTightening& tightening() const { return tightening_; }
+  /// Relaxes the clearance thresholds near a start or goal inside them (none by default;
+  /// null: none). Applies to the Evaluate that takes the sample's ramp coordinate u. The
+  /// relief must outlive its use here; its sphere deficits are indexed like
+  /// RobotModel::spheres.
+  void set_endpoint_relief(const EndpointRelief* relief) { relief_ = relief; }
+  const EndpointRelief* endpoint_relief() const { return relief_; }
   int num_joints() const { return kinematics_.num_joints(); }
 
   /// Quantities sized for this robot (allocates; reuse).
   SampleQuantities MakeQuantities() const;
 
-  /// P for the sample. If gradient is non-null (sized by MakeQuantities) it is overwritten
-  /// with dP/d(each quantity). If costs is non-null, each term's part of P is added to it.
+  /// P for the sample at ramp coordinate u in [0, 1] (PieceFraction: (piece + local
+  /// fraction) / M), with the endpoint relief at u if one is set. If gradient is non-null
+  /// (sized by MakeQuantities) it is overwritten with dP/d(each quantity). If costs is
+  /// non-null, each term's part of P is added to it. The relief is a constant at a given u,
+  /// so the gradient has no part through it.
+  double Evaluate(const SampleQuantities& sample, double u, SampleQuantities* gradient,
+                  PenaltyValues* costs = nullptr);
+  /// The same without any endpoint relief (whether one is set or not): the flatness baseline
+  /// and the dense checks.
   double Evaluate(const SampleQuantities& sample, SampleQuantities* gradient,
                   PenaltyValues* costs = nullptr);
 
   /// The clearance thresholds (m) without the extra clearances: base, and per sphere.
   double base_threshold_m() const { return base_threshold_m_; }
   const Eigen::VectorXd& sphere_thresholds_m() const { return sphere_thresholds_m_; }
+  /// The spheres penalised on the 3D field (SpheresToCheckOnArmField), increasing.
+  const std::vector<int>& arm_field_spheres() const { return arm_field_spheres_; }
+  const Kinematics& kinematics() const { return kinematics_; }
+  const SignedDistanceField2& base_field() const { return base_field_; }
+  const SignedDistanceField3& arm_field() const { return arm_field_; }
 
  private:
   bool enabled(PenaltyTerm term) const { return options_.enabled[static_cast<int>(term)]; }
   /// Adds w L(C) to the total and the term's cost; returns w L'(C) (0 if inactive).
   double Add(PenaltyTerm term, double constraint, double* total, PenaltyValues* costs) const;
-  void EvaluateBase(const SampleQuantities& sample, SampleQuantities* gradient, double* total,
-                    PenaltyValues* costs);
+  /// Both Evaluates: relief null for none.
+  double EvaluateWith(const SampleQuantities& sample, const EndpointRelief* relief, double u,
+                      SampleQuantities* gradient, PenaltyValues* costs);
+  void EvaluateBase(const SampleQuantities& sample, const EndpointRelief* relief, double u,
+                    SampleQuantities* gradient, double* total, PenaltyValues* costs);
   void EvaluateJoints(const SampleQuantities& sample, SampleQuantities* gradient, double* total,
                       PenaltyValues* costs);
-  void EvaluateGeometry(const SampleQuantities& sample, SampleQuantities* gradient,
-                        double* total, PenaltyValues* costs);
+  void EvaluateGeometry(const SampleQuantities& sample, const EndpointRelief* relief, double u,
+                        SampleQuantities* gradient, double* total, PenaltyValues* costs);
   // The steps of EvaluateGeometry (cache_ holds the sample's kinematics): each adds its term
   // to *total and *costs and, with_gradient, its gradient to gradient_z_; true if it did.
-  bool AddArmObstacle(bool with_gradient, double* total, PenaltyValues* costs);
+  bool AddArmObstacle(const EndpointRelief* relief, double u, bool with_gradient, double* total,
+                      PenaltyValues* costs);
   bool AddSelfCollision(bool with_gradient, double* total, PenaltyValues* costs);
   bool AddChassis(bool with_gradient, double* total, PenaltyValues* costs);
 
@@ -215,6 +241,7 @@ class SamplePenalties {
   SamplePenaltyOptions options_;
   PenaltyValues weight_scales_ = OnesPenaltyValues();
   PenaltyTightening tightening_;
+  const EndpointRelief* relief_ = nullptr;
   double base_threshold_m_ = 0.0;
   Eigen::VectorXd sphere_thresholds_m_;
   /// Spheres penalised on the 3D field: all but the rigid ones the base field covers

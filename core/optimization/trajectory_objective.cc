@@ -108,6 +108,10 @@ void TrajectoryObjective::set_tightening(const PenaltyTightening& t) {
   for (auto& sampler : samplers_) sampler->penalties().set_tightening(t);
 }
 
+void TrajectoryObjective::set_endpoint_relief(const EndpointRelief* relief) {
+  for (auto& sampler : samplers_) sampler->penalties().set_endpoint_relief(relief);
+}
+
 void TrajectoryObjective::set_multiplier(const Vector6d& lambda, double rho) {
   Require(lambda.allFinite(), "multiplier lambda is not finite");
   Require(std::isfinite(rho) && rho > 0.0, "rho = " + std::to_string(rho) + " must be > 0");

@@ -119,6 +119,10 @@ class TrajectoryObjective : public LbfgsObjective {
   /// std::invalid_argument unless the clearances and the joint margin are finite and >= 0 and
   /// the rate scale is in (0, 1].
   void set_tightening(const PenaltyTightening& tightening);
+  /// Relaxed clearance thresholds near the start and the goal (SamplePenalties::
+  /// set_endpoint_relief, at each sample's piece-index fraction; null: none, the default).
+  /// The relief must outlive this object's evaluations.
+  void set_endpoint_relief(const EndpointRelief* relief);
   const ObjectiveTerms& terms() const { return terms_; }
   /// PHR-ALM multiplier lambda (6) and penalty rho > 0 of the end-effector term.
   void set_multiplier(const Vector6d& lambda, double rho);

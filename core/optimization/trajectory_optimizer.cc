@@ -98,6 +98,8 @@ void CheckTrajectoryOptimizerOptions(const TrajectoryOptimizerOptions& o) {
   require(o.objective.sample_chunks >= 1, "objective.sample_chunks must be >= 1");
   require(o.feasibility.sample_period_s > 0.0, "feasibility.sample_period_s must be > 0");
   require(o.feasibility.rate_tolerance >= 0.0, "feasibility.rate_tolerance must be >= 0");
+  require(std::isfinite(o.endpoint_relief.slack_m) && o.endpoint_relief.slack_m >= 0.0,
+          "endpoint_relief.slack_m must be finite and >= 0");
   require(std::isfinite(o.objective.time_weight) && o.objective.time_weight >= 0.0,
           "objective.time_weight must be finite and >= 0");
   const auto finite_nonnegative = [](double x) { return std::isfinite(x) && x >= 0.0; };
@@ -124,6 +126,7 @@ struct TrajectoryOptimizer::Run {
   Clock::time_point deadline;
   BackEndSummary summary;
   WarmStart warm;
+  EndpointRelief relief;  ///< Empty: none (the objective and the check then have none).
   std::unique_ptr<TrajectoryObjective> objective;
   Eigen::VectorXd x;
   bool cancelled = false;
@@ -178,6 +181,9 @@ BackEndSummary TrajectoryOptimizer::Optimize(const TrajectoryProblem& problem,
   const std::string problem_error =
       CheckTrajectoryProblem(problem, kinematics_, arm_field_, reach_);
   if (!problem_error.empty()) return run.Fail(BackEndStatus::kInvalidInput, problem_error);
+  const std::string stretch_error =
+      CheckExactPathStretches(problem, static_cast<int>(initial_path.states.size()));
+  if (!stretch_error.empty()) return run.Fail(BackEndStatus::kInvalidInput, stretch_error);
   if (!Prepare(initial_path, &run)) return run.summary;
   run.summary.warm_start_s = run.watch.ElapsedS();
   try {
@@ -200,11 +206,31 @@ bool TrajectoryOptimizer::Prepare(const WholeBodyPath& initial_path, Run* run) c
         kinematics_, base_field_, arm_field_, problem.base_limits, problem.start,
         problem.X_WE_goal, run->warm.num_pieces, options_.objective);
     run->x = run->objective->Pack(run->warm.durations_s, run->warm.waypoints, run->warm.end);
+    PrepareEndpointRelief(initial_path, run);
   } catch (const std::invalid_argument& e) {
     run->Fail(BackEndStatus::kInvalidInput, std::string("initial path: ") + e.what());
     return false;
   }
   return true;
+}
+
+void TrajectoryOptimizer::PrepareEndpointRelief(const WholeBodyPath& initial_path,
+                                                Run* run) const {
+  const TrajectoryProblem& problem = run->problem;
+  if (problem.exact_prefix_states == 0 && problem.exact_suffix_states == 0) return;
+  // The thresholds the objective's penalties compare against.
+  const SamplePenalties penalties(kinematics_, base_field_, arm_field_, problem.base_limits,
+                                  options_.objective.penalties);
+  // The goal's deficit at the warm start's end state, the path's last one (its first is the
+  // start itself).
+  const WholeBodyState& end =
+      initial_path.states.size() > 1 ? initial_path.states.back() : problem.start;
+  run->relief = MakeEndpointRelief(penalties, problem.start, end, run->warm.path_times_s,
+                                   run->warm.num_pieces, problem.exact_prefix_states,
+                                   problem.exact_suffix_states, options_.endpoint_relief);
+  if (run->relief.empty()) return;
+  run->objective->set_endpoint_relief(&run->relief);
+  run->summary.endpoint_relief = run->relief.Describe();
 }
 
 void TrajectoryOptimizer::RunStages(Run* run) const {
@@ -298,9 +324,9 @@ bool TrajectoryOptimizer::CheckResult(Run* run) const {
   const Vector6d& r = objective.end_effector_residual();
   summary.ee_position_error_m = r.head<3>().norm();
   summary.ee_orientation_error_rad = r.tail<3>().norm();
-  summary.feasibility =
-      CheckFeasibilityOnFields(objective.trajectory(), kinematics_, base_field_, arm_field_,
-                               run->problem.base_limits, options_.feasibility);
+  summary.feasibility = CheckFeasibilityOnFields(
+      objective.trajectory(), kinematics_, base_field_, arm_field_, run->problem.base_limits,
+      options_.feasibility, run->relief.empty() ? nullptr : &run->relief);
   summary.check_s += check.ElapsedS();
   run->checked = true;
   return summary.feasibility.feasible &&

@@ -11,6 +11,7 @@
 #include "core/map/signed_distance_field3.h"
 #include "core/optimization/back_end_options.h"
 #include "core/optimization/back_end_summary.h"
+#include "core/optimization/endpoint_relief.h"
 #include "core/optimization/field_feasibility.h"
 #include "core/optimization/trajectory_back_end.h"
 #include "core/optimization/trajectory_objective.h"
@@ -51,8 +52,16 @@ struct TrajectoryOptimizerOptions : BackEndOptions {
   double joint_escalation_step_rad = 0.005;
   double rate_escalation_step = 0.01;
 
+  // ---- Endpoints inside the margins (TrajectoryProblem::exact_prefix_states / suffix) ------
+  /// With exact_prefix_states > 0 (exact_suffix_states > 0) the clearance thresholds of the
+  /// penalties and of the field check are relieved by the start's (the path's last state's)
+  /// deficit plus slack_m, ramped out over the path's exact stretch and one piece more
+  /// (EndpointRelief). Not in the reference code.
+  EndpointReliefOptions endpoint_relief;
+
   // ---- Success -----------------------------------------------------------------------------
-  /// The final trajectory must pass this check on the fields (hard limits, no safety factor).
+  /// The final trajectory must pass this check on the fields (hard limits, no safety factor;
+  /// relieved near an endpoint that lies inside the margins, as the penalties are).
   FieldFeasibilityOptions feasibility;
 
   /// Which back end MakeTrajectoryBackEnd (back_end_factory.h) builds from these options:
@@ -82,6 +91,11 @@ void CheckTrajectoryOptimizerOptions(const TrajectoryOptimizerOptions& options);
 ///     twice).
 ///  4. Success = end effector within 1 cm / 0.02 rad and the trajectory feasible on the fields
 ///     at 10 ms samples (field_feasibility.h).
+/// A start (goal) that the front end accepted inside the fields' margins, its path's first
+/// (last) states validated exactly (TrajectoryProblem::exact_prefix_states / suffix), gets
+/// its clearance margins relieved in steps 3 and 4 (EndpointRelief: the endpoint's deficit,
+/// ramped out from it); the summary's endpoint_relief says so. The exact validator
+/// (core/validate) stays the judge of the result.
 ///
 /// Cancellation: `stop` is polled by every objective evaluation and after every L-BFGS
 /// iteration; a cancelled call returns kCancelled with the last iterate's trajectory.
@@ -98,7 +112,8 @@ class TrajectoryOptimizer : public TrajectoryBackEnd {
 
   /// Never throws for bad input: an invalid start, goal, limits or path gives kInvalidInput
   /// with the reason; an unreachable target (height out of the arm's reach, or inside an
-  /// obstacle on the 3D field) too.
+  /// obstacle on the 3D field) too, and exact_prefix_states / exact_suffix_states outside
+  /// [0, path size].
   BackEndSummary Optimize(const TrajectoryProblem& problem, const WholeBodyPath& initial_path,
                           std::stop_token stop = {}) const override;
   TrajectoryParameterisation parameterisation() const override {
@@ -113,9 +128,13 @@ class TrajectoryOptimizer : public TrajectoryBackEnd {
 
  private:
   struct Run;
-  /// Builds the warm start, the objective and the initial decision vector; false (with the
-  /// summary's status and reason set) for a path the warm start cannot use.
+  /// Builds the warm start, the objective, the endpoint relief and the initial decision
+  /// vector; false (with the summary's status and reason set) for a path the warm start
+  /// cannot use.
   bool Prepare(const WholeBodyPath& initial_path, Run* run) const;
+  /// The relief of the problem's exact path stretches (empty if it asks for none or its
+  /// endpoints are clear of the margins), given to the objective and named in the summary.
+  void PrepareEndpointRelief(const WholeBodyPath& initial_path, Run* run) const;
   void RunStages(Run* run) const;
   /// Stage 1: the path fit; false if cancelled or out of time.
   bool RunStage1(Run* run) const;

@@ -94,4 +94,15 @@ std::string CheckTrajectoryProblem(const TrajectoryProblem& problem, const Kinem
   return CheckGoal(problem.X_WE_goal, arm_field, reach);
 }
 
+std::string CheckExactPathStretches(const TrajectoryProblem& problem, int path_size) {
+  const auto check = [&](int count, const char* name) -> std::string {
+    if (count >= 0 && count <= path_size) return "";
+    return std::string(name) + " = " + std::to_string(count) + " is outside [0, " +
+           std::to_string(path_size) + "] (the initial path has " + std::to_string(path_size) +
+           " states)";
+  };
+  const std::string prefix = check(problem.exact_prefix_states, "exact_prefix_states");
+  return prefix.empty() ? check(problem.exact_suffix_states, "exact_suffix_states") : prefix;
+}
+
 }  // namespace topay

@@ -41,4 +41,8 @@ std::string CheckTrajectoryProblem(const TrajectoryProblem& problem, const Kinem
                                    const SignedDistanceField3& arm_field,
                                    const ReachHeights& reach);
 
+/// The problem's exact_prefix_states and exact_suffix_states against the path they count
+/// states of: each in [0, path size]. Returns the reason they are unusable, or "".
+std::string CheckExactPathStretches(const TrajectoryProblem& problem, int path_size);
+
 }  // namespace topay
