@@ -43,6 +43,10 @@ struct TaskGeneratorOptions {
   /// base radius + tight_base_spread_m on every side (m); positions where the base cylinder
   /// is not clear are redrawn.
   double tight_base_spread_m = 0.5;
+  /// A tight end whose base is shut in a pocket the robot could not have driven into (between
+  /// table legs, say) is redrawn: CertifyBaseEnclosed (base_reachability.h) over the square
+  /// of this half side (m) around the base. 0: no such check.
+  double tight_pocket_window_m = 2.0;
   /// Arm configurations drawn (uniform within the joint limits) per tight base pose.
   int tight_arm_tries = 200;
   /// Base poses drawn per tight end before the (start, goal) pair is given up.

@@ -40,7 +40,9 @@ Json TightEndJson(const TightEnd& end) {
   return json;
 }
 
-Json TightJson(const TightTaskInfo& info) {
+}  // namespace
+
+nlohmann::ordered_json TightInfoToJson(const TightTaskInfo& info) {
   Json json;
   json["start"] = TightEndJson(info.start);
   json["goal"] = TightEndJson(info.goal);
@@ -48,6 +50,8 @@ Json TightJson(const TightTaskInfo& info) {
   json["goal_table_top"] = info.goal_table_top >= 0 ? Json(info.goal_table_top) : Json(nullptr);
   return json;
 }
+
+namespace {
 
 // A box index: a non-negative integer below 2^31.
 int ReadBoxIndex(const JsonFieldReader& reader, const nlohmann::json& value,
@@ -185,7 +189,7 @@ std::string TaskToJson(const PlanningTask& task) {
   json["start"] = StateJson(task.start);
   json["goal"] = StateJson(task.goal);
   json["goal_end_effector"] = PoseJson(task.X_WE_goal);
-  if (task.tight) json["tight"] = TightJson(*task.tight);
+  if (task.tight) json["tight"] = TightInfoToJson(*task.tight);
   return json.dump(2) + "\n";
 }
 

@@ -3,6 +3,8 @@
 #include <cstddef>
 #include <string>
 
+#include <nlohmann/json.hpp>
+
 #include "sim/scenes/planning_task.h"
 
 namespace topay {
@@ -22,6 +24,9 @@ namespace topay {
 inline constexpr std::size_t kMaxTaskJsonBytes = std::size_t{1} << 20;  // 1 MiB
 
 std::string TaskToJson(const PlanningTask& task);
+
+/// The "tight" object of a task file (also a tasks.jsonl key of topay-bench).
+nlohmann::ordered_json TightInfoToJson(const TightTaskInfo& info);
 
 /// Writes TaskToJson to path; throws ConfigError(path, "", ...) if it cannot be written.
 void WriteTaskJson(const std::string& path, const PlanningTask& task);

@@ -10,6 +10,7 @@
 #include "core/collision/scene_clearance.h"
 #include "core/common/random.h"
 #include "core/geometry/primitive_box_distance.h"
+#include "sim/scenes/base_reachability.h"
 #include "sim/scenes/quantize.h"
 #include "sim/scenes/task_sampling.h"
 
@@ -27,6 +28,8 @@ void CheckTightOptions(const TaskGeneratorOptions& o) {
           "tight_clearance_max_m", "must be finite and above obstacle_margin_m");
   Require(std::isfinite(o.tight_base_spread_m) && o.tight_base_spread_m >= 0.0,
           "tight_base_spread_m", "must be finite and >= 0");
+  Require(std::isfinite(o.tight_pocket_window_m) && o.tight_pocket_window_m >= 0.0,
+          "tight_pocket_window_m", "must be finite and >= 0");
   Require(o.tight_arm_tries > 0 && o.max_tight_base_tries > 0 && o.max_tight_pair_tries > 0,
           "tight_arm_tries/max_tight_base_tries/max_tight_pair_tries", "must be positive");
   Require(o.table_goal_fraction >= 0.0 && o.table_goal_fraction <= 1.0, "table_goal_fraction",
@@ -123,7 +126,7 @@ class TightEndSampler {
       if (p_start && !bounds_.Contains((Eigen::Vector2d(state->x_m, state->y_m) - *p_start).norm())) {
         continue;
       }
-      if (DrawTightArm(kind, box, state, end)) {
+      if (DrawTightArm(kind, box, state, end) && !InPocket(*state)) {
         if (table_top != nullptr) *table_top = kind == TightGoalKind::kNearBox ? -1 : anchor.box;
         return true;
       }
@@ -147,6 +150,14 @@ class TightEndSampler {
     if (!region_.Contains(p_WB)) return false;
     const double margin = options_.obstacle_margin_m;
     return checker_.BaseClearance(p_WB, margin) > margin;
+  }
+
+  // The base of `state` cannot leave the pocket window (CertifyBaseEnclosed).
+  bool InPocket(const WholeBodyState& state) const {
+    if (options_.tight_pocket_window_m == 0.0) return false;
+    return CertifyBaseEnclosed(scene_, kinematics_, Eigen::Vector2d(state.x_m, state.y_m),
+                               options_.tight_pocket_window_m)
+        .certified_unreachable;
   }
 
   // Every arm sphere above the floor and the end-effector point inside the scene's bounds.

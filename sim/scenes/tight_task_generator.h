@@ -40,7 +40,8 @@ bool GoalKindHolds(TightGoalKind kind, const OrientedBox& table_top, const Eigen
 ///     uniform over the anchor's footprint grown by the base radius + tight_base_spread_m,
 ///     inside the base region with the base cylinder clear, yaw uniform in [-pi, pi); at each,
 ///     up to tight_arm_tries arm configurations uniform within the joint limits, the first
-///     that is clear and tight is taken;
+///     that is clear and tight is taken, unless the base is shut in a pocket
+///     (tight_pocket_window_m, CertifyBaseEnclosed: then the next base pose);
 ///  3. the goal likewise, its anchor among the boxes whose grown footprint meets the range's
 ///     annulus around the start (table tops only for kOnTable / kUnderTable, whose end
 ///     effector must then meet GoalKindHolds for the anchor), its base distance in range.

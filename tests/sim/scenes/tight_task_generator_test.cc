@@ -10,6 +10,7 @@
 
 #include "core/collision/scene_clearance.h"
 #include "core/common/random.h"
+#include "sim/scenes/base_reachability.h"
 #include "sim/scenes/benchmark_scene.h"
 #include "sim/scenes/scene_json.h"
 #include "sim/scenes/task_generator.h"
@@ -60,6 +61,10 @@ class TightTaskGeneratorTest : public ::testing::Test {
       EXPECT_GE(cache.p_WS[s].z() - model_.spheres[s].radius_m, 0.0) << "sphere " << s;
     }
     EXPECT_TRUE(scene.bounds_W_m.contains(cache.X_WE.translation()));
+    // Not shut in a pocket the robot could not have driven into.
+    EXPECT_FALSE(CertifyBaseEnclosed(scene, kinematics_, Eigen::Vector2d(state.x_m, state.y_m),
+                                     options.tight_pocket_window_m)
+                     .certified_unreachable);
   }
 
   void ExpectValidTightCase(const BenchmarkCase& c, DistanceRange range,
@@ -196,6 +201,27 @@ TEST_F(TightTaskGeneratorTest, AllGoalsOnTablesWithFractionOneNoneWithZero) {
           << TightGoalKindName(c.task.tight->goal_kind);
     }
   }
+}
+
+TEST_F(TightTaskGeneratorTest, WithoutThePocketCheckSomeEndsAreShutBetweenTableLegs) {
+  // Table legs 0.65-1.15 m apart and a base 0.80 m wide: a base drawn under a table can be
+  // shut in. These seeds give such ends without the check (and none with it, see
+  // ExpectTightEnd).
+  TaskGeneratorOptions options = TightOptions();
+  options.tight_pocket_window_m = 0.0;
+  int shut = 0;
+  for (std::uint64_t i = 0; i < 5; ++i) {
+    const BenchmarkCase c = Generate(SceneKind::kTables, DistanceRange::kMedium, DeriveSeed(1, i),
+                                     options);
+    for (const WholeBodyState* state : {&c.task.start, &c.task.goal}) {
+      shut += CertifyBaseEnclosed(c.scene.scene, kinematics_,
+                                  Eigen::Vector2d(state->x_m, state->y_m), 2.0)
+                  .certified_unreachable
+                  ? 1
+                  : 0;
+    }
+  }
+  EXPECT_GT(shut, 0);
 }
 
 TEST(GoalKindHoldsTest, OnAndUnderATableTop) {
