@@ -128,7 +128,56 @@ bool ReachesGoalDisc(const GridGeometry2& g, const std::vector<std::uint8_t>& re
   return false;
 }
 
+// Cells a base centre may occupy, for every box of the scene (see CertifyBaseUnreachable).
+std::vector<std::uint8_t> AllowedCells(const Scene& scene, const Kinematics& kinematics,
+                                       const GridGeometry2& g, double slack) {
+  const BaseCylinder& chassis = kinematics.model().base_cylinder;
+  const std::vector<RigidSphere> spheres = RigidSpheres(RigidLowerBodyOf(kinematics));
+  std::vector<std::uint8_t> allowed(static_cast<std::size_t>(g.NumCells()), 1);
+  for (const OrientedBox& box : scene.boxes) {
+    const double need = RequiredDistance(box, chassis, spheres);
+    if (std::isfinite(need)) MarkBlocked(g, box, need, slack, &allowed);
+  }
+  return allowed;
+}
+
 }  // namespace
+
+BaseReachability CertifyBaseEnclosed(const Scene& scene, const Kinematics& kinematics,
+                                     const Eigen::Vector2d& p_WB_m, double window_m,
+                                     const BaseReachabilityOptions& options) {
+  if (!p_WB_m.allFinite() || !(window_m > 0.0) || !std::isfinite(window_m) ||
+      !(options.resolution_m > 0.0)) {
+    throw std::invalid_argument(
+        "CertifyBaseEnclosed: need a finite position, window_m > 0 and resolution_m > 0");
+  }
+  // The window's cells are cells of CertifyBaseUnreachable's grid (from the scene bounds'
+  // minimum corner), so both tests see the same allowed cells.
+  const double res = options.resolution_m;
+  const Eigen::Vector2d origin = scene.bounds_W_m.min().head<2>();
+  const Eigen::Vector2d lo =
+      origin + res * ((p_WB_m.array() - window_m - origin.array()) / res).floor().matrix();
+  const Eigen::Vector2d hi =
+      origin + res * ((p_WB_m.array() + window_m - origin.array()) / res).ceil().matrix();
+  const GridGeometry2 g = GridGeometry2::FromBounds(Eigen::AlignedBox2d(lo, hi), res);
+  const double slack = options.resolution_m / std::sqrt(2.0);
+  const std::vector<std::uint8_t> allowed = AllowedCells(scene, kinematics, g, slack);
+  const Eigen::Vector2i cell = g.CellOf(p_WB_m);
+  BaseReachability out;
+  if (allowed[g.Index(cell.x(), cell.y())] == 0) {
+    out.certified_unreachable = true;
+    out.reason = "the position is not allowed (the rigid lower body is in collision)";
+    return out;
+  }
+  const std::vector<std::uint8_t> reached = FloodFill(g, allowed, cell);
+  for (std::uint8_t r : reached) out.component_cells += r;
+  out.certified_unreachable = !ReachesOutside(g, reached);
+  out.reason = out.certified_unreachable
+                   ? "shut in a pocket of " + std::to_string(out.component_cells) +
+                         " cells inside the window"
+                   : "the base can leave the window";
+  return out;
+}
 
 BaseReachability CertifyBaseUnreachable(const Scene& scene, const Kinematics& kinematics,
                                         const Eigen::Vector2d& p_WB_start_m,
@@ -150,14 +199,8 @@ BaseReachability CertifyBaseUnreachable(const Scene& scene, const Kinematics& ki
     out.reason = "start or goal outside the scene's bounds: not tested";
     return out;
   }
-  const BaseCylinder& chassis = kinematics.model().base_cylinder;
-  const std::vector<RigidSphere> spheres = RigidSpheres(RigidLowerBodyOf(kinematics));
   const double slack = options.resolution_m / std::sqrt(2.0);
-  std::vector<std::uint8_t> allowed(static_cast<std::size_t>(g.NumCells()), 1);
-  for (const OrientedBox& box : scene.boxes) {
-    const double need = RequiredDistance(box, chassis, spheres);
-    if (std::isfinite(need)) MarkBlocked(g, box, need, slack, &allowed);
-  }
+  const std::vector<std::uint8_t> allowed = AllowedCells(scene, kinematics, g, slack);
   const Eigen::Vector2i start = g.CellOf(p_WB_start_m), goal = g.CellOf(p_WB_goal_m);
   if (allowed[g.Index(start.x(), start.y())] == 0) {
     out.certified_unreachable = true;

@@ -51,6 +51,20 @@ BaseReachability CertifyBaseUnreachable(const Scene& scene, const Kinematics& ki
                                         const Eigen::Vector2d& p_WB_goal_m,
                                         const BaseReachabilityOptions& options = {});
 
+/// The same certificate, local: whether the base at p_WB_m is shut in a pocket, i.e. no motion
+/// of the rigid lower body takes its centre out of the square of half side window_m around
+/// p_WB_m. The grid covers only that square, grown to whole cells of CertifyBaseUnreachable's
+/// grid (the same cells: options.resolution_m from the scene bounds' minimum corner;
+/// goal_radius_m unused);
+/// certified when the flood fill from the base's cell reaches no border cell (every motion
+/// leaving the square passes through one). Cheap (the square's cells, not the room's), so a
+/// task generator can reject ends it places where the robot could not have driven to. A
+/// position whose own cell is not allowed is certified too (the rigid lower body collides).
+/// Throws std::invalid_argument for a non-finite position, window_m <= 0 or resolution <= 0.
+BaseReachability CertifyBaseEnclosed(const Scene& scene, const Kinematics& kinematics,
+                                     const Eigen::Vector2d& p_WB_m, double window_m,
+                                     const BaseReachabilityOptions& options = {});
+
 /// The same test for an end-effector target, whatever goal base pose a planner chooses: the
 /// goal disc is centred at the target's wrist centre W (WholeBodyIk::p_EW) with radius
 /// |p_BS| + the shoulder-to-wrist reach (triangle-inequality bounds, WholeBodyIk), which

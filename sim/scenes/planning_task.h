@@ -1,11 +1,13 @@
 #pragma once
 
 #include <cstdint>
+#include <optional>
 
 #include <Eigen/Geometry>
 
 #include "core/robot/whole_body_state.h"
 #include "sim/scenes/distance_range.h"
+#include "sim/scenes/task_tightness.h"
 
 namespace topay {
 
@@ -22,6 +24,9 @@ struct PlanningTask {
   std::uint64_t scene_seed = 0;  ///< Seed of the scene it was made in (0: hand-made scene).
   /// Straight-line distance between the start and goal base positions, |p_goal - p_start|.
   double base_distance_m = 0.0;
+  /// Tight tasks (TaskTightness::kTight): how close each end is to the boxes and what the
+  /// goal is near. Unset for an open task.
+  std::optional<TightTaskInfo> tight;
 };
 
 }  // namespace topay

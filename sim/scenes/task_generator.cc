@@ -10,31 +10,11 @@
 #include "core/common/random.h"
 #include "sim/scenes/benchmark_scene.h"
 #include "sim/scenes/quantize.h"
+#include "sim/scenes/task_sampling.h"
+#include "sim/scenes/tight_task_generator.h"
 
 namespace topay {
 namespace {
-
-// The rectangle base positions are drawn from.
-struct BaseRegion {
-  Eigen::Vector2d min_m;
-  Eigen::Vector2d max_m;
-};
-
-BaseRegion MakeBaseRegion(const Eigen::AlignedBox3d& bounds_W, DistanceRange range,
-                          const TaskGeneratorOptions& options) {
-  const Eigen::Vector2d margin = Eigen::Vector2d::Constant(options.wall_margin_m);
-  const BaseRegion region{bounds_W.min().head<2>() + margin, bounds_W.max().head<2>() - margin};
-  if (!(region.min_m.array() < region.max_m.array()).all()) {
-    throw std::invalid_argument("task generator: wall_margin_m leaves no room for the base");
-  }
-  const double diagonal = (region.max_m - region.min_m).norm();
-  if (DistanceRangeBounds(range).min_m > diagonal) {
-    throw std::invalid_argument("task generator: range \"" +
-                                std::string(DistanceRangeName(range)) +
-                                "\" needs base distances the room cannot hold");
-  }
-  return region;
-}
 
 WholeBodyState DrawBasePose(const BaseRegion& region, int num_joints, Rng& rng) {
   WholeBodyState state;
@@ -43,10 +23,6 @@ WholeBodyState DrawBasePose(const BaseRegion& region, int num_joints, Rng& rng) 
   state.yaw_rad = QuantizeMicro(rng.Uniform(-std::numbers::pi, std::numbers::pi));
   state.q_rad = Eigen::VectorXd::Zero(num_joints);
   return state;
-}
-
-double BaseDistance(const WholeBodyState& a, const WholeBodyState& b) {
-  return std::hypot(b.x_m - a.x_m, b.y_m - a.y_m);
 }
 
 // Draws (start, goal) base pose pairs until their distance is in range (the protocol's
@@ -73,10 +49,7 @@ bool DrawFreeArm(const SceneClearanceChecker& checker, const JointLimits& limits
   const double margin = options.obstacle_margin_m;
   if (!(checker.BaseClearance(p_WB, margin) > margin)) return false;
   for (int i = 0; i < options.max_arm_tries; ++i) {
-    for (int j = 0; j < state->num_joints(); ++j) {
-      const double q = QuantizeMicro(rng.Uniform(limits.q_min_rad(j), limits.q_max_rad(j)));
-      state->q_rad(j) = std::clamp(q, limits.q_min_rad(j), limits.q_max_rad(j));
-    }
+    DrawUniformArm(limits, rng, state);
     if (checker.IsCollisionFree(*state, options.obstacle_margin_m, options.self_margin_m,
                                 workspace)) {
       return true;
@@ -115,9 +88,15 @@ BenchmarkCase GenerateBenchmarkCase(SceneKind kind, DistanceRange range, std::ui
                                     const Kinematics& kinematics,
                                     const TaskGeneratorOptions& options) {
   CheckOptions(options);
+  if (options.tightness == TaskTightness::kTight) {
+    BenchmarkCase out;
+    out.scene = GenerateBenchmarkScene(kind, DeriveSeed(seed, 1));
+    out.task = GenerateTightTask(out.scene, range, seed, kinematics, options);
+    return out;
+  }
   const RobotModel& model = kinematics.model();
   const Scene room_shape;  // Default bounds: the benchmark room.
-  const BaseRegion region = MakeBaseRegion(room_shape.bounds_W_m, range, options);
+  const BaseRegion region = MakeBaseRegion(room_shape.bounds_W_m, range, options.wall_margin_m);
   BenchmarkCase out;
   PlanningTask& task = out.task;
   task.range = range;
@@ -152,8 +131,12 @@ BenchmarkCase GenerateBenchmarkCase(SceneKind kind, DistanceRange range, std::ui
 PlanningTask GenerateTask(const Scene& scene, DistanceRange range, std::uint64_t seed,
                           const Kinematics& kinematics, const TaskGeneratorOptions& options) {
   CheckOptions(options);
+  if (options.tightness == TaskTightness::kTight) {
+    throw std::invalid_argument(
+        "GenerateTask: tight tasks need the scene's box roles (use GenerateTightTask)");
+  }
   const RobotModel& model = kinematics.model();
-  const BaseRegion region = MakeBaseRegion(scene.bounds_W_m, range, options);
+  const BaseRegion region = MakeBaseRegion(scene.bounds_W_m, range, options.wall_margin_m);
   const SceneClearanceChecker checker(kinematics, scene);
   SceneClearanceWorkspace workspace = checker.MakeWorkspace();
   Rng rng(seed);

@@ -8,6 +8,7 @@
 #include "sim/scenes/generated_scene.h"
 #include "sim/scenes/planning_task.h"
 #include "sim/scenes/scene_kind.h"
+#include "sim/scenes/task_tightness.h"
 
 namespace topay {
 
@@ -30,6 +31,36 @@ struct TaskGeneratorOptions {
   /// GenerateBenchmarkCase: keep-out cylinders of radius base radius + arm reach bound
   /// (ArmReachBound) + this margin, around the start and goal base positions.
   double keep_out_margin_m = 0.1;
+
+  // ---- Tight tasks (sim/scenes/tight_task_generator.h) ----------------------------------
+  /// kOpen: the protocol above. kTight: GenerateBenchmarkCase makes the scene without
+  /// keep-outs and draws both ends with GenerateTightTask.
+  TaskTightness tightness = TaskTightness::kOpen;
+  /// A tight end's exact obstacle clearance (its closest body, base cylinder or arm sphere,
+  /// to its nearest box) must lie in (obstacle_margin_m, tight_clearance_max_m] (m).
+  double tight_clearance_max_m = 0.05;
+  /// A tight end's base position is uniform over the footprint of a chosen box grown by the
+  /// base radius + tight_base_spread_m on every side (m); positions where the base cylinder
+  /// is not clear are redrawn.
+  double tight_base_spread_m = 0.5;
+  /// A tight end whose base is shut in a pocket the robot could not have driven into (between
+  /// table legs, say) is redrawn: CertifyBaseEnclosed (base_reachability.h) over the square
+  /// of this half side (m) around the base. 0: no such check.
+  double tight_pocket_window_m = 2.0;
+  /// Arm configurations drawn (uniform within the joint limits) per tight base pose.
+  int tight_arm_tries = 200;
+  /// Base poses drawn per tight end before the (start, goal) pair is given up.
+  int max_tight_base_tries = 2000;
+  /// (start, goal) pairs tried before GenerateTightTask throws.
+  int max_tight_pair_tries = 10;
+  /// Tables scenes (boxes with BoxRole::kTableTop): the share of tight goals whose end
+  /// effector is on or under a table top, half each (TightGoalKind); the others are near
+  /// any box. In [0, 1].
+  double table_goal_fraction = 0.5;
+  /// kOnTable: the end-effector point is this far (m) above the top's upper face, within
+  /// [min, max], and inside its footprint.
+  double on_table_height_min_m = 0.02;
+  double on_table_height_max_m = 0.15;
 };
 
 /// A generated scene with a task in it.
@@ -43,14 +74,18 @@ struct BenchmarkCase {
 /// |p_PJ| on the path from the root to its link, plus |p_LS| + r (triangle inequality).
 double ArmReachBound(const RobotModel& model);
 
-/// The paper's benchmark protocol (Sec. IV-C, with the authors' code's figures) for one task: from `seed`, draw the start and goal
+/// options.tightness == kOpen: the paper's benchmark protocol (Sec. IV-C, with the authors' code's figures) for one task: from `seed`, draw the start and goal
 /// base poses (uniform, see TaskGeneratorOptions) until their straight-line distance is in
 /// `range`; then generate a fresh `kind` scene with seed DeriveSeed(seed, 1) and keep-out
 /// cylinders around both base positions; then draw the start and goal arm configurations
 /// (uniform within the joint limits, from DeriveSeed(seed, 2)) until each state is exactly
-/// collision free (SceneClearanceChecker, no distance field). Same seed, same case.
-/// Throws std::runtime_error if a bounded search fails (e.g. no free arm configuration in
-/// max_arm_tries), std::invalid_argument for an impossible range for the room.
+/// collision free (SceneClearanceChecker, no distance field).
+/// options.tightness == kTight: a fresh `kind` scene with seed DeriveSeed(seed, 1) and no
+/// keep-out regions, then GenerateTightTask(scene, range, seed) (tight_task_generator.h):
+/// both ends exactly clear and within tight_clearance_max_m of a box.
+/// Same seed and options, same case. Throws std::runtime_error if a bounded search fails
+/// (e.g. no free arm configuration in max_arm_tries), std::invalid_argument for an
+/// impossible range for the room or bad options.
 BenchmarkCase GenerateBenchmarkCase(SceneKind kind, DistanceRange range, std::uint64_t seed,
                                     const Kinematics& kinematics,
                                     const TaskGeneratorOptions& options = {});
@@ -59,7 +94,8 @@ BenchmarkCase GenerateBenchmarkCase(SceneKind kind, DistanceRange range, std::ui
 /// and a pair is kept if both its poses have a collision-free arm configuration (each drawn up
 /// to max_arm_tries times; a pose whose base cylinder is not clear is rejected at once);
 /// at most max_base_pose_tries pairs. task.scene_seed = scene.seed. Throws std::runtime_error
-/// when the bounded search fails, std::invalid_argument for an impossible range.
+/// when the bounded search fails, std::invalid_argument for an impossible range or for
+/// options.tightness == kTight (tight tasks need the box roles: GenerateTightTask).
 PlanningTask GenerateTask(const Scene& scene, DistanceRange range, std::uint64_t seed,
                           const Kinematics& kinematics, const TaskGeneratorOptions& options = {});
 

@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <fstream>
+#include <limits>
 
 #include "core/common/error.h"
 #include "sim/scenes/json_fields.h"
@@ -29,6 +30,76 @@ Json PoseJson(const Eigen::Isometry3d& X_WE) {
   json["quaternion_wxyz"] =
       Json::array({quaternion.w(), quaternion.x(), quaternion.y(), quaternion.z()});
   return json;
+}
+
+Json TightEndJson(const TightEnd& end) {
+  Json json;
+  json["clearance_m"] = end.clearance_m;
+  json["box"] = end.box;
+  json["body"] = std::string(TightBodyName(end.body));
+  return json;
+}
+
+}  // namespace
+
+nlohmann::ordered_json TightInfoToJson(const TightTaskInfo& info) {
+  Json json;
+  json["start"] = TightEndJson(info.start);
+  json["goal"] = TightEndJson(info.goal);
+  json["goal_kind"] = std::string(TightGoalKindName(info.goal_kind));
+  json["goal_table_top"] = info.goal_table_top >= 0 ? Json(info.goal_table_top) : Json(nullptr);
+  return json;
+}
+
+namespace {
+
+// A box index: a non-negative integer below 2^31.
+int ReadBoxIndex(const JsonFieldReader& reader, const nlohmann::json& value,
+                 const std::string& path) {
+  const std::uint64_t index = reader.Unsigned(value, path);
+  if (index > static_cast<std::uint64_t>(std::numeric_limits<int>::max())) {
+    reader.Fail(path, "box index too large");
+  }
+  return static_cast<int>(index);
+}
+
+TightEnd ReadTightEnd(const JsonFieldReader& reader, const nlohmann::json& tight,
+                      const std::string& key) {
+  const std::string path = "tight." + key;
+  const nlohmann::json& value = reader.Member(tight, "tight", key);
+  reader.RequireKnownKeys(value, path, {"clearance_m", "box", "body"});
+  TightEnd end;
+  end.clearance_m =
+      reader.Number(reader.Member(value, path, "clearance_m"), path + ".clearance_m");
+  end.box = ReadBoxIndex(reader, reader.Member(value, path, "box"), path + ".box");
+  const std::string body = reader.String(reader.Member(value, path, "body"), path + ".body");
+  const std::optional<TightBody> parsed = ParseTightBody(body);
+  if (!parsed) reader.Fail(path + ".body", "unknown body \"" + body + "\" (base, arm)");
+  end.body = *parsed;
+  return end;
+}
+
+TightTaskInfo ReadTight(const JsonFieldReader& reader, const nlohmann::json& value) {
+  reader.RequireObject(value, "tight");
+  reader.RequireKnownKeys(value, "tight", {"start", "goal", "goal_kind", "goal_table_top"});
+  TightTaskInfo info;
+  info.start = ReadTightEnd(reader, value, "start");
+  info.goal = ReadTightEnd(reader, value, "goal");
+  const std::string kind =
+      reader.String(reader.Member(value, "tight", "goal_kind"), "tight.goal_kind");
+  const std::optional<TightGoalKind> parsed = ParseTightGoalKind(kind);
+  if (!parsed) {
+    reader.Fail("tight.goal_kind",
+                "unknown goal kind \"" + kind + "\" (near_box, on_table, under_table)");
+  }
+  info.goal_kind = *parsed;
+  const nlohmann::json& top = reader.Member(value, "tight", "goal_table_top");
+  if (!top.is_null()) info.goal_table_top = ReadBoxIndex(reader, top, "tight.goal_table_top");
+  if ((info.goal_kind == TightGoalKind::kNearBox) != (info.goal_table_top < 0)) {
+    reader.Fail("tight.goal_table_top",
+                "must be null exactly when goal_kind is near_box (goal_kind \"" + kind + "\")");
+  }
+  return info;
 }
 
 WholeBodyState ReadState(const JsonFieldReader& reader, const nlohmann::json& document,
@@ -81,7 +152,7 @@ void CheckJointCounts(const JsonFieldReader& reader, const PlanningTask& task,
 PlanningTask TaskFromDocument(const JsonFieldReader& reader, const nlohmann::json& document,
                               int expected_num_joints) {
   reader.RequireKnownKeys(document, "", {"range", "seed", "scene_seed", "base_distance_m",
-                                         "start", "goal", "goal_end_effector"});
+                                         "start", "goal", "goal_end_effector", "tight"});
   PlanningTask task;
   const std::string range = reader.String(reader.Member(document, "", "range"), "range");
   const std::optional<DistanceRange> parsed = ParseDistanceRange(range);
@@ -101,6 +172,9 @@ PlanningTask TaskFromDocument(const JsonFieldReader& reader, const nlohmann::jso
                                        JsonNumberText(distance) + " m)");
   }
   task.X_WE_goal = ReadPose(reader, document);
+  if (const nlohmann::json* tight = reader.OptionalMember(document, "tight")) {
+    task.tight = ReadTight(reader, *tight);
+  }
   return task;
 }
 
@@ -115,6 +189,7 @@ std::string TaskToJson(const PlanningTask& task) {
   json["start"] = StateJson(task.start);
   json["goal"] = StateJson(task.goal);
   json["goal_end_effector"] = PoseJson(task.X_WE_goal);
+  if (task.tight) json["tight"] = TightInfoToJson(*task.tight);
   return json.dump(2) + "\n";
 }
 

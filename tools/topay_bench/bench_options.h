@@ -22,6 +22,10 @@ struct BenchOptions {
   /// a fresh scene per task, as in the paper.
   std::string scene = "cuboids";
   std::string range = "medium";
+  /// Tight tasks [false]: GenerateBenchmarkCase with TaskTightness::kTight (no keep-outs;
+  /// start and goal exactly clear and within TaskGeneratorOptions::tight_clearance_max_m,
+  /// 5 cm, of a box; sim/scenes/tight_task_generator.h). The cell is "<scene> <range> tight".
+  bool tight = false;
   int num_tasks = 20;      ///< [20], in [1, 1000000].
   std::uint64_t seed = 1;  ///< Base seed S [1].
   /// Methods run on every task (BenchMethodName spellings), unique, at least one [topay].

@@ -4,10 +4,17 @@
 
 namespace topay::bench {
 
+std::string CellName(const std::string& scene, const std::string& range, bool tight) {
+  return scene + " " + range + (tight ? " tight" : "");
+}
+
+std::string BenchRecord::cell() const { return CellName(scene, range, tight); }
+
 void FillOutcome(const WholeBodyPlanResult& plan, double time_limit_ms, BenchRecord* r) {
   r->success = plan.success();
   r->status = std::string(ToString(plan.status));
   r->failure_reason = plan.failure_reason;
+  r->failure = ClassifyPlanFailure(plan);
   r->timings = plan.timings;
   if (plan.sampled) r->duration_s = plan.sampled->duration_s;
   r->num_candidates = static_cast<int>(plan.candidates.size());
@@ -28,6 +35,7 @@ void FillOutcome(const WholeBodyPlanResult& plan, double time_limit_ms, BenchRec
     reason << "time limit: T.P. " << r->tp_ms() << " ms > " << time_limit_ms << " ms";
     r->success = false;
     r->status = std::string(ToString(PlanStatus::kTimeLimit));
+    r->failure = FailureCategory::kTimeLimit;
     r->failure_reason = reason.str();
   }
 }

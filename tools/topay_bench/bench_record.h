@@ -8,6 +8,8 @@
 
 #include "core/planner/whole_body_plan_result.h"
 #include "core/robot/whole_body_state.h"
+#include "sim/scenes/task_tightness.h"
+#include "tools/topay_bench/failure_category.h"
 #include "tools/topay_plan/trajectory_record.h"
 
 namespace topay::bench {
@@ -31,6 +33,7 @@ struct BenchRecord {
   std::uint64_t scene_seed = 0;  ///< The generated scene's seed.
   std::string scene;             ///< "cuboids" | "tables".
   std::string range;             ///< "small" | "medium" | "large".
+  bool tight = false;            ///< The run's tasks are tight (TaskTightness::kTight).
   WholeBodyState start;
   WholeBodyState goal_hint;  ///< The task's generating goal state.
   bool used_hint = false;    ///< goal_hint was passed to the planner.
@@ -41,6 +44,9 @@ struct BenchRecord {
   /// sim/scenes/base_reachability.h): no planner can solve the task. Counted as a failure like
   /// any other, and reported apart.
   bool base_unreachable = false;
+  /// A tight task's record of its ends (PlanningTask::tight); unset for an open task or one
+  /// that could not be generated.
+  std::optional<TightTaskInfo> tight_info;
 
   // The method and its outcome.
   std::string method;          ///< BenchMethodName.
@@ -49,6 +55,7 @@ struct BenchRecord {
   std::string status;          ///< ToString(PlanStatus); "time_limit" for a late success;
                                ///< "generation_failed" when the task could not be generated.
   std::string failure_reason;  ///< Empty on success.
+  FailureCategory failure = FailureCategory::kNone;  ///< kNone on success.
 
   // Figures.
   PlanTimings timings;  ///< ms; total_ms is T.P.
@@ -65,12 +72,19 @@ struct BenchRecord {
   std::optional<OptimizerWork> optimizer;
 
   double tp_ms() const { return timings.total_ms; }
+  /// CellName(scene, range, tight).
+  std::string cell() const;
 };
 
+/// The benchmark cell of a run: "<scene> <range>", with " tight" for tight tasks, e.g.
+/// "tables medium tight".
+std::string CellName(const std::string& scene, const std::string& range, bool tight);
+
 /// Fills the outcome and figures of *record (the task fields are the caller's) from a plan:
-/// success, status, reason, timings, duration, counts and validation. A validated plan
-/// whose T.P. exceeds time_limit_ms is a failure: status "time_limit", reason
-/// "time limit: T.P. <x> ms > <L> ms" (its figures are kept).
+/// success, status, reason, failure category (ClassifyPlanFailure), timings, duration, counts
+/// and validation. A validated plan whose T.P. exceeds time_limit_ms is a failure: status
+/// "time_limit", category kTimeLimit, reason "time limit: T.P. <x> ms > <L> ms" (its figures
+/// are kept).
 void FillOutcome(const WholeBodyPlanResult& plan, double time_limit_ms, BenchRecord* record);
 
 }  // namespace topay::bench

@@ -4,6 +4,8 @@
 #include <cmath>
 #include <vector>
 
+#include "sim/scenes/task_json.h"
+
 namespace topay::bench {
 namespace {
 
@@ -66,6 +68,7 @@ nlohmann::ordered_json RecordToJson(const BenchRecord& r) {
   json["scene_seed"] = r.scene_seed;
   json["scene"] = r.scene;
   json["range"] = r.range;
+  json["cell"] = r.cell();
   json["method"] = r.method;
   json["order"] = r.order;
   json["start"] = StateJson(r.start);
@@ -74,9 +77,11 @@ nlohmann::ordered_json RecordToJson(const BenchRecord& r) {
   json["target"] = TargetJson(r.X_WE_goal);
   json["base_distance_m"] = r.base_distance_m;
   json["base_unreachable"] = r.base_unreachable;
+  json["tight"] = r.tight_info ? TightInfoToJson(*r.tight_info) : Json(nullptr);
   json["success"] = r.success;
   json["status"] = r.status;
   json["failure_reason"] = r.failure_reason;
+  json["failure_category"] = std::string(FailureCategoryName(r.failure));
   json["timings_ms"] = TimingsJson(r.timings);
   json["map_ms"] = r.map_ms;
   json["duration_s"] = Number(r.duration_s);

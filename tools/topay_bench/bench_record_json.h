@@ -8,10 +8,13 @@
 namespace topay::bench {
 
 // One line of tasks.jsonl: a JSON object with, in this order,
-//   "task", "task_seed", "scene_seed", "scene", "range", "method", "order",
+//   "task", "task_seed", "scene_seed", "scene", "range", "cell" ("tables medium tight"),
+//   "method", "order",
 //   "start": {"x_m", "y_m", "yaw_rad", "q_rad": [..]}, "goal_hint": {same}, "used_hint",
 //   "target": {"position_m": [x, y, z], "quaternion_wxyz": [w, x, y, z]},
-//   "base_distance_m", "success", "status", "failure_reason",
+//   "base_distance_m", "base_unreachable",
+//   "tight": the task file's "tight" object (sim/scenes/task_json.h) or null,
+//   "success", "status", "failure_reason", "failure_category" (FailureCategoryName),
 //   "timings_ms": {"search", "sampling", "front_end", "optimization", "wait", "total"},
 //   "map_ms", "duration_s" (null without a trajectory),
 //   "num_candidates", "num_paths", "num_classes", "num_base_paths",

@@ -53,6 +53,8 @@ BenchRunInfo RunInfo(const BenchOptions& o, const BenchTaskContext& c) {
   BenchRunInfo info;
   info.scene = o.scene;
   info.range = o.range;
+  info.tight = o.tight;
+  info.tight_clearance_max_m = c.generator.tight_clearance_max_m;
   info.seed = o.seed;
   info.threads = c.settings.num_threads > 0
                      ? c.settings.num_threads
@@ -81,6 +83,7 @@ BenchReport RunBench(const BenchOptions& options, const BenchProgress& progress)
   context.settings = SettingsInForce(options, model, loaded, &context.limit_choice);
   context.kind = *ParseSceneKind(options.scene);
   context.range = *ParseDistanceRange(options.range);
+  context.generator.tightness = options.tight ? TaskTightness::kTight : TaskTightness::kOpen;
   context.seed = options.seed;
   context.methods = MethodsOf(options);
   context.use_hint = options.use_hint;

@@ -31,6 +31,8 @@ BenchRecord TaskRecord(const BenchTaskContext& c, int index, const PlanningTask&
   r.scene_seed = scene_seed;
   r.scene = std::string(SceneKindName(c.kind));
   r.range = std::string(DistanceRangeName(c.range));
+  r.tight = c.generator.tightness == TaskTightness::kTight;
+  r.tight_info = task.tight;
   r.start = task.start;
   r.goal_hint = task.goal;
   r.used_hint = c.use_hint;
@@ -50,6 +52,7 @@ std::vector<BenchRecord> GenerationFailed(const BenchTaskContext& c, int index,
     r.method = std::string(BenchMethodName(c.methods[(index + k) % c.methods.size()]));
     r.order = static_cast<int>(k);
     r.status = "generation_failed";
+    r.failure = FailureCategory::kGenerationFailed;
     r.failure_reason = "task generation: " + what;
     records.push_back(r);
   }
@@ -111,7 +114,7 @@ std::vector<BenchRecord> RunBenchTask(const BenchTaskContext& c, int index) {
   const std::uint64_t task_seed = DeriveSeed(c.seed, static_cast<std::uint64_t>(index));
   BenchmarkCase bench_case;
   try {
-    bench_case = GenerateBenchmarkCase(c.kind, c.range, task_seed, *c.kinematics);
+    bench_case = GenerateBenchmarkCase(c.kind, c.range, task_seed, *c.kinematics, c.generator);
   } catch (const std::exception& e) {  // runtime_error (gave up), invalid_argument (range)
     return GenerationFailed(c, index, task_seed, e.what());
   }

@@ -12,6 +12,7 @@
 #include "tools/topay_plan/base_limit_choice.h"
 #include "sim/scenes/distance_range.h"
 #include "sim/scenes/scene_kind.h"
+#include "sim/scenes/task_generator.h"
 
 namespace topay::bench {
 
@@ -23,6 +24,8 @@ struct BenchTaskContext {
   plan::BaseLimitChoice limit_choice = plan::BaseLimitChoice::kBenchmark;
   SceneKind kind = SceneKind::kCuboids;
   DistanceRange range = DistanceRange::kSmall;
+  /// The task generator's options (tightness: open or tight tasks).
+  TaskGeneratorOptions generator;
   std::uint64_t seed = 1;            ///< Base seed S.
   std::vector<BenchMethod> methods;  ///< At least one.
   bool use_hint = true;
@@ -35,12 +38,13 @@ struct BenchTaskContext {
 /// "flatness_pieces.json" (indices below 10000 have 4 digits).
 std::string TaskFilePath(const std::string& dir, int index, const std::string& suffix);
 
-/// Task `index`: GenerateBenchmarkCase(kind, range, DeriveSeed(seed, index)), its distance
+/// Task `index`: GenerateBenchmarkCase(kind, range, DeriveSeed(seed, index), generator), its distance
 /// fields (PlannerFieldOptions, built once and timed: map_ms, not part of T.P.), then every
 /// method in rotation starting with method index mod M, each with its own planner
 /// (BenchPlannerOptions) and the task's goal state as hint when use_hint. One record per
-/// method, in run order. A task the generator cannot make gives records with status
-/// "generation_failed" and the generator's message. Throws ConfigError if a dump cannot be
+/// method, in run order; a tight task's records carry its PlanningTask::tight. A task the
+/// generator cannot make gives records with status "generation_failed" (category
+/// kGenerationFailed) and the generator's message. Throws ConfigError if a dump cannot be
 /// written.
 std::vector<BenchRecord> RunBenchTask(const BenchTaskContext& context, int index);
 

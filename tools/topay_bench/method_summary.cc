@@ -36,7 +36,10 @@ MethodSummary SummarizeOne(const std::vector<BenchRecord>& records, const std::s
     tp_all.push_back(r.tp_ms());
     s.unreachable_tasks += r.base_unreachable ? 1 : 0;
     map_ms.push_back(r.map_ms);
-    if (!r.success) continue;
+    if (!r.success) {
+      s.failures.Add(r.failure == FailureCategory::kNone ? FailureCategory::kOther : r.failure);
+      continue;
+    }
     ++s.successes;
     reachable_successes += r.base_unreachable ? 0 : 1;
     tp_ok.push_back(r.tp_ms());

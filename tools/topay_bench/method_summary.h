@@ -31,6 +31,9 @@ struct MethodSummary {
   double common_tp_ms_mean = 0.0;
   double common_td_s_mean = 0.0;
   double map_ms_mean = 0.0;  ///< Distance field build time (not in T.P.), over all tasks.
+  /// The method's failed tasks by category (BenchRecord::failure; a failure without a
+  /// category counts as kOther): failures.Total() == tasks - successes.
+  FailureTally failures;
 };
 
 /// The summaries of `methods` (in that order) from the records of a run (any order; each

@@ -18,16 +18,29 @@ std::string Cell(double value, int decimals) {
   return out.str();
 }
 
+Json FailuresJson(const FailureTally& tally) {
+  Json json = Json::object();
+  for (const FailureCategory category : kFailureCategories) {
+    json[std::string(FailureCategoryName(category))] = tally.Count(category);
+  }
+  return json;
+}
+
 Json MethodJson(const MethodSummary& s, const BenchRunInfo& info) {
   return Json{{"method", s.method},
               {"scene", info.scene},
               {"range", info.range},
+              {"cell", CellName(info.scene, info.range, info.tight)},
+              {"tight", info.tight},
+              {"tight_clearance_max_m",
+               info.tight ? Json(info.tight_clearance_max_m) : Json(nullptr)},
               {"seed", info.seed},
               {"tasks", s.tasks},
               {"successes", s.successes},
               {"success_rate", s.success_rate},
               {"unreachable_tasks", s.unreachable_tasks},
               {"success_rate_reachable", Number(s.success_rate_reachable)},
+              {"failures_by_reason", FailuresJson(s.failures)},
               {"tp_ms_mean", Number(s.tp_ms_mean)},
               {"tp_ms_median", Number(s.tp_ms_median)},
               {"tp_ms_p95", Number(s.tp_ms_p95)},
@@ -69,9 +82,19 @@ std::string SummaryMarkdown(const std::vector<MethodSummary>& summaries, const B
         << Cell(s.tp_ms_p95, 1) << " | " << Cell(s.td_s_mean, 2) << " | "
         << Cell(s.common_tp_ms_mean, 1) << " | " << Cell(s.common_td_s_mean, 2) << " |\n";
   }
+  out << "\n";
+  for (const MethodSummary& s : summaries) {
+    out << s.method << " failures by reason: " << s.failures.Text() << "\n";
+  }
   const int common = summaries.empty() ? 0 : summaries.front().common_tasks;
   out << "\n"
-      << info.scene << ", " << info.range << " range, seed " << info.seed << ", " << info.threads
+      << "Cell " << CellName(info.scene, info.range, info.tight) << ": " << info.scene << ", "
+      << info.range << " range"
+      << (info.tight ? ", tight tasks (start and goal within " +
+                           Cell(100.0 * info.tight_clearance_max_m, 1) + " cm of a box)"
+                     : "")
+      << ", seed "
+      << info.seed << ", " << info.threads
       << " thread(s), time limit " << Cell(info.time_limit_ms, 0) << " ms, " << info.base_limits
       << " base limits, hint " << (info.use_hint ? "on" : "off")
       << ". T.P. and T.D. over each method's successful tasks; common: the " << common

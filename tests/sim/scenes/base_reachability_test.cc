@@ -68,6 +68,35 @@ TEST_F(BaseReachabilityTest, AGapNarrowerThanTheChassisCertifiesUnreachable) {
                    .certified_unreachable);
 }
 
+TEST_F(BaseReachabilityTest, APocketInsideTheWindowIsCertifiedEnclosed) {
+  // The left half of SplitRoom(0.70) is shut: the base centre stays in x ~ [-2.5, -0.45],
+  // y ~ [-1.5, 1.5] (0.40 m from the walls and the divider). A window of half side 2.5 m
+  // around kLeft (-1.5, 0.3) holds all of it, one of 1.0 m does not (its borders
+  // y = -0.7 and y = 1.3 cross the half).
+  const BaseReachability shut =
+      CertifyBaseEnclosed(SplitRoom(0.70), kinematics_, kLeft, 2.5);
+  EXPECT_TRUE(shut.certified_unreachable) << shut.reason;
+  EXPECT_NE(shut.reason.find("pocket"), std::string::npos) << shut.reason;
+  EXPECT_GT(shut.component_cells, 0);
+  // The same cells as the whole-room test: its component from kLeft has the same size.
+  EXPECT_EQ(shut.component_cells, Certify(SplitRoom(0.70), kLeft, kRight).component_cells);
+  EXPECT_FALSE(CertifyBaseEnclosed(SplitRoom(0.70), kinematics_, kLeft, 1.0)
+                   .certified_unreachable);
+  // Through a gap wider than the chassis the base leaves the window.
+  EXPECT_FALSE(CertifyBaseEnclosed(SplitRoom(0.84), kinematics_, kLeft, 2.5)
+                   .certified_unreachable);
+  // A base inside the divider is not allowed at all.
+  const BaseReachability inside =
+      CertifyBaseEnclosed(SplitRoom(0.70), kinematics_, {0.0, 1.5}, 1.0);
+  EXPECT_TRUE(inside.certified_unreachable);
+  EXPECT_NE(inside.reason.find("not allowed"), std::string::npos) << inside.reason;
+  EXPECT_THROW(CertifyBaseEnclosed(SplitRoom(0.70), kinematics_, kLeft, 0.0),
+               std::invalid_argument);
+  EXPECT_THROW(CertifyBaseEnclosed(SplitRoom(0.70), kinematics_,
+                                   {std::numeric_limits<double>::quiet_NaN(), 0.0}, 1.0),
+               std::invalid_argument);
+}
+
 TEST_F(BaseReachabilityTest, AGoalDiscReachingTheStartsSideIsNotExcluded) {
   // Left cells end at x = -(0.40 - 0.01 / sqrt 2 + 0.05) ~ -0.44 m; kRight is at x = 1.5.
   BaseReachabilityOptions o;

@@ -49,11 +49,50 @@ TEST(TaskJsonTest, RoundTrip) {
   EXPECT_EQ(TaskToJson(read), TaskToJson(task));
 }
 
+PlanningTask MakeTightTask() {
+  PlanningTask task = MakeTask();
+  TightTaskInfo info;
+  info.start = {0.0123456789, 17, TightBody::kArm};
+  info.goal = {1.0 / 3.0 * 0.1, 4, TightBody::kBase};
+  info.goal_kind = TightGoalKind::kUnderTable;
+  info.goal_table_top = 40;
+  task.tight = info;
+  return task;
+}
+
+TEST(TaskJsonTest, TightTaskRoundTrip) {
+  const PlanningTask task = MakeTightTask();
+  const std::string text = TaskToJson(task);
+  EXPECT_NE(text.find("\"goal_kind\": \"under_table\""), std::string::npos) << text;
+  const PlanningTask read = TaskFromJson(text, "tight.json", 7);
+  ASSERT_TRUE(read.tight.has_value());
+  EXPECT_EQ(read.tight->start.clearance_m, task.tight->start.clearance_m);
+  EXPECT_EQ(read.tight->start.box, 17);
+  EXPECT_EQ(read.tight->start.body, TightBody::kArm);
+  EXPECT_EQ(read.tight->goal.clearance_m, task.tight->goal.clearance_m);
+  EXPECT_EQ(read.tight->goal.box, 4);
+  EXPECT_EQ(read.tight->goal.body, TightBody::kBase);
+  EXPECT_EQ(read.tight->goal_kind, TightGoalKind::kUnderTable);
+  EXPECT_EQ(read.tight->goal_table_top, 40);
+  EXPECT_EQ(TaskToJson(read), text);
+  // A near-box goal has no table top: null, read back as -1.
+  PlanningTask near = task;
+  near.tight->goal_kind = TightGoalKind::kNearBox;
+  near.tight->goal_table_top = -1;
+  const std::string near_text = TaskToJson(near);
+  EXPECT_NE(near_text.find("\"goal_table_top\": null"), std::string::npos) << near_text;
+  EXPECT_EQ(TaskFromJson(near_text, "near.json").tight->goal_table_top, -1);
+  // An open task has no "tight" key and reads back without one.
+  EXPECT_EQ(TaskToJson(MakeTask()).find("tight"), std::string::npos);
+  EXPECT_FALSE(TaskFromJson(TaskToJson(MakeTask()), "open.json").tight.has_value());
+}
+
 class TaskJsonErrorTest : public ::testing::Test {
  protected:
   // The valid task's JSON with `from` replaced by `to` (which must occur once).
-  static std::string Edit(const std::string& from, const std::string& to) {
-    std::string text = TaskToJson(MakeTask());
+  static std::string Edit(const std::string& from, const std::string& to,
+                          const PlanningTask& task = MakeTask()) {
+    std::string text = TaskToJson(task);
     const std::size_t at = text.find(from);
     EXPECT_NE(at, std::string::npos) << from;
     if (at != std::string::npos) text.replace(at, from.size(), to);
@@ -111,6 +150,25 @@ TEST_F(TaskJsonErrorTest, UnknownKeysNameTheKey) {
               "unknown field");
   ExpectError(Edit("\"position_m\": [", "\"frame\": \"W\", \"position_m\": ["),
               "goal_end_effector.frame", "unknown field");
+}
+
+TEST_F(TaskJsonErrorTest, BadTightFieldsNameTheField) {
+  const PlanningTask tight = MakeTightTask();
+  ExpectError(Edit("\"goal_kind\": \"under_table\"", "\"goal_kind\": \"beside\"", tight),
+              "tight.goal_kind", "unknown goal kind");
+  ExpectError(Edit("\"body\": \"arm\"", "\"body\": \"leg\"", tight), "tight.start.body",
+              "unknown body");
+  ExpectError(Edit("\"box\": 17", "\"box\": -1", tight), "tight.start.box", "negative");
+  ExpectError(Edit("\"goal_table_top\": 40", "\"goal_table_top\": null", tight),
+              "tight.goal_table_top", "near_box");
+  ExpectError(Edit("\"goal_kind\": \"under_table\"", "\"goal_kind\": \"near_box\"", tight),
+              "tight.goal_table_top", "near_box");
+  ExpectError(Edit("\"clearance_m\": 0.0123456789,", "", tight), "tight.start.clearance_m",
+              "missing");
+  ExpectError(Edit("\"goal_kind\"", "\"kind\": 1, \"goal_kind\"", tight), "tight.kind",
+              "unknown field");
+  ExpectError(Edit("\"box\": 17", "\"box\": 17, \"part\": 3", tight), "tight.start.part",
+              "unknown field");
 }
 
 TEST_F(TaskJsonErrorTest, DirectoriesAndOversizedFilesAreErrors) {
