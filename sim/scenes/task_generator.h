@@ -74,10 +74,11 @@ struct BenchmarkCase {
 /// |p_PJ| on the path from the root to its link, plus |p_LS| + r (triangle inequality).
 double ArmReachBound(const RobotModel& model);
 
-/// options.tightness == kOpen: the paper's benchmark protocol (Sec. IV-C, with the authors' code's figures) for one task: from `seed`, draw the start and goal
-/// base poses (uniform, see TaskGeneratorOptions) until their straight-line distance is in
-/// `range`; then generate a fresh `kind` scene with seed DeriveSeed(seed, 1) and keep-out
-/// cylinders around both base positions; then draw the start and goal arm configurations
+/// options.tightness == kOpen: the paper's benchmark protocol (Sec. IV-C, with the authors'
+/// code's figures) for one task: from `seed`, draw the start and goal base poses (uniform,
+/// see TaskGeneratorOptions) until their straight-line distance is in `range`; then generate
+/// a fresh `kind` scene with seed DeriveSeed(seed, 1) and keep-out cylinders around both base
+/// positions; then draw the start and goal arm configurations
 /// (uniform within the joint limits, from DeriveSeed(seed, 2)) until each state is exactly
 /// collision free (SceneClearanceChecker, no distance field).
 /// options.tightness == kTight: a fresh `kind` scene with seed DeriveSeed(seed, 1) and no

@@ -123,9 +123,8 @@ class TightEndSampler {
       const Anchor& anchor = anchors[rng_.UniformInt(0, last)];
       const OrientedBox& box = scene_.boxes[anchor.box];
       if (!DrawBasePose(box, state)) continue;
-      if (p_start && !bounds_.Contains((Eigen::Vector2d(state->x_m, state->y_m) - *p_start).norm())) {
-        continue;
-      }
+      const Eigen::Vector2d p_WB(state->x_m, state->y_m);
+      if (p_start && !bounds_.Contains((p_WB - *p_start).norm())) continue;
       if (DrawTightArm(kind, box, state, end) && !InPocket(*state)) {
         if (table_top != nullptr) *table_top = kind == TightGoalKind::kNearBox ? -1 : anchor.box;
         return true;

@@ -85,6 +85,35 @@ TEST(BenchRecordJsonTest, HoldsEveryFieldOfTheTask) {
   EXPECT_EQ(j["success"], true);
   EXPECT_EQ(j["status"], "success");
   EXPECT_EQ(j["failure_reason"], "");
+  EXPECT_EQ(j["failure_category"], "");
+  EXPECT_EQ(j["cell"], "tables small");
+  EXPECT_TRUE(j["tight"].is_null());  // an open task
+}
+
+TEST(BenchRecordJsonTest, ATightTaskNamesItsCellAndItsEnds) {
+  BenchRecord r = HandRecord();
+  r.tight = true;
+  TightTaskInfo info;
+  info.start = {0.012, 33, TightBody::kBase};
+  info.goal = {0.004, 41, TightBody::kArm};
+  info.goal_kind = TightGoalKind::kOnTable;
+  info.goal_table_top = 41;
+  r.tight_info = info;
+  r.success = false;
+  r.failure = FailureCategory::kStartRefused;
+  const nlohmann::json j = nlohmann::json::parse(RecordJsonLine(r));
+  EXPECT_EQ(j["cell"], "tables small tight");
+  EXPECT_EQ(j["failure_category"], "start_refused");
+  EXPECT_EQ(j["tight"]["start"]["clearance_m"], 0.012);
+  EXPECT_EQ(j["tight"]["start"]["box"], 33);
+  EXPECT_EQ(j["tight"]["start"]["body"], "base");
+  EXPECT_EQ(j["tight"]["goal"]["body"], "arm");
+  EXPECT_EQ(j["tight"]["goal_kind"], "on_table");
+  EXPECT_EQ(j["tight"]["goal_table_top"], 41);
+  // A tight cell's task that could not be generated has no ends, but its cell says tight.
+  r.tight_info.reset();
+  EXPECT_TRUE(nlohmann::json::parse(RecordJsonLine(r))["tight"].is_null());
+  EXPECT_EQ(nlohmann::json::parse(RecordJsonLine(r))["cell"], "tables small tight");
 }
 
 TEST(BenchRecordJsonTest, TimingsAreUnderOneKeyAndFiguresAreThere) {
@@ -112,7 +141,7 @@ TEST(BenchRecordJsonTest, TimingsAreUnderOneKeyAndFiguresAreThere) {
   // No other key holds a wall-clock figure: the top-level keys are exactly these.
   std::vector<std::string> keys;
   for (auto it = j.begin(); it != j.end(); ++it) keys.push_back(it.key());
-  EXPECT_EQ(keys.size(), 25u);
+  EXPECT_EQ(keys.size(), 28u);
 }
 
 TEST(BenchRecordJsonTest, AFailureHasNullDurationAndValidation) {
@@ -139,6 +168,7 @@ TEST(BenchRecordTest, LateSuccessCountsAsTimeLimitFailure) {
   FillOutcome(plan, 3000.0, &r);
   EXPECT_FALSE(r.success);
   EXPECT_EQ(r.status, "time_limit");
+  EXPECT_EQ(r.failure, FailureCategory::kTimeLimit);
   EXPECT_NE(r.failure_reason.find("time limit"), std::string::npos) << r.failure_reason;
   EXPECT_DOUBLE_EQ(r.tp_ms(), 3500.0);
 
@@ -147,6 +177,7 @@ TEST(BenchRecordTest, LateSuccessCountsAsTimeLimitFailure) {
   FillOutcome(plan, 3000.0, &in_time);
   EXPECT_TRUE(in_time.success);
   EXPECT_EQ(in_time.status, "success");
+  EXPECT_EQ(in_time.failure, FailureCategory::kNone);
 }
 
 TEST(BenchRecordTest, CopiesCountsAndTheChosenValidation) {
@@ -186,8 +217,21 @@ TEST(BenchRecordTest, CopiesCountsAndTheChosenValidation) {
   EXPECT_EQ(r.optimizer->stage2_iterations, 140);
   EXPECT_EQ(r.optimizer->outer_iterations, 3);  // the chosen candidate's, not the first's
   const nlohmann::json j = RecordToJson(r);
+  EXPECT_EQ(j["failure_category"], "");
   EXPECT_EQ(j["optimizer"]["pieces"], 7);
   EXPECT_EQ(j["optimizer"]["outer_iterations"], 3);
+}
+
+TEST(BenchRecordTest, AFrontEndRefusalIsCategorised) {
+  WholeBodyPlanResult plan;
+  plan.status = PlanStatus::kFrontEndFailed;
+  plan.front_end.status = FrontEndStatus::kStartInvalid;
+  plan.failure_reason = "front end: start state: base collision";
+  BenchRecord r;
+  FillOutcome(plan, 3000.0, &r);
+  EXPECT_FALSE(r.success);
+  EXPECT_EQ(r.failure, FailureCategory::kStartRefused);
+  EXPECT_EQ(RecordToJson(r)["failure_category"], "start_refused");
 }
 
 }  // namespace

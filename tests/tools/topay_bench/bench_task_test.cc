@@ -5,6 +5,7 @@
 #include "core/common/random.h"
 #include "core/io/robot_loader.h"
 #include "core/planner/whole_body_planner_options.h"
+#include "sim/scenes/task_generator.h"
 
 namespace topay::bench {
 namespace {
@@ -55,6 +56,38 @@ TEST(BenchTaskTest, RunsEveryMethodInRotationOnTheSameTask) {
   EXPECT_EQ(records[0].start.ToVector(), records[1].start.ToVector());
   EXPECT_EQ(records[0].X_WE_goal.matrix(), records[1].X_WE_goal.matrix());
   EXPECT_EQ(records[0].map_ms, records[1].map_ms);
+}
+
+TEST(BenchTaskTest, ATightTaskCarriesItsEndsAndAFailureCategory) {
+  const RobotModel model = LoadRobotModel(TOPAY_SOURCE_DIR "/config/robot/topay_mm.urdf",
+                                          TOPAY_SOURCE_DIR "/config/robot/topay_mm.yaml");
+  const Kinematics kinematics(model);
+  const WholeBodyPlannerOptions loaded;
+  BenchTaskContext context;
+  context.kinematics = &kinematics;
+  context.loaded_options = &loaded;
+  context.settings.base_limits = model.base_limits;
+  context.settings.num_threads = 1;
+  context.settings.time_limit_ms = 3000.0;
+  context.kind = SceneKind::kTables;
+  context.range = DistanceRange::kSmall;
+  context.generator.tightness = TaskTightness::kTight;
+  context.seed = 5;
+  context.methods = {BenchMethod::kTopay};
+  const std::vector<BenchRecord> records = RunBenchTask(context, 0);
+  ASSERT_EQ(records.size(), 1u);
+  const BenchRecord& r = records[0];
+  EXPECT_TRUE(r.tight);
+  EXPECT_EQ(r.cell(), "tables small tight");
+  // The same task as the generator makes for the task seed.
+  const BenchmarkCase expected = GenerateBenchmarkCase(
+      SceneKind::kTables, DistanceRange::kSmall, DeriveSeed(5, 0), kinematics, context.generator);
+  ASSERT_TRUE(r.tight_info.has_value());
+  EXPECT_EQ(r.tight_info->start.clearance_m, expected.task.tight->start.clearance_m);
+  EXPECT_EQ(r.tight_info->goal.box, expected.task.tight->goal.box);
+  EXPECT_EQ(r.start.ToVector(), expected.task.start.ToVector());
+  EXPECT_EQ(r.success, r.failure == FailureCategory::kNone) << r.failure_reason;
+  if (!r.success) EXPECT_FALSE(r.failure_reason.empty());
 }
 
 }  // namespace

@@ -66,6 +66,30 @@ TEST(MethodSummaryTest, UnreachableTasksAreCountedAndLeftOutOfTheReachableRate) 
   EXPECT_DOUBLE_EQ(none[0].success_rate_reachable, 0.75);
 }
 
+TEST(MethodSummaryTest, FailuresAreCountedByReasonPerMethod) {
+  std::vector<BenchRecord> records = Records();  // A failed task 3, B task 0
+  for (BenchRecord& r : records) {
+    if (r.task == 3 && r.method == "A") r.failure = FailureCategory::kStartRefused;
+    if (r.task == 0 && r.method == "B") r.failure = FailureCategory::kNoGoal;
+  }
+  BenchRecord late = Record(4, "A", false, 3500, 0);
+  late.failure = FailureCategory::kTimeLimit;
+  BenchRecord uncategorised = Record(5, "A", false, 100, 0);  // kNone on a failure: "other"
+  BenchRecord refused = Record(6, "A", false, 5, 0);
+  refused.failure = FailureCategory::kStartRefused;
+  records.insert(records.end(), {late, uncategorised, refused});
+  const std::vector<MethodSummary> s = SummarizeMethods(records, {"A", "B"});
+  const FailureTally& a = s[0].failures;
+  EXPECT_EQ(a.Count(FailureCategory::kStartRefused), 2);
+  EXPECT_EQ(a.Count(FailureCategory::kTimeLimit), 1);
+  EXPECT_EQ(a.Count(FailureCategory::kOther), 1);
+  EXPECT_EQ(a.Count(FailureCategory::kNoGoal), 0);
+  EXPECT_EQ(a.Total(), s[0].tasks - s[0].successes);
+  EXPECT_EQ(a.Text(), "2 start refused, 1 time limit, 1 other");
+  EXPECT_EQ(s[1].failures.Count(FailureCategory::kNoGoal), 1);
+  EXPECT_EQ(s[1].failures.Total(), 1);
+}
+
 TEST(MethodSummaryTest, OneMethodHasItsSuccessesAsCommonTasks) {
   const std::vector<MethodSummary> s = SummarizeMethods(Records(), {"A"});
   ASSERT_EQ(s.size(), 1u);

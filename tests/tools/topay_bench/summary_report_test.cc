@@ -23,6 +23,9 @@ MethodSummary Summary(const std::string& method, int successes) {
   s.common_tasks = 2;
   s.common_tp_ms_mean = successes > 0 ? 110.0 : std::nan("");
   s.common_td_s_mean = 9.0;
+  for (int i = 0; i < 4 - successes; ++i) {
+    s.failures.Add(i == 0 ? FailureCategory::kNoGoal : FailureCategory::kStartRefused);
+  }
   return s;
 }
 
@@ -56,6 +59,32 @@ TEST(SummaryReportTest, JsonHasTheRequiredKeysPerMethod) {
   EXPECT_EQ(j[0]["tp_ms_mean"], 120.24);
   EXPECT_EQ(j[1]["success_rate"], 0.0);
   EXPECT_TRUE(j[1]["common_tp_ms_mean"].is_null());  // NaN
+}
+
+TEST(SummaryReportTest, FailuresByReasonAndTheCell) {
+  BenchRunInfo info = Info();
+  nlohmann::json j = nlohmann::json::parse(SummaryJson({Summary("flatness", 0)}, info).dump());
+  EXPECT_EQ(j[0]["cell"], "cuboids small");
+  EXPECT_EQ(j[0]["tight"], false);
+  EXPECT_TRUE(j[0]["tight_clearance_max_m"].is_null());
+  const nlohmann::json& f = j[0]["failures_by_reason"];
+  EXPECT_EQ(f.size(), kFailureCategories.size());  // every category, zeros too
+  EXPECT_EQ(f["start_refused"], 3);
+  EXPECT_EQ(f["no_goal"], 1);
+  EXPECT_EQ(f["time_limit"], 0);
+  info.tight = true;
+  info.tight_clearance_max_m = 0.05;
+  j = nlohmann::json::parse(SummaryJson({Summary("flatness", 0)}, info).dump());
+  EXPECT_EQ(j[0]["cell"], "cuboids small tight");
+  EXPECT_EQ(j[0]["tight"], true);
+  EXPECT_EQ(j[0]["tight_clearance_max_m"], 0.05);
+  const std::string table = SummaryMarkdown({Summary("topay", 4), Summary("flatness", 0)}, info);
+  EXPECT_NE(table.find("topay failures by reason: none\n"), std::string::npos) << table;
+  EXPECT_NE(table.find("flatness failures by reason: 3 start refused, 1 no goal\n"),
+            std::string::npos)
+      << table;
+  EXPECT_NE(table.find("Cell cuboids small tight: "), std::string::npos) << table;
+  EXPECT_NE(table.find("within 5.0 cm of a box"), std::string::npos) << table;
 }
 
 TEST(SummaryReportTest, MarkdownHasOneRowPerMethod) {

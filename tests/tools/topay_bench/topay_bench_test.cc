@@ -71,7 +71,8 @@ void ExpectLineKeys(const Json& line) {
        {"task",      "task_seed",      "scene_seed", "scene",  "range",           "method",
         "start",     "goal_hint",      "used_hint",  "target", "base_distance_m", "success",
         "status",    "failure_reason", "timings_ms", "map_ms", "duration_s",      "num_candidates",
-        "num_paths", "num_classes",    "validation", "base_unreachable", "optimizer"}) {
+        "num_paths", "num_classes",    "validation", "base_unreachable", "optimizer",
+        "cell",      "tight",          "failure_category"}) {
     EXPECT_TRUE(line.contains(key)) << key << " in " << line.dump();
   }
   // A task certified unsolvable is never solved (the certificate and the validator agree).
@@ -237,6 +238,42 @@ TEST_F(TopayBenchTest, OneThreadGivesTheSameTasksJsonlTwice) {
   const std::vector<std::string> b = LinesWithoutTimings(Path("b") + "/tasks.jsonl");
   ASSERT_EQ(a.size(), 6u);
   EXPECT_EQ(a, b);
+}
+
+// ---- Tight tasks ------------------------------------------------------------------------------
+
+TEST_F(TopayBenchTest, TightRunMarksTheCellAndCountsFailuresByReason) {
+  const RunResult run = Run("--scene tables --range small --tasks 2 --seed 3 --tight "
+                            "--method topay --threads 2 --time-limit-ms 2000 --out '" +
+                            Path("tight") + "'");
+  ASSERT_EQ(run.exit_code, 0) << run.out << run.err;
+  EXPECT_NE(run.out.find("Cell tables small tight"), std::string::npos) << run.out;
+  EXPECT_NE(run.out.find("topay failures by reason: "), std::string::npos) << run.out;
+  const std::vector<Json> lines = ReadLines(Path("tight") + "/tasks.jsonl");
+  ASSERT_EQ(lines.size(), 2u);
+  std::map<std::string, int> failures;
+  for (const Json& l : lines) {
+    ExpectLineKeys(l);
+    EXPECT_EQ(l["cell"], "tables small tight");
+    ASSERT_TRUE(l["tight"].is_object()) << l.dump();
+    EXPECT_LE(l["tight"]["start"]["clearance_m"].get<double>(), 0.05);
+    EXPECT_LE(l["tight"]["goal"]["clearance_m"].get<double>(), 0.05);
+    const std::string category = l["failure_category"];
+    EXPECT_EQ(l["success"].get<bool>(), category.empty()) << l.dump();
+    if (!category.empty()) ++failures[category];
+  }
+  const Json summary = Json::parse(ReadText(Path("tight") + "/summary.json"));
+  ASSERT_EQ(summary.size(), 1u);
+  EXPECT_EQ(summary[0]["cell"], "tables small tight");
+  EXPECT_EQ(summary[0]["tight"], true);
+  int total = 0;
+  for (const auto& [category, count] : summary[0]["failures_by_reason"].items()) {
+    EXPECT_EQ(count.get<int>(), failures[category]) << category;
+    total += count.get<int>();
+  }
+  EXPECT_EQ(total, 2 - summary[0]["successes"].get<int>());
+  // --help names the flag.
+  EXPECT_NE(Run("--help").out.find("--tight"), std::string::npos);
 }
 
 // ---- Plots (topay-bench-plot) ----------------------------------------------------------------
