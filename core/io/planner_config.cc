@@ -40,6 +40,12 @@ void ReadPlanner(YamlSection section, WholeBodyPlannerOptions* o) {
   section.Read("num_threads", &o->num_threads);
   section.Read("time_limit_s", &o->time_limit_s);
   section.Read("max_candidates", &o->max_candidates);
+  YamlSection retry = section.Section("retry");
+  retry.Read("max_rounds", &o->retry.max_rounds);
+  retry.Read("min_time_left_s", &o->retry.min_time_left_s);
+  retry.Read("clearance_step_m", &o->retry.clearance_step_m);
+  retry.Read("round_time_share", &o->retry.round_time_share);
+  retry.Finish();
   YamlSection limits = section.Section("base_limits");
   if (limits.present()) {  // any field given: the rest from BaseLimits' defaults
     BaseLimits base_limits = o->base_limits.value_or(BaseLimits{});

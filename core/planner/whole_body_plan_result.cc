@@ -50,6 +50,10 @@ std::string WholeBodyPlanResult::Report() const {
       << " ms (front end " << timings.front_end_ms << " ms), optimization "
       << timings.optimization_ms << " ms, wait " << timings.wait_ms << " ms, total "
       << timings.total_ms << " ms\n";
+  if (rounds > 1) {
+    out << "rounds: " << rounds << " (the last at margin level " << margin_level
+        << "; earlier: " << earlier_rounds << ")\n";
+  }
   out << "front end: " << front_end.paths.size() << " whole-body paths, "
       << front_end.stats.num_base_paths << " base paths (" << front_end.stats.num_classes_kept
       << " topological classes), " << front_end.stats.num_goal_candidates

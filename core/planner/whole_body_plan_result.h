@@ -78,6 +78,14 @@ struct WholeBodyPlanResult {
   /// For kTimeLimit and kCancelled: the stage the stop ended (the time limit bounds every
   /// stage: each polls the plan's stop and returns within a short step of it).
   PlanStage stopped_stage = PlanStage::kNone;
+  /// Planning rounds run (PlanRetryOptions): 1 unless a round without a validated trajectory
+  /// was followed by another. front_end and candidates are the last round's; timings add
+  /// every round's up.
+  int rounds = 1;
+  /// The last round's back-end margin level (earlier rounds with a validator rejection).
+  int margin_level = 0;
+  /// The earlier rounds' failures, "round 1: no_base_path; round 2: 1 x ..." (empty if one).
+  std::string earlier_rounds;
 
   bool success() const { return status == PlanStatus::kSuccess; }
   const CandidateReport* chosen_candidate() const {

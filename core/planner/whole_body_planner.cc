@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <atomic>
 #include <chrono>
+#include <cmath>
+#include <cstdint>
 #include <cstdio>
 #include <exception>
 #include <limits>
@@ -14,6 +16,7 @@
 #include <tbb/task_arena.h>
 #include <tbb/task_group.h>
 
+#include "core/common/random.h"
 #include "core/common/stopwatch.h"
 #include "core/optimization/back_end_factory.h"
 #include "core/planner/failure_cause.h"
@@ -24,6 +27,9 @@ namespace {
 
 using Clock = Stopwatch::Clock;
 
+// Salt of the seeds of retry rounds (DeriveSeed(seed, salt + round)).
+constexpr std::uint64_t kRoundSeedSalt = 0x7e7a0000;
+
 WholeBodyPlannerOptions Checked(WholeBodyPlannerOptions options) {
   CheckWholeBodyPlannerOptions(options);
   return options;
@@ -33,14 +39,76 @@ BaseLimits ResolveLimits(const WholeBodyPlannerOptions& options, const Kinematic
   return options.base_limits.value_or(kinematics.model().base_limits);
 }
 
-FrontEndOptions FrontEndOptionsFor(const WholeBodyPlannerOptions& options,
-                                   const Kinematics& kinematics) {
+// Round r's front end: round 0 as configured, round r > 0 with every seed derived from r.
+FrontEndOptions RoundFrontEndOptions(const WholeBodyPlannerOptions& options,
+                                     const Kinematics& kinematics, int round) {
   FrontEndOptions front_end = options.front_end;
   front_end.base_limits = ResolveLimits(options, kinematics);
   // A state the exact zones accept must pass the validator.
   front_end.exact_zones.obstacle_margin_m = options.validator.obstacle_margin_m;
   front_end.exact_zones.self_margin_m = options.validator.self_margin_m;
+  if (round > 0) {
+    const std::uint64_t r = static_cast<std::uint64_t>(round);
+    front_end.seed = DeriveSeed(front_end.seed, kRoundSeedSalt + r);
+    front_end.ik.seed = DeriveSeed(front_end.ik.seed, kRoundSeedSalt + r);
+  }
   return front_end;
+}
+
+// The back end at margin level k: both clearance margins (their defaults resolved as
+// SamplePenalties does) + k x retry.clearance_step_m.
+TrajectoryOptimizerOptions MarginLevelOptions(const WholeBodyPlannerOptions& options,
+                                              const SignedDistanceField2& base_field,
+                                              const SignedDistanceField3& arm_field, int level) {
+  TrajectoryOptimizerOptions optimizer = options.optimizer;
+  if (level == 0) return optimizer;
+  SamplePenaltyOptions& penalties = optimizer.objective.penalties;
+  const double extra_m = level * options.retry.clearance_step_m;
+  penalties.base_field_margin_m =
+      penalties.base_field_margin_m.value_or(base_field.exactness_margin_m()) + extra_m;
+  penalties.arm_field_margin_m =
+      penalties.arm_field_margin_m.value_or(std::sqrt(3.0) * arm_field.geometry().resolution_m) +
+      extra_m;
+  return optimizer;
+}
+
+// A round without a validated trajectory that another round (other seeds, wider margins)
+// may turn into one. `cut`: its own share of the time ended it (not the plan's stop).
+bool Retryable(const WholeBodyPlanResult& round, bool cut) {
+  if (round.chosen >= 0) return false;
+  if (round.front_end.success()) return true;  // paths, but no validated trajectory
+  switch (round.front_end.status) {
+    case FrontEndStatus::kNoGoal:
+    case FrontEndStatus::kNoBasePath:
+    case FrontEndStatus::kNoArmPath:
+      return true;
+    case FrontEndStatus::kCancelled:
+      return cut;
+    default:
+      return false;
+  }
+}
+
+// The end of a round that may be followed by another: `share` of the time left to `end`.
+Clock::time_point RoundDeadline(Clock::time_point end, double share) {
+  const Clock::time_point now = Clock::now();
+  if (end == Clock::time_point::max()) return end;  // no time limit: no share either
+  if (end <= now) return now;
+  return now + std::chrono::duration_cast<Clock::duration>((end - now) * share);
+}
+
+bool AnyValidatorRejection(const std::vector<CandidateReport>& candidates) {
+  return std::any_of(candidates.begin(), candidates.end(), [](const CandidateReport& c) {
+    return c.validation.has_value() && !c.validation->ok && !c.validation->stopped;
+  });
+}
+
+void AddTimings(const PlanTimings& round, PlanTimings* sum) {
+  sum->search_ms += round.search_ms;
+  sum->sampling_ms += round.sampling_ms;
+  sum->front_end_ms += round.front_end_ms;
+  sum->optimization_ms += round.optimization_ms;
+  sum->wait_ms += round.wait_ms;
 }
 
 PlanStatus FromFrontEnd(FrontEndStatus status) {
@@ -55,6 +123,16 @@ PlanStatus FromFrontEnd(FrontEndStatus status) {
 }
 
 // "n x reason; m x other" over the candidates that did not validate.
+std::string SummariseCandidates(const std::vector<CandidateReport>& candidates);
+
+// A failed round in a few words, for the final reason.
+std::string RoundFailure(const WholeBodyPlanResult& round) {
+  if (!round.front_end.success()) {
+    return std::string(ToString(round.front_end.status));
+  }
+  return SummariseCandidates(round.candidates);
+}
+
 std::string SummariseCandidates(const std::vector<CandidateReport>& candidates) {
   std::vector<std::pair<std::string, int>> counts;
   for (const CandidateReport& c : candidates) {
@@ -99,10 +177,16 @@ WholeBodyPlanner::WholeBodyPlanner(const Kinematics& kinematics,
                                    WholeBodyPlannerOptions options)
     : options_(Checked(std::move(options))),
       base_limits_(ResolveLimits(options_, kinematics)),
-      validator_(kinematics, scene, base_limits_, options_.validator),
-      front_end_(kinematics, base_field, arm_field, FrontEndOptionsFor(options_, kinematics),
-                 &validator_.checker()),
-      back_end_(MakeTrajectoryBackEnd(kinematics, base_field, arm_field, options_.optimizer)) {}
+      validator_(kinematics, scene, base_limits_, options_.validator) {
+  for (int round = 0; round < options_.retry.max_rounds; ++round) {
+    rounds_.push_back(std::make_unique<const FrontEnd>(
+        kinematics, base_field, arm_field, RoundFrontEndOptions(options_, kinematics, round),
+        &validator_.checker()));
+    back_ends_.push_back(MakeTrajectoryBackEnd(
+        kinematics, base_field, arm_field,
+        MarginLevelOptions(options_, base_field, arm_field, round)));
+  }
+}
 
 WholeBodyPlanResult WholeBodyPlanner::Plan(const WholeBodyState& start,
                                            const Eigen::Isometry3d& X_WE_goal,
@@ -121,23 +205,80 @@ WholeBodyPlanResult WholeBodyPlanner::PlanBy(Clock::time_point deadline,
   // One stop for the whole plan: the caller's, or the time limit.
   std::stop_source plan_stop;
   const std::stop_callback forward(stop, [&plan_stop] { plan_stop.request_stop(); });
-  std::atomic<bool> time_limit_hit{false};
+  bool time_limit_hit = false;
   {
     const Clock::time_point end = std::min(deadline, DeadlineAfter(t0, options_.time_limit_s));
     if (Clock::now() >= end) plan_stop.request_stop();  // already due: no race with the watcher
     const StopDeadline limit(&plan_stop, end);
-    result.front_end = front_end_.Plan(start, X_WE_goal, hint, plan_stop.get_token());
-    const FrontEndStats& stats = result.front_end.stats;
-    result.timings.search_ms = stats.goal_ms + stats.topology_ms;
-    result.timings.sampling_ms = stats.discretisation_ms + stats.acquisition_ms;
-    result.timings.front_end_ms = Stopwatch::MillisecondsBetween(t0, Clock::now());
-    if (result.front_end.success()) {
-      OptimizeCandidates(start, X_WE_goal, plan_stop.get_token(), &result);
+    const std::chrono::duration<double> min_left(options_.retry.min_time_left_s);
+    PlanTimings earlier;
+    std::string earlier_failures;
+    int level = 0;  // margin level: rounds so far with a validator rejection
+    bool round_cut = false;  // the last round run was ended by its own share of the time
+    for (int round = 0;; ++round) {
+      // A round that may be followed by another gets its share of the time left.
+      std::stop_source round_stop;
+      const std::stop_callback forward_plan(plan_stop.get_token(),
+                                            [&round_stop] { round_stop.request_stop(); });
+      const bool may_retry = round + 1 < options_.retry.max_rounds;
+      const StopDeadline round_limit(
+          &round_stop, may_retry ? RoundDeadline(end, options_.retry.round_time_share)
+                                 : Clock::time_point::max());
+      result = PlanRound(round, level, start, X_WE_goal, hint, round_stop.get_token(),
+                         plan_stop.get_token());
+      round_cut = round_stop.stop_requested() && !plan_stop.stop_requested();
+      AddTimings(result.timings, &earlier);
+      const bool last = !may_retry || plan_stop.stop_requested() || end - Clock::now() < min_left;
+      // A target no seed can reach (below the floor, outside the room, inside a box).
+      const bool hopeless = !result.front_end.success() &&
+                            FrontEndFailureCause(result.front_end.status, front_end().validity(),
+                                                 validator_.scene(), start, X_WE_goal)
+                                .has_value();
+      if (last || hopeless || !Retryable(result, round_cut)) {
+        result.rounds = round + 1;
+        result.earlier_rounds = std::move(earlier_failures);
+        break;
+      }
+      if (!earlier_failures.empty()) earlier_failures += "; ";
+      earlier_failures += "round " + std::to_string(round + 1) + ": " + RoundFailure(result);
+      if (AnyValidatorRejection(result.candidates)) ++level;
     }
-    time_limit_hit = plan_stop.stop_requested() && !stop.stop_requested();
+    result.timings = earlier;
+    time_limit_hit = (plan_stop.stop_requested() || round_cut) && !stop.stop_requested();
   }
   result.timings.total_ms = Stopwatch::MillisecondsBetween(t0, Clock::now());
+  Conclude(time_limit_hit, stop, start, X_WE_goal, &result);
+  return result;
+}
 
+WholeBodyPlanResult WholeBodyPlanner::PlanRound(int round, int level,
+                                                const WholeBodyState& start,
+                                                const Eigen::Isometry3d& X_WE_goal,
+                                                const std::optional<WholeBodyState>& hint,
+                                                std::stop_token round_stop,
+                                                std::stop_token plan_stop) const {
+  const Clock::time_point t0 = Clock::now();
+  WholeBodyPlanResult result;
+  result.front_end = rounds_[round]->Plan(start, X_WE_goal, hint, round_stop);
+  const FrontEndStats& stats = result.front_end.stats;
+  result.timings.search_ms = stats.goal_ms + stats.topology_ms;
+  result.timings.sampling_ms = stats.discretisation_ms + stats.acquisition_ms;
+  result.timings.front_end_ms = Stopwatch::MillisecondsBetween(t0, Clock::now());
+  if (result.front_end.success()) {
+    OptimizeCandidates(*back_ends_[level], start, X_WE_goal, round_stop, plan_stop, &result);
+  }
+  result.margin_level = level;
+  return result;
+}
+
+void WholeBodyPlanner::Conclude(bool time_limit_hit, std::stop_token stop,
+                                const WholeBodyState& start, const Eigen::Isometry3d& X_WE_goal,
+                                WholeBodyPlanResult* out) const {
+  WholeBodyPlanResult& result = *out;
+  const std::string rounds =
+      result.earlier_rounds.empty() ? ""
+                                    : " (after " + std::to_string(result.rounds) +
+                                          " rounds; " + result.earlier_rounds + ")";
   if (!result.front_end.success()) {
     result.status = FromFrontEnd(result.front_end.status);
     if (result.status == PlanStatus::kCancelled) {
@@ -145,7 +286,7 @@ WholeBodyPlanResult WholeBodyPlanner::PlanBy(Clock::time_point deadline,
       if (time_limit_hit) result.status = PlanStatus::kTimeLimit;
     }
     result.failure_reason = "front end: " + result.front_end.failure_reason;
-    if (const auto cause = FrontEndFailureCause(result.front_end.status, front_end_.validity(),
+    if (const auto cause = FrontEndFailureCause(result.front_end.status, front_end().validity(),
                                                 validator_.scene(), start, X_WE_goal)) {
       result.failure_reason += " (" + *cause + ")";
     }
@@ -153,7 +294,8 @@ WholeBodyPlanResult WholeBodyPlanner::PlanBy(Clock::time_point deadline,
       result.failure_reason = TimeLimitPrefix(options_.time_limit_s, PlanStage::kFrontEnd) +
                               result.failure_reason;
     }
-    return result;
+    result.failure_reason += rounds;
+    return;
   }
   if (result.chosen >= 0) {
     result.status = PlanStatus::kSuccess;
@@ -162,7 +304,7 @@ WholeBodyPlanResult WholeBodyPlanner::PlanBy(Clock::time_point deadline,
     if (chosen.parameterisation == TrajectoryParameterisation::kArcLengthYaw) {
       result.trajectory.emplace(chosen.MakeTrajectory());
     }
-    return result;
+    return;
   }
   result.status = stop.stop_requested() ? PlanStatus::kCancelled
                   : time_limit_hit      ? PlanStatus::kTimeLimit
@@ -180,10 +322,11 @@ WholeBodyPlanResult WholeBodyPlanner::PlanBy(Clock::time_point deadline,
     result.failure_reason =
         TimeLimitPrefix(options_.time_limit_s, result.stopped_stage) + result.failure_reason;
   }
-  return result;
+  result.failure_reason += rounds;
 }
 
-void WholeBodyPlanner::RunCandidate(const TrajectoryProblem& plan_problem,
+void WholeBodyPlanner::RunCandidate(const TrajectoryBackEnd& back_end,
+                                    const TrajectoryProblem& plan_problem,
                                     const FrontEndPath& path, std::stop_token stop,
                                     std::stop_token plan_stop, CandidateReport* report) const {
   const Clock::time_point t = Clock::now();
@@ -191,7 +334,7 @@ void WholeBodyPlanner::RunCandidate(const TrajectoryProblem& plan_problem,
   TrajectoryProblem problem = plan_problem;
   problem.exact_prefix_states = path.exact_prefix_states;
   problem.exact_suffix_states = path.exact_suffix_states;
-  report->optimization = back_end_->Optimize(problem, path.path, stop);
+  report->optimization = back_end.Optimize(problem, path.path, stop);
   if (report->optimization.success()) {
     try {  // either parameterisation (arc length-yaw, or the flatness baseline)
       // The plan's stop (time limit, caller), not the early-termination window: a
@@ -208,9 +351,10 @@ void WholeBodyPlanner::RunCandidate(const TrajectoryProblem& plan_problem,
   report->wall_ms = Stopwatch::MillisecondsBetween(t, Clock::now());
 }
 
-void WholeBodyPlanner::OptimizeCandidates(const WholeBodyState& start,
+void WholeBodyPlanner::OptimizeCandidates(const TrajectoryBackEnd& back_end,
+                                          const WholeBodyState& start,
                                           const Eigen::Isometry3d& X_WE_goal,
-                                          std::stop_token plan_stop,
+                                          std::stop_token round_stop, std::stop_token plan_stop,
                                           WholeBodyPlanResult* result) const {
   const Clock::time_point t_begin = Clock::now();
   const std::vector<FrontEndPath>& paths = result->front_end.paths;
@@ -219,9 +363,10 @@ void WholeBodyPlanner::OptimizeCandidates(const WholeBodyState& start,
   for (int i = 0; i < n; ++i) result->candidates[i].path_index = i;
   const TrajectoryProblem problem{start, X_WE_goal, base_limits_};
 
-  // The stage's stop: the plan's, or the early-termination window after the first success.
+  // The stage's stop: the round's, or the early-termination window after the first success.
+  // A validation that has begun finishes unless the plan (not just the round) must end.
   std::stop_source stage_stop;
-  const std::stop_callback forward(plan_stop, [&stage_stop] { stage_stop.request_stop(); });
+  const std::stop_callback forward(round_stop, [&stage_stop] { stage_stop.request_stop(); });
   StopDeadline window(&stage_stop, Clock::time_point::max());
   std::atomic<int> next{0};
   std::atomic<std::int64_t> first_success_ns{std::numeric_limits<std::int64_t>::max()};
@@ -230,7 +375,7 @@ void WholeBodyPlanner::OptimizeCandidates(const WholeBodyState& start,
       const int i = next.fetch_add(1);
       if (i >= n) return;
       CandidateReport& report = result->candidates[i];
-      RunCandidate(problem, paths[i], stage_stop.get_token(), plan_stop, &report);
+      RunCandidate(back_end, problem, paths[i], stage_stop.get_token(), plan_stop, &report);
       if (report.validated()) {
         const Clock::time_point now = Clock::now();
         std::int64_t expected = std::numeric_limits<std::int64_t>::max();

@@ -5,6 +5,7 @@
 #include <optional>
 #include <stop_token>
 #include <string>
+#include <vector>
 
 #include <Eigen/Geometry>
 
@@ -64,22 +65,34 @@ class WholeBodyPlanner {
 
   const WholeBodyPlannerOptions& options() const { return options_; }
   const BaseLimits& base_limits() const { return base_limits_; }
-  const FrontEnd& front_end() const { return front_end_; }
+  /// The first round's front end (PlanRetryOptions: later rounds differ only in their seeds).
+  const FrontEnd& front_end() const { return *rounds_.front(); }
   const TrajectoryValidator& validator() const { return validator_; }
 
  private:
-  struct Stage;
-  void OptimizeCandidates(const WholeBodyState& start, const Eigen::Isometry3d& X_WE_goal,
+  // One round: the front end of round `round`, then the back end of margin level `level`;
+  // `round_stop` ends the round, `plan_stop` (the plan's) also a validation under way.
+  WholeBodyPlanResult PlanRound(int round, int level, const WholeBodyState& start,
+                                const Eigen::Isometry3d& X_WE_goal,
+                                const std::optional<WholeBodyState>& hint,
+                                std::stop_token round_stop, std::stop_token plan_stop) const;
+  void OptimizeCandidates(const TrajectoryBackEnd& back_end, const WholeBodyState& start,
+                          const Eigen::Isometry3d& X_WE_goal, std::stop_token round_stop,
                           std::stop_token plan_stop, WholeBodyPlanResult* result) const;
-  void RunCandidate(const TrajectoryProblem& problem, const FrontEndPath& path,
-                    std::stop_token stop, std::stop_token plan_stop,
+  void RunCandidate(const TrajectoryBackEnd& back_end, const TrajectoryProblem& problem,
+                    const FrontEndPath& path, std::stop_token stop, std::stop_token plan_stop,
                     CandidateReport* report) const;
+  // The final result's status and reason from its last round.
+  void Conclude(bool time_limit_hit, std::stop_token stop, const WholeBodyState& start,
+                const Eigen::Isometry3d& X_WE_goal, WholeBodyPlanResult* result) const;
 
   WholeBodyPlannerOptions options_;
   BaseLimits base_limits_;
-  TrajectoryValidator validator_;  // before front_end_, which uses its exact checker
-  FrontEnd front_end_;
-  std::unique_ptr<const TrajectoryBackEnd> back_end_;
+  TrajectoryValidator validator_;  // before the front ends, which use its exact checker
+  /// Round r's front end (seeds derived from r; PlanRetryOptions).
+  std::vector<std::unique_ptr<const FrontEnd>> rounds_;
+  /// Back end at margin level k: clearance margins + k x retry.clearance_step_m.
+  std::vector<std::unique_ptr<const TrajectoryBackEnd>> back_ends_;
 };
 
 /// "time limit 3.000 s reached during <stage>: ", the prefix of a kTimeLimit plan's reason.

@@ -18,6 +18,12 @@ void CheckWholeBodyPlannerOptions(const WholeBodyPlannerOptions& o) {
   require(o.num_threads >= 0, "num_threads", ">= 0 (0: all cores)");
   require(o.time_limit_s > 0.0, "time_limit_s", "> 0 (+infinity: no limit)");
   require(o.max_candidates >= 1, "max_candidates", ">= 1");
+  require(o.retry.max_rounds >= 1, "retry.max_rounds", ">= 1 (1: no retry)");
+  require(o.retry.min_time_left_s >= 0.0, "retry.min_time_left_s", ">= 0");
+  require(o.retry.clearance_step_m >= 0.0 && std::isfinite(o.retry.clearance_step_m),
+          "retry.clearance_step_m", "finite and >= 0");
+  require(o.retry.round_time_share > 0.0 && o.retry.round_time_share <= 1.0,
+          "retry.round_time_share", "in (0, 1]");
 }
 
 }  // namespace topay

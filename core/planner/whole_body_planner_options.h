@@ -9,6 +9,30 @@
 
 namespace topay {
 
+/// Further planning rounds after a round that ends without a validated trajectory (ours: the
+/// paper plans once per call). Round r > 0 runs the front end again with seeds derived from r
+/// (other IK restarts and base poses, other PRM samples and arm RRT* trees, so other paths),
+/// then optimizes and validates as before; after each round in which the validator rejected
+/// an optimizer success, the back end's clearance margins (SamplePenaltyOptions::
+/// base_field_margin_m, arm_field_margin_m) grow by clearance_step_m. Every round runs under
+/// the plan's one time limit, so a retry only ever uses time the plan had left. Retried:
+/// no goal, no base path, no arm path, no validated trajectory; never an invalid input, a
+/// refused start, a cancelled plan or one the time limit ended.
+struct PlanRetryOptions {
+  /// Rounds in all, the first included (1: plan once, as the paper). >= 1.
+  int max_rounds = 3;
+  /// A further round starts only with at least this much (s) of the time limit left. >= 0.
+  double min_time_left_s = 0.3;
+  /// Added to the back end's clearance margins (m) per earlier round with a validator
+  /// rejection. >= 0.
+  double clearance_step_m = 0.005;
+  /// A round that may be followed by another ends, at the latest, when it has used this share
+  /// of the time left when it began (with a 3 s limit: 1.8 s, then 0.72 s, then the rest);
+  /// the last round may use all that is left. An optimizer that has not converged in that
+  /// time seldom does later, and another path often converges at once. In (0, 1].
+  double round_time_share = 0.6;
+};
+
 /// Options of WholeBodyPlanner (paper Sec. III), Ceres style.
 struct WholeBodyPlannerOptions {
   /// Path acquisition (core/planning/front_end_options.h). Its base_limits are overwritten by
@@ -43,6 +67,8 @@ struct WholeBodyPlannerOptions {
   double time_limit_s = 3.0;
   /// At most this many front-end paths are optimized (shortest duration first).
   int max_candidates = 8;
+  /// Further rounds after a round without a validated trajectory.
+  PlanRetryOptions retry;
 };
 
 /// Throws std::invalid_argument naming the first option (of the planner's own) out of range.

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 #include <stdexcept>
+#include <string>
 #include <vector>
 
 #include "core/geometry/oriented_box.h"
@@ -141,25 +142,34 @@ std::vector<std::uint8_t> AllowedCells(const Scene& scene, const Kinematics& kin
   return allowed;
 }
 
-}  // namespace
-
-BaseReachability CertifyBaseEnclosed(const Scene& scene, const Kinematics& kinematics,
-                                     const Eigen::Vector2d& p_WB_m, double window_m,
-                                     const BaseReachabilityOptions& options) {
-  if (!p_WB_m.allFinite() || !(window_m > 0.0) || !std::isfinite(window_m) ||
-      !(options.resolution_m > 0.0)) {
-    throw std::invalid_argument(
-        "CertifyBaseEnclosed: need a finite position, window_m > 0 and resolution_m > 0");
-  }
-  // The window's cells are cells of CertifyBaseUnreachable's grid (from the scene bounds'
-  // minimum corner), so both tests see the same allowed cells.
-  const double res = options.resolution_m;
+// The grid of a window of half side window_m around p_WB_m: cells of CertifyBaseUnreachable's
+// grid (from the scene bounds' minimum corner), so every test sees the same cells.
+GridGeometry2 WindowGrid(const Scene& scene, const Eigen::Vector2d& p_WB_m, double window_m,
+                         double res) {
   const Eigen::Vector2d origin = scene.bounds_W_m.min().head<2>();
   const Eigen::Vector2d lo =
       origin + res * ((p_WB_m.array() - window_m - origin.array()) / res).floor().matrix();
   const Eigen::Vector2d hi =
       origin + res * ((p_WB_m.array() + window_m - origin.array()) / res).ceil().matrix();
-  const GridGeometry2 g = GridGeometry2::FromBounds(Eigen::AlignedBox2d(lo, hi), res);
+  return GridGeometry2::FromBounds(Eigen::AlignedBox2d(lo, hi), res);
+}
+
+void CheckWindowInputs(const char* name, const Eigen::Vector2d& p_WB_m, double window_m,
+                       const BaseReachabilityOptions& options) {
+  if (!p_WB_m.allFinite() || !(window_m > 0.0) || !std::isfinite(window_m) ||
+      !(options.resolution_m > 0.0)) {
+    throw std::invalid_argument(std::string(name) +
+                                ": need a finite position, window_m > 0 and resolution_m > 0");
+  }
+}
+
+}  // namespace
+
+BaseReachability CertifyBaseEnclosed(const Scene& scene, const Kinematics& kinematics,
+                                     const Eigen::Vector2d& p_WB_m, double window_m,
+                                     const BaseReachabilityOptions& options) {
+  CheckWindowInputs("CertifyBaseEnclosed", p_WB_m, window_m, options);
+  const GridGeometry2 g = WindowGrid(scene, p_WB_m, window_m, options.resolution_m);
   const double slack = options.resolution_m / std::sqrt(2.0);
   const std::vector<std::uint8_t> allowed = AllowedCells(scene, kinematics, g, slack);
   const Eigen::Vector2i cell = g.CellOf(p_WB_m);
@@ -176,6 +186,48 @@ BaseReachability CertifyBaseEnclosed(const Scene& scene, const Kinematics& kinem
                    ? "shut in a pocket of " + std::to_string(out.component_cells) +
                          " cells inside the window"
                    : "the base can leave the window";
+  return out;
+}
+
+BaseReachability CertifyBaseOpen(const Scene& scene, const Kinematics& kinematics,
+                                 const Eigen::Vector2d& p_WB_m, double window_m,
+                                 const BaseOpennessOptions& openness,
+                                 const BaseReachabilityOptions& options) {
+  CheckWindowInputs("CertifyBaseOpen", p_WB_m, window_m, options);
+  if (!(openness.clearance_m >= 0.0) || !std::isfinite(openness.clearance_m) ||
+      !(openness.approach_radius_m >= 0.0) || !std::isfinite(openness.approach_radius_m)) {
+    throw std::invalid_argument(
+        "CertifyBaseOpen: clearance_m and approach_radius_m must be finite and >= 0");
+  }
+  const GridGeometry2 g = WindowGrid(scene, p_WB_m, window_m, options.resolution_m);
+  const double half_diagonal = options.resolution_m / std::sqrt(2.0);
+  // Every point of a cell whose centre keeps need + clearance + half a diagonal keeps
+  // need + clearance (each footprint distance is 1-Lipschitz); near the position itself, the
+  // lenient cells of CertifyBaseEnclosed.
+  std::vector<std::uint8_t> allowed =
+      AllowedCells(scene, kinematics, g, -(openness.clearance_m + half_diagonal));
+  const std::vector<std::uint8_t> lenient = AllowedCells(scene, kinematics, g, half_diagonal);
+  for (int iy = 0; iy < g.dims.y(); ++iy) {
+    for (int ix = 0; ix < g.dims.x(); ++ix) {
+      if ((g.CellCenter(ix, iy) - p_WB_m).norm() <= openness.approach_radius_m) {
+        allowed[g.Index(ix, iy)] = lenient[g.Index(ix, iy)];
+      }
+    }
+  }
+  const Eigen::Vector2i cell = g.CellOf(p_WB_m);
+  BaseReachability out;
+  out.certified_unreachable = true;  // here: "not proven open"
+  if (allowed[g.Index(cell.x(), cell.y())] == 0) {
+    out.reason = "the position is not allowed (the rigid lower body is in collision)";
+    return out;
+  }
+  const std::vector<std::uint8_t> reached = FloodFill(g, allowed, cell);
+  for (std::uint8_t r : reached) out.component_cells += r;
+  out.certified_unreachable = !ReachesOutside(g, reached);
+  out.reason = out.certified_unreachable
+                   ? "no way out of the window with the clearance (" +
+                         std::to_string(out.component_cells) + " cells reached)"
+                   : "the base can leave the window with the clearance";
   return out;
 }
 

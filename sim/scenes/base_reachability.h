@@ -65,6 +65,32 @@ BaseReachability CertifyBaseEnclosed(const Scene& scene, const Kinematics& kinem
                                      const Eigen::Vector2d& p_WB_m, double window_m,
                                      const BaseReachabilityOptions& options = {});
 
+/// Options of CertifyBaseOpen.
+struct BaseOpennessOptions {
+  /// Extra clearance (m) every needed footprint distance must keep along the way out (the
+  /// base cylinder's radius, each rigid sphere's bound): a passage only this much wider
+  /// than the robot counts. >= 0.
+  double clearance_m = 0.01;
+  /// Within this distance (m) of the position the way out only needs CertifyBaseEnclosed's
+  /// lenient cells (the last stretch into a tight spot). >= 0.
+  double approach_radius_m = 0.1;
+};
+
+/// The converse of CertifyBaseEnclosed, a proof that the base at p_WB_m can leave the square
+/// of half side window_m around it: certified_unreachable is false only if a chain of
+/// 8-neighbouring cells joins the position's cell to the window's border such that every
+/// point of every cell keeps each needed footprint distance + openness.clearance_m (a cell
+/// centre keeps it + resolution / sqrt(2)), except within approach_radius_m of the position,
+/// where CertifyBaseEnclosed's cells are taken. The rigid spheres count with their best
+/// yaw, as in CertifyBaseEnclosed. For task generators: an end it does not prove open lies in
+/// a pocket, or behind a passage within a centimetre of the base's width, that no robot
+/// would be driven through. Throws std::invalid_argument for a non-finite position,
+/// window_m <= 0, resolution_m <= 0 or openness values out of range.
+BaseReachability CertifyBaseOpen(const Scene& scene, const Kinematics& kinematics,
+                                 const Eigen::Vector2d& p_WB_m, double window_m,
+                                 const BaseOpennessOptions& openness = {},
+                                 const BaseReachabilityOptions& options = {});
+
 /// The same test for an end-effector target, whatever goal base pose a planner chooses: the
 /// goal disc is centred at the target's wrist centre W (WholeBodyIk::p_EW) with radius
 /// |p_BS| + the shoulder-to-wrist reach (triangle-inequality bounds, WholeBodyIk), which

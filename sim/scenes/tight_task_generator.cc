@@ -30,6 +30,10 @@ void CheckTightOptions(const TaskGeneratorOptions& o) {
           "tight_base_spread_m", "must be finite and >= 0");
   Require(std::isfinite(o.tight_pocket_window_m) && o.tight_pocket_window_m >= 0.0,
           "tight_pocket_window_m", "must be finite and >= 0");
+  Require(std::isfinite(o.tight_passage_clearance_m) && o.tight_passage_clearance_m >= 0.0,
+          "tight_passage_clearance_m", "must be finite and >= 0");
+  Require(std::isfinite(o.tight_approach_radius_m) && o.tight_approach_radius_m >= 0.0,
+          "tight_approach_radius_m", "must be finite and >= 0");
   Require(o.tight_arm_tries > 0 && o.max_tight_base_tries > 0 && o.max_tight_pair_tries > 0,
           "tight_arm_tries/max_tight_base_tries/max_tight_pair_tries", "must be positive");
   Require(o.table_goal_fraction >= 0.0 && o.table_goal_fraction <= 1.0, "table_goal_fraction",
@@ -151,11 +155,15 @@ class TightEndSampler {
     return checker_.BaseClearance(p_WB, margin) > margin;
   }
 
-  // The base of `state` cannot leave the pocket window (CertifyBaseEnclosed).
+  // The base of `state` is not proven able to leave the pocket window with the passage
+  // clearance (CertifyBaseOpen).
   bool InPocket(const WholeBodyState& state) const {
     if (options_.tight_pocket_window_m == 0.0) return false;
-    return CertifyBaseEnclosed(scene_, kinematics_, Eigen::Vector2d(state.x_m, state.y_m),
-                               options_.tight_pocket_window_m)
+    BaseOpennessOptions openness;
+    openness.clearance_m = options_.tight_passage_clearance_m;
+    openness.approach_radius_m = options_.tight_approach_radius_m;
+    return CertifyBaseOpen(scene_, kinematics_, Eigen::Vector2d(state.x_m, state.y_m),
+                           options_.tight_pocket_window_m, openness)
         .certified_unreachable;
   }
 

@@ -40,8 +40,9 @@ bool GoalKindHolds(TightGoalKind kind, const OrientedBox& table_top, const Eigen
 ///     uniform over the anchor's footprint grown by the base radius + tight_base_spread_m,
 ///     inside the base region with the base cylinder clear, yaw uniform in [-pi, pi); at each,
 ///     up to tight_arm_tries arm configurations uniform within the joint limits, the first
-///     that is clear and tight is taken, unless the base is shut in a pocket
-///     (tight_pocket_window_m, CertifyBaseEnclosed: then the next base pose; a region shut
+///     that is clear and tight is taken, unless the base is not proven able to leave the
+///     square of half side tight_pocket_window_m around it with tight_passage_clearance_m to
+///     spare (CertifyBaseOpen: then the next base pose; a region shut
 ///     off on a larger scale is not excluded, as in the open protocol: topay-bench's
 ///     base_unreachable certificate reports such tasks);
 ///  3. the goal likewise, its anchor among the boxes whose grown footprint meets the range's

@@ -21,6 +21,7 @@ void FillOutcome(const WholeBodyPlanResult& plan, double time_limit_ms, BenchRec
   r->num_paths = static_cast<int>(plan.front_end.paths.size());
   r->num_classes = plan.front_end.stats.num_classes_kept;
   r->num_base_paths = plan.front_end.stats.num_base_paths;
+  r->plan_rounds = plan.rounds;
   if (const CandidateReport* chosen = plan.chosen_candidate();
       chosen != nullptr && chosen->validation) {
     r->validation = plan::FiguresOf(*chosen->validation);

@@ -66,6 +66,7 @@ struct BenchRecord {
   int num_paths = 0;       ///< Whole-body paths of the front end.
   int num_classes = 0;     ///< Topological classes kept (PRM paths after pruning).
   int num_base_paths = 0;  ///< Base paths, JPS included.
+  int plan_rounds = 1;     ///< Planning rounds run (WholeBodyPlanResult::rounds).
   /// The validator's figures of the chosen trajectory (unset: none).
   std::optional<plan::TrajectoryValidationFigures> validation;
   /// The optimizer's work on the chosen trajectory (unset: none).

@@ -89,6 +89,7 @@ nlohmann::ordered_json RecordToJson(const BenchRecord& r) {
   json["num_paths"] = r.num_paths;
   json["num_classes"] = r.num_classes;
   json["num_base_paths"] = r.num_base_paths;
+  json["plan_rounds"] = r.plan_rounds;
   json["validation"] = ValidationJson(r.validation);
   json["optimizer"] = OptimizerJson(r.optimizer);
   return json;

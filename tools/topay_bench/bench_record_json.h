@@ -17,7 +17,7 @@ namespace topay::bench {
 //   "success", "status", "failure_reason", "failure_category" (FailureCategoryName),
 //   "timings_ms": {"search", "sampling", "front_end", "optimization", "wait", "total"},
 //   "map_ms", "duration_s" (null without a trajectory),
-//   "num_candidates", "num_paths", "num_classes", "num_base_paths",
+//   "num_candidates", "num_paths", "num_classes", "num_base_paths", "plan_rounds",
 //   "validation": {"ok", "min_clearance_m", "min_clearance_part", "min_self_clearance_m",
 //                  "worst_limit_ratio", "worst_limit", "worst_limit_t_s",
 //                  "end_position_error_m", "end_orientation_error_rad"} or null.

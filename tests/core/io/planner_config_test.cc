@@ -22,6 +22,9 @@ TEST(PlannerConfigTest, ShippedFileLoadsAndRestatesTheDefaults) {
   EXPECT_EQ(loaded.sequential, d.sequential);
   EXPECT_EQ(loaded.time_limit_s, d.time_limit_s);
   EXPECT_EQ(loaded.max_candidates, d.max_candidates);
+  EXPECT_EQ(loaded.retry.max_rounds, d.retry.max_rounds);
+  EXPECT_EQ(loaded.retry.min_time_left_s, d.retry.min_time_left_s);
+  EXPECT_EQ(loaded.retry.clearance_step_m, d.retry.clearance_step_m);
   EXPECT_FALSE(loaded.base_limits.has_value());
   const FrontEndOptions& f = loaded.front_end;
   EXPECT_EQ(f.max_goal_attempts, d.front_end.max_goal_attempts);
@@ -64,6 +67,7 @@ TEST(PlannerConfigTest, FieldsOverrideDefaults) {
 planner:
   sequential: true
   time_limit_s: .inf
+  retry: {max_rounds: 1, min_time_left_s: 0.5}
   base_limits: {omega_max_radps: 1.25}
 front_end:
   seed: 42
@@ -73,6 +77,9 @@ validator: {sample_period_s: 0.005}
 )", "inline");
   EXPECT_TRUE(o.sequential);
   EXPECT_TRUE(std::isinf(o.time_limit_s));
+  EXPECT_EQ(o.retry.max_rounds, 1);
+  EXPECT_EQ(o.retry.min_time_left_s, 0.5);
+  EXPECT_EQ(o.retry.clearance_step_m, PlanRetryOptions{}.clearance_step_m);
   ASSERT_TRUE(o.base_limits.has_value());
   EXPECT_EQ(o.base_limits->omega_max_radps, 1.25);
   EXPECT_EQ(o.base_limits->v_max_mps, BaseLimits{}.v_max_mps);
@@ -97,6 +104,9 @@ TEST(PlannerConfigTest, BadValuesNameTheField) {
       {"planner: {time_limit_s: .nan}", "planner.time_limit_s"},
       {"planner: {time_limit_s: [1, 2]}", "planner.time_limit_s"},
       {"planner: {base_limits: {omega: 1}}", "planner.base_limits.omega"},
+      {"planner: {retry: {rounds: 2}}", "planner.retry.rounds"},
+      {"planner: {retry: {max_rounds: 0}}", "planner.retry.max_rounds"},
+      {"planner: {retry: {clearance_step_m: -0.1}}", "planner.retry.clearance_step_m"},
       {"plnner: {}", "plnner"},
       {"front_end: 3", "front_end"},
   };

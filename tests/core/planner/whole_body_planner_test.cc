@@ -208,6 +208,93 @@ TEST_F(WholeBodyPlannerTest, StopBeforeTheStartCancels) {
   EXPECT_FALSE(result.trajectory.has_value());
 }
 
+// Retry rounds (PlanRetryOptions): a round without a validated trajectory is followed by
+// another with other seeds, up to max_rounds, and the reason lists the earlier rounds. Here
+// the target lies inside a walled enclosure the base cannot enter: every round finds goal
+// states only inside it, and no base path.
+TEST_F(WholeBodyPlannerTest, ARoundWithoutBasePathIsRetriedUpToMaxRounds) {
+  Scene walled = PillarRoom();
+  const Eigen::Vector3d c(3.0, -3.0, 0.75);  // a 2.4 m square of 1.5 m walls around (3, -3)
+  walled.boxes.push_back(MakeBox(c + Eigen::Vector3d(1.2, 0, 0), Eigen::Vector3d(0.1, 2.5, 1.5)));
+  walled.boxes.push_back(MakeBox(c - Eigen::Vector3d(1.2, 0, 0), Eigen::Vector3d(0.1, 2.5, 1.5)));
+  walled.boxes.push_back(MakeBox(c + Eigen::Vector3d(0, 1.2, 0), Eigen::Vector3d(2.5, 0.1, 1.5)));
+  walled.boxes.push_back(MakeBox(c - Eigen::Vector3d(0, 1.2, 0), Eigen::Vector3d(2.5, 0.1, 1.5)));
+  const SceneDistanceFields fields =
+      BuildSceneDistanceFields(walled, PlannerFieldOptions(kinematics_));
+  WholeBodyPlannerOptions options = Options();
+  options.retry.min_time_left_s = 0.0;
+  const WholeBodyPlanner planner(kinematics_, fields.base_field_2d, fields.field_3d, walled,
+                                 options);
+  // The end effector of the robot standing at the enclosure's centre.
+  const Eigen::Isometry3d X_WE = kinematics_.EndEffectorPose(State(3.0, -3.0, 0.0));
+  const WholeBodyPlanResult result = planner.Plan(State(-3.0, 0.0, 0.0), X_WE);
+  std::cout << result.Report();
+  EXPECT_EQ(result.status, PlanStatus::kFrontEndFailed);
+  EXPECT_EQ(result.front_end.status, FrontEndStatus::kNoBasePath);
+  EXPECT_EQ(result.rounds, 3);
+  EXPECT_EQ(result.margin_level, 0);  // no validator rejection
+  EXPECT_NE(result.failure_reason.find("(after 3 rounds; round 1: no_base_path; round 2: "
+                                       "no_base_path)"),
+            std::string::npos)
+      << result.failure_reason;
+
+  options.retry.max_rounds = 1;  // the paper: one round
+  const WholeBodyPlanner once(kinematics_, fields.base_field_2d, fields.field_3d, walled,
+                              options);
+  const WholeBodyPlanResult single = once.Plan(State(-3.0, 0.0, 0.0), X_WE);
+  EXPECT_EQ(single.front_end.status, FrontEndStatus::kNoBasePath);
+  EXPECT_EQ(single.rounds, 1);
+  EXPECT_EQ(single.failure_reason.find("rounds"), std::string::npos) << single.failure_reason;
+
+  options.retry.max_rounds = 3;
+  options.retry.min_time_left_s = 1e6;  // more than the time limit: no time for a retry
+  const WholeBodyPlanner hurried(kinematics_, fields.base_field_2d, fields.field_3d, walled,
+                                 options);
+  EXPECT_EQ(hurried.Plan(State(-3.0, 0.0, 0.0), X_WE).rounds, 1);
+}
+
+// After a validator rejection the next round's back end has wider clearance margins.
+TEST_F(WholeBodyPlannerTest, AValidatorRejectionRaisesTheNextRoundsMargins) {
+  WholeBodyPlannerOptions options = Options();
+  options.validator.ee_position_tolerance_m = 1e-9;  // every optimizer success is rejected
+  options.retry.min_time_left_s = 0.0;
+  options.retry.max_rounds = 2;
+  const WholeBodyPlanner planner(kinematics_, fields_.base_field_2d, fields_.field_3d, scene_,
+                                 options);
+  const WholeBodyState goal = State(3.0, 0.5, 1.0);
+  const WholeBodyPlanResult result =
+      planner.Plan(State(-3.0, 0.0, 0.0), kinematics_.EndEffectorPose(goal), goal);
+  std::cout << result.Report();
+  EXPECT_EQ(result.status, PlanStatus::kOptimizationFailed);
+  EXPECT_EQ(result.rounds, 2);
+  EXPECT_EQ(result.margin_level, 1);
+  EXPECT_NE(result.failure_reason.find("round 1: "), std::string::npos) << result.failure_reason;
+  EXPECT_NE(result.failure_reason.find("rejected by the validator"), std::string::npos)
+      << result.failure_reason;
+}
+
+// No further round after a failure no seed can change (a start in collision, a target
+// inside a box).
+TEST_F(WholeBodyPlannerTest, NoRetryForABadStartOrAHopelessTarget) {
+  WholeBodyPlannerOptions options = Options();
+  options.retry.min_time_left_s = 0.0;
+  const WholeBodyPlanner retrying(kinematics_, fields_.base_field_2d, fields_.field_3d, scene_,
+                                  options);
+  const WholeBodyState goal = State(3.0, 0.5, 1.0);
+  const Eigen::Isometry3d X_WE = kinematics_.EndEffectorPose(goal);
+  const WholeBodyPlanResult in_pillar = retrying.Plan(State(0.7, 0.0, 0.0), X_WE, goal);
+  EXPECT_EQ(in_pillar.front_end.status, FrontEndStatus::kStartInvalid);
+  EXPECT_EQ(in_pillar.rounds, 1);
+  // A target inside a box: no seed finds a goal there.
+  Eigen::Isometry3d inside = X_WE;
+  inside.translation() << 0.0, 0.0, 0.8;
+  const WholeBodyPlanResult hopeless = retrying.Plan(State(-3.0, 0.0, 0.0), inside);
+  EXPECT_EQ(hopeless.status, PlanStatus::kFrontEndFailed);
+  EXPECT_EQ(hopeless.rounds, 1) << hopeless.failure_reason;
+  EXPECT_NE(hopeless.failure_reason.find("inside box 0 "), std::string::npos)
+      << hopeless.failure_reason;
+}
+
 TEST_F(WholeBodyPlannerTest, RejectsBadOptionsByName) {
   WholeBodyPlannerOptions options = Options();
   options.max_candidates = 0;
@@ -219,6 +306,18 @@ TEST_F(WholeBodyPlannerTest, RejectsBadOptionsByName) {
   }
   options = Options();
   options.time_limit_s = 0.0;
+  EXPECT_THROW(WholeBodyPlanner(kinematics_, fields_.base_field_2d, fields_.field_3d, scene_, options),
+               std::invalid_argument);
+  options = Options();
+  options.retry.max_rounds = 0;
+  try {
+    WholeBodyPlanner planner(kinematics_, fields_.base_field_2d, fields_.field_3d, scene_, options);
+    FAIL() << "no exception";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("retry.max_rounds"), std::string::npos) << e.what();
+  }
+  options = Options();
+  options.retry.clearance_step_m = std::numeric_limits<double>::quiet_NaN();
   EXPECT_THROW(WholeBodyPlanner(kinematics_, fields_.base_field_2d, fields_.field_3d, scene_, options),
                std::invalid_argument);
 }

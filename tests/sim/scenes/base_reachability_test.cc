@@ -97,6 +97,49 @@ TEST_F(BaseReachabilityTest, APocketInsideTheWindowIsCertifiedEnclosed) {
                std::invalid_argument);
 }
 
+// CertifyBaseOpen proves a way out only through passages with the clearance to spare; a
+// gap within a centimetre of the chassis' width (0.80 m) is neither proven open nor proven
+// shut. (The cell centres nearest the gap's middle are 5 mm off it.)
+TEST_F(BaseReachabilityTest, AWayOutMustKeepThePassageClearance) {
+  const double window_m = 2.5;
+  BaseOpennessOptions openness;  // 1 cm to spare
+  // 0.86 m: 0.43 - 0.005 m from either side >= 0.40 + 0.01 + half a cell diagonal (0.007).
+  EXPECT_FALSE(CertifyBaseOpen(SplitRoom(0.86), kinematics_, kLeft, window_m, openness)
+                   .certified_unreachable);
+  // 0.83 m: 0.41 m is not 0.417 m; the lenient test does not shut it either.
+  const BaseReachability narrow =
+      CertifyBaseOpen(SplitRoom(0.83), kinematics_, kLeft, window_m, openness);
+  EXPECT_TRUE(narrow.certified_unreachable) << narrow.reason;
+  EXPECT_NE(narrow.reason.find("no way out"), std::string::npos) << narrow.reason;
+  EXPECT_FALSE(
+      CertifyBaseEnclosed(SplitRoom(0.83), kinematics_, kLeft, window_m).certified_unreachable);
+  // Without spare clearance it is enough (0.41 m >= 0.407 m).
+  openness.clearance_m = 0.0;
+  EXPECT_FALSE(CertifyBaseOpen(SplitRoom(0.83), kinematics_, kLeft, window_m, openness)
+                   .certified_unreachable);
+  // A shut pocket is never proven open.
+  EXPECT_TRUE(CertifyBaseOpen(SplitRoom(0.70), kinematics_, kLeft, window_m, openness)
+                  .certified_unreachable);
+}
+
+// A base 3 mm from a wall leaves through the lenient cells of its approach radius; without
+// that radius its own cell keeps less than the clearance and nothing is proven.
+TEST_F(BaseReachabilityTest, ATightEndLeavesThroughItsApproach) {
+  const Eigen::Vector2d p_tight(-2.9 + 0.40 + 0.003, 0.3);  // the left wall's face is x = -2.9
+  BaseOpennessOptions openness;
+  EXPECT_FALSE(CertifyBaseOpen(SplitRoom(0.86), kinematics_, p_tight, 2.5, openness)
+                   .certified_unreachable);
+  openness.approach_radius_m = 0.0;
+  const BaseReachability stuck =
+      CertifyBaseOpen(SplitRoom(0.86), kinematics_, p_tight, 2.5, openness);
+  EXPECT_TRUE(stuck.certified_unreachable);
+  EXPECT_NE(stuck.reason.find("not allowed"), std::string::npos) << stuck.reason;
+  openness.clearance_m = -0.01;
+  EXPECT_THROW(CertifyBaseOpen(SplitRoom(0.86), kinematics_, kLeft, 2.5, openness),
+               std::invalid_argument);
+  EXPECT_THROW(CertifyBaseOpen(SplitRoom(0.86), kinematics_, kLeft, 0.0), std::invalid_argument);
+}
+
 TEST_F(BaseReachabilityTest, AGoalDiscReachingTheStartsSideIsNotExcluded) {
   // Left cells end at x = -(0.40 - 0.01 / sqrt 2 + 0.05) ~ -0.44 m; kRight is at x = 1.5.
   BaseReachabilityOptions o;

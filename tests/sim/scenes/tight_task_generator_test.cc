@@ -61,9 +61,16 @@ class TightTaskGeneratorTest : public ::testing::Test {
       EXPECT_GE(cache.p_WS[s].z() - model_.spheres[s].radius_m, 0.0) << "sphere " << s;
     }
     EXPECT_TRUE(scene.bounds_W_m.contains(cache.X_WE.translation()));
-    // Not shut in a pocket the robot could not have driven into.
-    EXPECT_FALSE(CertifyBaseEnclosed(scene, kinematics_, Eigen::Vector2d(state.x_m, state.y_m),
-                                     options.tight_pocket_window_m)
+    // Not shut in a pocket the robot could not have driven into, nor behind a gap within
+    // the passage clearance of the base's width: proven able to leave the window.
+    BaseOpennessOptions openness;
+    openness.clearance_m = options.tight_passage_clearance_m;
+    openness.approach_radius_m = options.tight_approach_radius_m;
+    const Eigen::Vector2d p_WB(state.x_m, state.y_m);
+    EXPECT_FALSE(CertifyBaseOpen(scene, kinematics_, p_WB, options.tight_pocket_window_m,
+                                 openness)
+                     .certified_unreachable);
+    EXPECT_FALSE(CertifyBaseEnclosed(scene, kinematics_, p_WB, options.tight_pocket_window_m)
                      .certified_unreachable);
   }
 

@@ -44,6 +44,7 @@ BenchRecord HandRecord() {
   r.num_paths = 2;
   r.num_classes = 3;
   r.num_base_paths = 4;
+  r.plan_rounds = 2;
   plan::TrajectoryValidationFigures v;
   v.ok = true;
   v.min_clearance_m = 0.05;
@@ -131,6 +132,7 @@ TEST(BenchRecordJsonTest, TimingsAreUnderOneKeyAndFiguresAreThere) {
   EXPECT_EQ(j["num_paths"], 2);
   EXPECT_EQ(j["num_classes"], 3);
   EXPECT_EQ(j["num_base_paths"], 4);
+  EXPECT_EQ(j["plan_rounds"], 2);
   const nlohmann::json& v = j["validation"];
   EXPECT_EQ(v["ok"], true);
   EXPECT_EQ(v["min_clearance_m"], 0.05);
@@ -141,7 +143,7 @@ TEST(BenchRecordJsonTest, TimingsAreUnderOneKeyAndFiguresAreThere) {
   // No other key holds a wall-clock figure: the top-level keys are exactly these.
   std::vector<std::string> keys;
   for (auto it = j.begin(); it != j.end(); ++it) keys.push_back(it.key());
-  EXPECT_EQ(keys.size(), 28u);
+  EXPECT_EQ(keys.size(), 29u);
 }
 
 TEST(BenchRecordJsonTest, AFailureHasNullDurationAndValidation) {
