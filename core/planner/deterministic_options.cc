@@ -24,6 +24,10 @@ void MakeDeterministic(WholeBodyPlannerOptions* options, const DeterministicBudg
   // finite for the flatness baseline's check, hence the cap).
   constexpr double kLongestOptimizationS = 1e6;
   options->optimizer.time_limit_s = std::min(options->time_limit_s, kLongestOptimizationS);
+  // Retry rounds (PlanRetryOptions) are not cut by a share of the wall-clock time left, and
+  // start whatever time is left: a round ends at the same iteration on every machine.
+  options->retry.round_time_share = 1.0;
+  options->retry.min_time_left_s = 0.0;
 }
 
 }  // namespace topay

@@ -23,7 +23,9 @@ struct DeterministicBudgets {
 ///  - the back end stops at the first validated trajectory (an early-termination window of 0:
 ///    with one worker, no other candidate has started by then).
 ///  - each candidate's optimization is bounded by its iteration caps: its own wall-clock
-///    limit is raised to the plan's (a loaded machine would reach it at another iteration).
+///    limit is raised to the plan's (a loaded machine would reach it at another iteration);
+///  - retry rounds (PlanRetryOptions) are not cut by a share of the time left and start
+///    whatever time is left.
 /// The outer bound stays, as safety: the plan's time_limit_s. A plan that reaches it is a
 /// failure that may not repeat exactly.
 void MakeDeterministic(WholeBodyPlannerOptions* options, const DeterministicBudgets& budgets = {});

@@ -35,6 +35,11 @@ namespace topay {
 ///     validated success
 ///     the others get early_termination_window_s, then they are cancelled; the shortest
 ///     validated trajectory wins. options.sequential: one after another, no early stop.
+///  3. Retry rounds (options.retry, ours): a round that ends without a validated trajectory
+///     (no goal, no base or arm path, no optimizer success the validator accepts) is followed
+///     by another with other seeds, and after a validator rejection with wider clearance
+///     margins, while the time limit leaves room; a round that may be followed by another
+///     uses at most a share of the time left.
 /// A success is only ever a trajectory the validator accepted.
 ///
 /// The kinematics and the fields must outlive this object; the scene is copied (by the

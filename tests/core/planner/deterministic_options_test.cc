@@ -33,6 +33,8 @@ TEST(MakeDeterministicTest, ReplacesEveryWallClockBudgetByWork) {
   EXPECT_TRUE(std::isinf(options.front_end.improvement_window_s));
   EXPECT_TRUE(std::isinf(options.front_end.acquisition_budget_s));
   EXPECT_EQ(options.optimizer.time_limit_s, options.time_limit_s);  // only the plan's bound
+  EXPECT_EQ(options.retry.round_time_share, 1.0);  // rounds not cut by their share of time
+  EXPECT_EQ(options.retry.min_time_left_s, 0.0);
   EXPECT_NO_THROW(CheckWholeBodyPlannerOptions(options));
 }
 
