@@ -156,7 +156,8 @@ GraphSpec LoadGraph(const std::string& path) {
     throw GraphError(path + ":" + std::to_string(e.mark.line + 1) + ": YAML: " + e.msg);
   }
   const Where where{path, ""};
-  CheckKeys(root, {"name", "isolated", "lcm_url", "grace_period_s", "run_root", "processes"},
+  CheckKeys(root, {"name", "isolated", "lcm_url", "grace_period_s", "heartbeat_period_s", "run_root",
+                   "processes"},
             where);
   GraphSpec graph;
   graph.file = path;
@@ -165,6 +166,7 @@ GraphSpec LoadGraph(const std::string& path) {
   Read(root, "isolated", where, &graph.isolated);
   Read(root, "lcm_url", where, &graph.lcm_url);
   ReadRange(root, "grace_period_s", where, 0.0, &graph.grace_period_s);
+  ReadRange(root, "heartbeat_period_s", where, 0.01, &graph.heartbeat_period_s);
   Read(root, "run_root", where, &graph.run_root);
   const YAML::Node list = root["processes"];
   if (!list.IsSequence() || list.size() == 0) {

@@ -42,7 +42,9 @@ struct ProcessSpec {
   double restart_delay_max_s = 5.0;   ///< cap of the exponential backoff
   int max_restarts = -1;              ///< -1: unlimited
   bool heartbeat = true;              ///< supervised by HEARTBEAT (false: ready once started)
-  double heartbeat_timeout_s = 1.0;   ///< silence after which it is reported and restarted
+  /// How late a heartbeat may be: the process is reported silent and restarted after
+  /// heartbeat_period_s + heartbeat_timeout_s without one (default 1 s late, i.e. 2 s silent).
+  double heartbeat_timeout_s = 1.0;
   double startup_timeout_s = 5.0;     ///< time allowed to the first heartbeat
   std::string group;                  ///< label (status table; --group selects)
   std::vector<std::string> publishes; ///< channels it publishes (left out of a replay)
@@ -55,6 +57,7 @@ struct GraphSpec {
   bool isolated = false;       ///< default of --isolated: a private network namespace
   std::string lcm_url;         ///< LCM_DEFAULT_URL for the children (empty: inherited)
   double grace_period_s = 3.0; ///< SIGTERM -> SIGKILL on stop, s
+  double heartbeat_period_s = 1.0;  ///< the processes' heartbeat period (the stack's 1 Hz), s
   std::string run_root = "out/runs";   ///< run folders are <run_root>/<date-time>/
   std::vector<ProcessSpec> processes;  ///< in start order (dependencies first)
 };

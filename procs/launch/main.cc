@@ -25,7 +25,8 @@ namespace {
 
 struct Flags {
   std::string graph_file;
-  std::optional<bool> isolated;
+  bool isolated = false;
+  bool not_isolated = false;
   bool dry_run = false;
   bool plain = false;
   std::string run_dir;
@@ -46,8 +47,9 @@ std::string NewRunDir(const std::string& root) {
 
 void AddFlags(CLI::App& app, Flags& f) {
   app.add_option("graph", f.graph_file, "graph file (config/graphs/*.yaml)")->required();
-  app.add_flag("--isolated,!--no-isolated", f.isolated,
-               "run in a private network namespace (default: the graph's `isolated`)");
+  auto* isolated = app.add_flag("--isolated", f.isolated,
+                                "run in a private network namespace (default: the graph's `isolated`)");
+  app.add_flag("--no-isolated", f.not_isolated, "run in the current network namespace")->excludes(isolated);
   app.add_flag("--dry-run", f.dry_run, "print the resolved plan and exit");
   app.add_flag("--plain", f.plain, "no colours or live table even on a terminal");
   app.add_option("--run-dir", f.run_dir, "run folder (default: <run_root>/<date-time>)");
@@ -97,7 +99,7 @@ int main(int argc, char** argv) {
     std::cerr << "topay-launch: " << e.what() << "\n";
     return procs::kExitConfigError;
   }
-  const bool isolated = f.isolated.value_or(graph.isolated);
+  const bool isolated = f.isolated || (graph.isolated && !f.not_isolated);
   if (f.dry_run) {
     std::cout << launch::DescribePlan(graph, isolated, run_dir);
     return procs::kExitOk;

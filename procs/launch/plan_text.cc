@@ -46,7 +46,11 @@ std::string DescribePlan(const GraphSpec& graph, bool isolated, const std::strin
           << (p.max_restarts < 0 ? ", unlimited" : ", at most " + std::to_string(p.max_restarts));
     }
     out << "\n    heartbeat: ";
-    if (p.heartbeat) out << "timeout " << p.heartbeat_timeout_s << " s, first within " << p.startup_timeout_s << " s\n";
+    if (p.heartbeat) {
+      out << "silent after " << graph.heartbeat_period_s + p.heartbeat_timeout_s << " s without one (period "
+          << graph.heartbeat_period_s << " s + timeout " << p.heartbeat_timeout_s << " s), first within "
+          << p.startup_timeout_s << " s\n";
+    }
     else out << "not monitored (ready once started)\n";
     if (!p.publishes.empty()) out << "    publishes: " << Join(p.publishes, ", ") << "\n";
     DescribeRealtime(p.realtime, out);

@@ -228,7 +228,7 @@ void Supervisor::Supervise(Clock::time_point now) {
     if (!p->alive() || p->killed_silent || !p->spec.heartbeat) continue;
     double limit = 0.0;
     if (p->state == ProcState::kStarting) limit = p->spec.startup_timeout_s;
-    else if (p->state == ProcState::kRunning) limit = p->spec.heartbeat_timeout_s;
+    else if (p->state == ProcState::kRunning) limit = graph_.heartbeat_period_s + p->spec.heartbeat_timeout_s;
     else continue;
     const double silent = Seconds(now - p->last_heartbeat);
     if (silent <= limit) continue;
@@ -345,7 +345,9 @@ Clock::time_point Supervisor::NextWake(Clock::time_point now) const {
   for (const auto& p : processes_) {
     if (p->state == ProcState::kBackoff) wake = std::min(wake, p->restart_at);
     if (p->alive() && p->spec.heartbeat && !p->killed_silent) {
-      const double limit = p->state == ProcState::kStarting ? p->spec.startup_timeout_s : p->spec.heartbeat_timeout_s;
+      const double limit = p->state == ProcState::kStarting
+                               ? p->spec.startup_timeout_s
+                               : graph_.heartbeat_period_s + p->spec.heartbeat_timeout_s;
       wake = std::min(wake, p->last_heartbeat + FromSeconds(limit) + std::chrono::milliseconds(1));
     }
   }
