@@ -87,7 +87,7 @@ ProcessSpec ParseProcess(const YAML::Node& node, int index, const std::string& f
   Where where{file, "processes[" + std::to_string(index) + "]"};
   CheckKeys(node, {"name", "command", "args", "env", "working_dir", "depends_on", "restart",
                    "restart_delay_s", "restart_delay_max_s", "max_restarts", "heartbeat",
-                   "heartbeat_timeout_s", "startup_timeout_s", "group", "publishes", "realtime"},
+                   "heartbeat_timeout_s", "startup_timeout_s", "ready_delay_s", "group", "publishes", "realtime"},
             where);
   ProcessSpec p;
   Read(node, "name", where, &p.name);
@@ -107,6 +107,7 @@ ProcessSpec ParseProcess(const YAML::Node& node, int index, const std::string& f
   Read(node, "heartbeat", where, &p.heartbeat);
   ReadRange(node, "heartbeat_timeout_s", where, 0.1, &p.heartbeat_timeout_s);
   ReadRange(node, "startup_timeout_s", where, 0.1, &p.startup_timeout_s);
+  ReadRange(node, "ready_delay_s", where, 0.0, &p.ready_delay_s);
   Read(node, "group", where, &p.group);
   Read(node, "publishes", where, &p.publishes);
   p.realtime = ParseRealtime(node["realtime"], where);

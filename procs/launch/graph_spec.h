@@ -46,6 +46,7 @@ struct ProcessSpec {
   /// heartbeat_period_s + heartbeat_timeout_s without one (default 1 s late, i.e. 2 s silent).
   double heartbeat_timeout_s = 1.0;
   double startup_timeout_s = 5.0;     ///< time allowed to the first heartbeat
+  double ready_delay_s = 0.3;  ///< without heartbeat: counted ready this long after its start
   std::string group;                  ///< label (status table; --group selects)
   std::vector<std::string> publishes; ///< channels it publishes (left out of a replay)
   RealtimeSettings realtime;

@@ -51,7 +51,7 @@ std::string DescribePlan(const GraphSpec& graph, bool isolated, const std::strin
           << graph.heartbeat_period_s << " s + timeout " << p.heartbeat_timeout_s << " s), first within "
           << p.startup_timeout_s << " s\n";
     }
-    else out << "not monitored (ready once started)\n";
+    else out << "not monitored (ready " << p.ready_delay_s << " s after its start)\n";
     if (!p.publishes.empty()) out << "    publishes: " << Join(p.publishes, ", ") << "\n";
     DescribeRealtime(p.realtime, out);
     out << "    log: " << run_dir << "/" << p.name << ".log\n";

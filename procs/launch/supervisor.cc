@@ -99,7 +99,7 @@ Supervisor::Supervisor(GraphSpec graph, SupervisorOptions options)
   }
   if (options_.replay) {
     std::set<std::string> excluded = {std::string(channels::HEARTBEAT),
-                                      std::string(channels::GRAPH_STATUS)};
+                                      std::string(channels::GRAPH_STATUS), "LCM_SELF_TEST"};
     for (const ProcessSpec& spec : graph_.processes) excluded.insert(spec.publishes.begin(), spec.publishes.end());
     player_ = std::make_unique<LogPlayer>(*options_.replay, excluded);
     std::string list;
@@ -174,8 +174,7 @@ void Supervisor::Start(Process& p, Clock::time_point now) {
   p.status.clear();
   p.last_cpu_s = 0.0;
   p.last_cpu_at = now;
-  p.state = p.spec.heartbeat ? ProcState::kStarting : ProcState::kRunning;
-  if (!p.spec.heartbeat) p.ever_ready = true;
+  p.state = ProcState::kStarting;
   streams_.push_back(std::make_unique<Stream>(Stream{child.output_fd, &p, ""}));
   p.log << "=== started pid " << p.pid << " (start " << p.restarts + 1 << ") ===" << std::endl;
   Log(p.spec.name + ": started pid " + std::to_string(p.pid));
@@ -225,6 +224,11 @@ void Supervisor::OnExit(Process& p, int status, Clock::time_point now) {
 
 void Supervisor::Supervise(Clock::time_point now) {
   for (auto& p : processes_) {
+    if (p->alive() && !p->spec.heartbeat && p->state == ProcState::kStarting &&
+        now - p->started >= FromSeconds(p->spec.ready_delay_s)) {
+      p->state = ProcState::kRunning;
+      p->ever_ready = true;
+    }
     if (!p->alive() || p->killed_silent || !p->spec.heartbeat) continue;
     double limit = 0.0;
     if (p->state == ProcState::kStarting) limit = p->spec.startup_timeout_s;
@@ -305,8 +309,9 @@ void Supervisor::BeginStop(const std::string& reason, Clock::time_point now) {
   if (stopping_) return;
   stopping_ = true;
   stop_deadline_ = now + FromSeconds(graph_.grace_period_s);
-  Log("stopping the graph (" + reason + "): reverse dependency order, grace period " +
-      std::to_string(graph_.grace_period_s) + " s");
+  char grace[32];
+  std::snprintf(grace, sizeof(grace), "%.1f", graph_.grace_period_s);
+  Log("stopping the graph (" + reason + "): reverse dependency order, grace period " + grace + " s");
   for (auto& p : processes_) {
     if (!p->alive()) p->state = ProcState::kExited;
   }
@@ -344,6 +349,9 @@ Clock::time_point Supervisor::NextWake(Clock::time_point now) const {
   if (replay_done_at_) wake = std::min(wake, *replay_done_at_);
   for (const auto& p : processes_) {
     if (p->state == ProcState::kBackoff) wake = std::min(wake, p->restart_at);
+    if (p->state == ProcState::kStarting && !p->spec.heartbeat) {
+      wake = std::min(wake, p->started + FromSeconds(p->spec.ready_delay_s));
+    }
     if (p->alive() && p->spec.heartbeat && !p->killed_silent) {
       const double limit = p->state == ProcState::kStarting
                                ? p->spec.startup_timeout_s
