@@ -85,14 +85,14 @@ RealtimeSettings ParseRealtime(const YAML::Node& node, const Where& parent) {
 
 ProcessSpec ParseProcess(const YAML::Node& node, int index, const std::string& file) {
   Where where{file, "processes[" + std::to_string(index) + "]"};
+  ProcessSpec p;
+  if (node.IsMap()) Read(node, "name", where, &p.name);
+  if (!p.name.empty()) where.path += " (" + p.name + ")";
   CheckKeys(node, {"name", "command", "args", "env", "working_dir", "depends_on", "restart",
                    "restart_delay_s", "restart_delay_max_s", "max_restarts", "heartbeat",
                    "heartbeat_timeout_s", "startup_timeout_s", "ready_delay_s", "group", "publishes", "realtime"},
             where);
-  ProcessSpec p;
-  Read(node, "name", where, &p.name);
   if (p.name.empty()) where.Fail(node, "name", "missing");
-  where.path += " (" + p.name + ")";
   Read(node, "command", where, &p.command);
   if (p.command.empty()) where.Fail(node, "command", "missing");
   Read(node, "args", where, &p.args);

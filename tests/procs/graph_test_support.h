@@ -1,0 +1,165 @@
+#pragma once
+// Support for tests that run real processes over real LCM: a private network namespace for the
+// test process (else the test is SKIPPED, never passed silently), topay-launch as a child,
+// a HEARTBEAT watcher, and checks that processes are gone (the test process is a child
+// subreaper, so orphans come back to it and are reaped rather than left as zombies).
+
+#include <fcntl.h>
+#include <signal.h>
+#include <sys/prctl.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <gtest/gtest.h>
+#include <lcm/lcm-cpp.hpp>
+
+#include <chrono>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include "procs/launch/proc_stats.h"
+#include "procs/runtime/net_namespace.h"
+#include "topay/heartbeat_t.hpp"
+#include "topay_msgs/channels.h"
+#include "topay_msgs/checked_decode.h"
+
+namespace topay::test {
+
+using Clock = std::chrono::steady_clock;
+
+inline std::string BinDir() { return std::string(TOPAY_BINARY_DIR) + "/bin"; }
+
+inline double SecondsSince(Clock::time_point t) {
+  return std::chrono::duration<double>(Clock::now() - t).count();
+}
+
+/// Enters a private network namespace (loopback multicast) once per test process. Call it first
+/// in a test: `if (!EnterTestNamespace(&why)) GTEST_SKIP() << why;`. Also makes the process a
+/// child subreaper.
+inline bool EnterTestNamespace(std::string* why) {
+  static bool entered = false;
+  static std::string error;
+  static bool tried = false;
+  if (!tried) {
+    tried = true;
+    entered = procs::EnterPrivateNetworkNamespace(&error);
+    prctl(PR_SET_CHILD_SUBREAPER, 1);
+  }
+  *why = "cannot create a private network namespace: " + error;
+  return entered;
+}
+
+/// A fresh folder under the build tree for one test's files.
+inline std::string TestDir(const std::string& name) {
+  const std::filesystem::path dir = std::filesystem::path(TOPAY_BINARY_DIR) / "test_out" / "procs" / name;
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir);
+  return dir.string();
+}
+
+inline void WriteText(const std::string& path, const std::string& text) { std::ofstream(path) << text; }
+
+inline std::string ReadText(const std::string& path) {
+  std::ifstream file(path);
+  return std::string(std::istreambuf_iterator<char>(file), {});
+}
+
+/// Starts `program args...` with stdout and stderr into `output_path`; returns its pid.
+inline pid_t Spawn(const std::vector<std::string>& argv, const std::string& output_path) {
+  const pid_t pid = fork();
+  if (pid == 0) {
+    const int fd = ::open(output_path.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+    dup2(fd, 1);
+    dup2(fd, 2);
+    std::vector<char*> args;
+    for (const std::string& a : argv) args.push_back(const_cast<char*>(a.c_str()));
+    args.push_back(nullptr);
+    execv(args[0], args.data());
+    _exit(127);
+  }
+  return pid;
+}
+
+/// Waits for `pid` up to timeout_s; returns its wait status, or -1 on timeout.
+inline int WaitFor(pid_t pid, double timeout_s) {
+  const Clock::time_point start = Clock::now();
+  while (SecondsSince(start) < timeout_s) {
+    int status = 0;
+    if (waitpid(pid, &status, WNOHANG) == pid) return status;
+    std::this_thread::sleep_for(std::chrono::milliseconds(10));
+  }
+  return -1;
+}
+
+/// Reaps any orphan reparented to this (subreaper) process.
+inline void ReapOrphans() {
+  while (waitpid(-1, nullptr, WNOHANG) > 0) {
+  }
+}
+
+/// True once none of `pids` is alive (zombies count as gone), polling up to timeout_s.
+inline bool AllGoneWithin(const std::vector<int>& pids, double timeout_s, double* took_s) {
+  const Clock::time_point start = Clock::now();
+  while (true) {
+    ReapOrphans();
+    bool any = false;
+    for (const int pid : pids) any = any || launch::ProcessAlive(pid);
+    *took_s = SecondsSince(start);
+    if (!any) return true;
+    if (*took_s > timeout_s) return false;
+    std::this_thread::sleep_for(std::chrono::milliseconds(5));
+  }
+}
+
+/// Listens to HEARTBEAT (and optionally any other channel, counted) in this namespace.
+class HeartbeatWatcher {
+ public:
+  struct Last {
+    int pid = 0;
+    std::int64_t seq = 0;
+    std::string status;
+    Clock::time_point at;
+    int count = 0;
+  };
+
+  explicit HeartbeatWatcher(const std::string& url = "") : lcm_(url) {
+    lcm_.subscribe(std::string(channels::HEARTBEAT), &HeartbeatWatcher::OnHeartbeat, this);
+  }
+  bool good() { return lcm_.good(); }
+  lcm::LCM& lcm() { return lcm_; }
+
+  /// Handles messages for `seconds`.
+  void Spin(double seconds) {
+    const Clock::time_point start = Clock::now();
+    while (SecondsSince(start) < seconds) lcm_.handleTimeout(10);
+  }
+  /// Handles messages until pred() or timeout; returns pred().
+  template <class Pred>
+  bool SpinUntil(Pred pred, double timeout_s) {
+    const Clock::time_point start = Clock::now();
+    while (!pred() && SecondsSince(start) < timeout_s) lcm_.handleTimeout(5);
+    return pred();
+  }
+
+  std::map<std::string, Last> last;
+
+ private:
+  void OnHeartbeat(const lcm::ReceiveBuffer* rbuf, const std::string&) {
+    const auto hb = CheckedDecode<heartbeat_t>(rbuf->data, rbuf->data_size, nullptr);
+    if (!hb) return;
+    Last& entry = last[hb->process_name];
+    entry.pid = hb->pid;
+    entry.seq = hb->seq;
+    entry.status = hb->status;
+    entry.at = Clock::now();
+    ++entry.count;
+  }
+
+  lcm::LCM lcm_;
+};
+
+}  // namespace topay::test
