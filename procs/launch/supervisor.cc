@@ -165,6 +165,7 @@ void Supervisor::Start(Process& p, Clock::time_point now) {
   if (!graph_.lcm_url.empty()) env["LCM_DEFAULT_URL"] = graph_.lcm_url;
   if (p.spec.realtime.mlockall) env["TOPAY_MLOCKALL"] = "1";
   const SpawnedChild child = SpawnChild(p.spec, env, signals_.previous_mask());
+  guardian_.Add(child.pid);
   p.pid = child.pid;
   p.started = now;
   p.last_heartbeat = now;
@@ -193,6 +194,7 @@ void Supervisor::Reap(Clock::time_point now) {
 
 void Supervisor::OnExit(Process& p, int status, Clock::time_point now) {
   kill(-p.pid, SIGKILL);  // anything the process left behind in its group
+  guardian_.Remove(p.pid);
   p.pid = 0;
   const bool failed = p.killed_silent || !WIFEXITED(status) || WEXITSTATUS(status) != 0;
   const std::string what = p.killed_silent ? "killed after its heartbeat stopped" : DescribeExit(status);
@@ -327,17 +329,19 @@ void Supervisor::StopStep(Clock::time_point now) {
     }
     return;
   }
-  // SIGTERM to the last started process still alive; the next one once it is gone.
-  for (auto it = processes_.rbegin(); it != processes_.rend(); ++it) {
-    Process& p = **it;
-    if (!p.alive()) continue;
-    if (!p.term_sent) {
-      p.term_sent = true;
-      p.state = ProcState::kStopping;
-      kill(-p.pid, SIGTERM);
-      kill(p.pid, SIGCONT);
-    }
-    return;
+  // Reverse dependency order: SIGTERM to every process none of whose dependents is still alive
+  // (dependents stop before what they depend on; unrelated processes stop together).
+  for (auto& p : processes_) {
+    if (!p->alive() || p->term_sent) continue;
+    const bool dependents_alive = std::any_of(processes_.begin(), processes_.end(), [&](const auto& q) {
+      return q->alive() && std::find(q->spec.depends_on.begin(), q->spec.depends_on.end(), p->spec.name) !=
+                               q->spec.depends_on.end();
+    });
+    if (dependents_alive) continue;
+    p->term_sent = true;
+    p->state = ProcState::kStopping;
+    kill(-p->pid, SIGTERM);
+    kill(p->pid, SIGCONT);
   }
 }
 

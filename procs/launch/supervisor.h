@@ -16,6 +16,7 @@
 
 #include "procs/launch/console.h"
 #include "procs/launch/graph_spec.h"
+#include "procs/launch/group_guardian.h"
 #include "procs/launch/log_player.h"
 #include "procs/runtime/signal_fd.h"
 
@@ -71,6 +72,7 @@ class Supervisor {
   GraphSpec graph_;
   SupervisorOptions options_;
   procs::SignalFd signals_;
+  GroupGuardian guardian_;  // forked before LCM and any child
   Console console_;
   std::unique_ptr<lcm::LCM> lcm_;
   std::vector<std::unique_ptr<Process>> processes_;

@@ -95,17 +95,18 @@ inline int WaitFor(pid_t pid, double timeout_s) {
   return -1;
 }
 
-/// Reaps any orphan reparented to this (subreaper) process.
+/// Reaps every exited child of this (subreaper) process, orphans included. Call it only after
+/// waiting for the children whose status matters (it would take theirs too).
 inline void ReapOrphans() {
   while (waitpid(-1, nullptr, WNOHANG) > 0) {
   }
 }
 
-/// True once none of `pids` is alive (zombies count as gone), polling up to timeout_s.
+/// True once none of `pids` is alive (zombies count as gone: they have ended, only their exit
+/// status waits to be collected), polling up to timeout_s.
 inline bool AllGoneWithin(const std::vector<int>& pids, double timeout_s, double* took_s) {
   const Clock::time_point start = Clock::now();
   while (true) {
-    ReapOrphans();
     bool any = false;
     for (const int pid : pids) any = any || launch::ProcessAlive(pid);
     *took_s = SecondsSince(start);
@@ -161,5 +162,45 @@ class HeartbeatWatcher {
 
   lcm::LCM lcm_;
 };
+
+}  // namespace topay::test
+
+#include <nlohmann/json.hpp>
+
+namespace topay::test {
+
+/// A graph file for the tests: `processes` is the YAML list body (indented by 2).
+inline std::string GraphYaml(const std::string& name, const std::string& processes, double grace_s = 2.0) {
+  return "name: " + name + "\ngrace_period_s: " + std::to_string(grace_s) + "\nprocesses:\n" + processes;
+}
+
+/// A kinematic-sim process entry named `name` (publishes ROBOT_STATE; state_rate_hz from the
+/// config at `config`, or the default 10 Hz).
+inline std::string ModelProcess(const std::string& name, const std::string& config = "",
+                                const std::string& extra = "") {
+  std::string entry = "  - name: " + name + "\n    command: ${BIN_DIR}/topay-kinematic-sim\n";
+  if (!config.empty()) entry += "    args: [--config, " + config + "]\n";
+  return entry + "    publishes: [ROBOT_STATE]\n" + extra;
+}
+
+/// topay-launch on `graph_path` with `flags`, output into <run_dir>/launcher.out.
+inline pid_t StartLauncher(const std::string& graph_path, const std::string& run_dir,
+                           const std::vector<std::string>& flags) {
+  std::filesystem::create_directories(run_dir);
+  std::vector<std::string> argv = {BinDir() + "/topay-launch", graph_path, "--plain", "--run-dir", run_dir};
+  argv.insert(argv.end(), flags.begin(), flags.end());
+  return Spawn(argv, run_dir + "/launcher.out");
+}
+
+/// The pids the launcher reports in <run_dir>/status.json (0 for processes not running).
+inline std::map<std::string, int> StatusPids(const std::string& run_dir) {
+  std::map<std::string, int> pids;
+  try {
+    const nlohmann::json json = nlohmann::json::parse(ReadText(run_dir + "/status.json"));
+    for (const auto& p : json.at("processes")) pids[p.at("name")] = p.at("pid");
+  } catch (const std::exception&) {
+  }
+  return pids;
+}
 
 }  // namespace topay::test
