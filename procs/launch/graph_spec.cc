@@ -90,7 +90,7 @@ ProcessSpec ParseProcess(const YAML::Node& node, int index, const std::string& f
   if (!p.name.empty()) where.path += " (" + p.name + ")";
   CheckKeys(node, {"name", "command", "args", "env", "working_dir", "depends_on", "restart",
                    "restart_delay_s", "restart_delay_max_s", "max_restarts", "heartbeat",
-                   "heartbeat_timeout_s", "startup_timeout_s", "ready_delay_s", "group", "publishes", "realtime"},
+                   "heartbeat_timeout_s", "startup_timeout_s", "ready_delay_s", "group", "autostart", "publishes", "realtime"},
             where);
   if (p.name.empty()) where.Fail(node, "name", "missing");
   Read(node, "command", where, &p.command);
@@ -109,6 +109,7 @@ ProcessSpec ParseProcess(const YAML::Node& node, int index, const std::string& f
   ReadRange(node, "startup_timeout_s", where, 0.1, &p.startup_timeout_s);
   ReadRange(node, "ready_delay_s", where, 0.0, &p.ready_delay_s);
   Read(node, "group", where, &p.group);
+  Read(node, "autostart", where, &p.autostart);
   Read(node, "publishes", where, &p.publishes);
   p.realtime = ParseRealtime(node["realtime"], where);
   return p;
@@ -230,7 +231,6 @@ void ExpandVariables(const GraphVariables& variables, GraphSpec* graph) {
 }
 
 void SelectGroups(const std::vector<std::string>& groups, GraphSpec* graph) {
-  if (groups.empty()) return;
   std::set<std::string> keep;
   std::function<void(const std::string&)> add = [&](const std::string& name) {
     if (!keep.insert(name).second) return;
@@ -239,7 +239,9 @@ void SelectGroups(const std::vector<std::string>& groups, GraphSpec* graph) {
     }
   };
   for (const ProcessSpec& p : graph->processes) {
-    if (std::find(groups.begin(), groups.end(), p.group) != groups.end()) add(p.name);
+    const bool selected = groups.empty() ? p.autostart
+                                         : std::find(groups.begin(), groups.end(), p.group) != groups.end();
+    if (selected) add(p.name);
   }
   std::erase_if(graph->processes, [&](const ProcessSpec& p) { return !keep.contains(p.name); });
 }

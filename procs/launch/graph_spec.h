@@ -47,7 +47,8 @@ struct ProcessSpec {
   double heartbeat_timeout_s = 1.0;
   double startup_timeout_s = 5.0;     ///< time allowed to the first heartbeat
   double ready_delay_s = 0.3;  ///< without heartbeat: counted ready this long after its start
-  std::string group;                  ///< label (status table; --group selects)
+  std::string group;                  ///< label; --group GROUP starts only those groups
+  bool autostart = true;              ///< false: started only when its group is selected
   std::vector<std::string> publishes; ///< channels it publishes (left out of a replay)
   RealtimeSettings realtime;
 };
@@ -78,7 +79,8 @@ GraphSpec LoadGraph(const std::string& path);
 /// Throws GraphError naming the process and field for an unknown variable.
 void ExpandVariables(const GraphVariables& variables, GraphSpec* graph);
 
-/// Keeps the processes of `groups` and everything they depend on (start order kept).
+/// Keeps the processes of `groups` (none given: every process with autostart) and everything
+/// they depend on, start order kept.
 void SelectGroups(const std::vector<std::string>& groups, GraphSpec* graph);
 
 }  // namespace topay::launch

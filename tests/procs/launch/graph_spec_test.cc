@@ -180,5 +180,29 @@ TEST(GraphSpec, SelectsGroupsWithTheirDependencies) {
   EXPECT_EQ(g.processes[1].name, "b");
 }
 
+TEST(GraphSpec, AutostartFalseOnlyWithItsGroup) {
+  std::string path;
+  ASSERT_EQ(LoadError(R"(processes:
+  - {name: a, command: x, group: g}
+  - {name: b, command: x, depends_on: [a], group: h, autostart: false}
+)", &path), "");
+  GraphSpec all = LoadGraph(path);
+  SelectGroups({}, &all);
+  ASSERT_EQ(all.processes.size(), 1u);
+  EXPECT_EQ(all.processes[0].name, "a");
+  GraphSpec h = LoadGraph(path);
+  SelectGroups({"h"}, &h);
+  EXPECT_EQ(h.processes.size(), 2u);
+}
+
+TEST(GraphSpec, ShippedGraphsLoad) {
+  const GraphSpec sim = LoadGraph(std::string(TOPAY_SOURCE_DIR) + "/config/graphs/sim.yaml");
+  EXPECT_TRUE(sim.isolated);
+  EXPECT_EQ(sim.processes.front().name, "logger");
+  const GraphSpec robot = LoadGraph(std::string(TOPAY_SOURCE_DIR) + "/config/graphs/robot.yaml");
+  EXPECT_FALSE(robot.isolated);
+  EXPECT_FALSE(robot.processes.empty());
+}
+
 }  // namespace
 }  // namespace topay::launch
