@@ -126,8 +126,7 @@ void Supervisor::OnHeartbeat(const lcm::ReceiveBuffer* rbuf, const std::string&)
     p->health = hb->health;
     p->status = hb->status;
     if (p->state == ProcState::kStarting) {
-      p->state = ProcState::kRunning;
-      p->ever_ready = true;
+      MarkReady(*p);
       Log(p->spec.name + ": first heartbeat " + std::to_string(std::lround(Seconds(now - p->started) * 1000)) +
           " ms after start (pid " + std::to_string(p->pid) + ")");
     }
@@ -179,6 +178,12 @@ void Supervisor::Start(Process& p, Clock::time_point now) {
   streams_.push_back(std::make_unique<Stream>(Stream{child.output_fd, &p, ""}));
   p.log << "=== started pid " << p.pid << " (start " << p.restarts + 1 << ") ===" << std::endl;
   Log(p.spec.name + ": started pid " + std::to_string(p.pid));
+}
+
+void Supervisor::MarkReady(Process& p) {
+  p.state = ProcState::kRunning;
+  p.ever_ready = true;
+  // The child applied its settings before exec; it is running now, so they can be checked.
   for (const std::string& warning : CheckRealtime(p.spec, p.pid)) Log(p.spec.name + ": warning: " + warning);
 }
 
@@ -228,8 +233,7 @@ void Supervisor::Supervise(Clock::time_point now) {
   for (auto& p : processes_) {
     if (p->alive() && !p->spec.heartbeat && p->state == ProcState::kStarting &&
         now - p->started >= FromSeconds(p->spec.ready_delay_s)) {
-      p->state = ProcState::kRunning;
-      p->ever_ready = true;
+      MarkReady(*p);
     }
     if (!p->alive() || p->killed_silent || !p->spec.heartbeat) continue;
     double limit = 0.0;

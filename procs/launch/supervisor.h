@@ -55,6 +55,7 @@ class Supervisor {
 
   void StartReady(Clock::time_point now);
   void Start(Process& p, Clock::time_point now);
+  void MarkReady(Process& p);  // first heartbeat (or ready delay): dependents may start
   void Reap(Clock::time_point now);
   void OnExit(Process& p, int status, Clock::time_point now);
   void Supervise(Clock::time_point now);
