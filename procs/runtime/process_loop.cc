@@ -23,8 +23,8 @@ std::int64_t NowUtime() {
 
 ProcessLoop::ProcessLoop(const ProcessOptions& options)
     : options_(options),
-      lcm_(std::make_unique<lcm::LCM>(options.lcm_url)),
-      signals_({SIGINT, SIGTERM}) {
+      signals_({SIGINT, SIGTERM}),
+      lcm_(std::make_unique<lcm::LCM>(options.lcm_url)) {
   if (options_.mlockall && mlockall(MCL_CURRENT | MCL_FUTURE) != 0) {
     spdlog::warn("mlockall not permitted ({}); running without locked memory",
                  std::strerror(errno));

@@ -71,8 +71,8 @@ class ProcessLoop {
   Clock::time_point NextDeadline() const;
 
   ProcessOptions options_;
+  SignalFd signals_;  // before LCM: any thread LCM may start inherits the blocked signals
   std::unique_ptr<lcm::LCM> lcm_;
-  SignalFd signals_;
   ChannelStats stats_;
   std::vector<Timer> timers_;
   std::vector<std::shared_ptr<void>> handlers_;  // keep the subscription closures alive

@@ -71,6 +71,24 @@ TEST_F(LaunchRestart, KilledProcessIsBackWithinTwoSecondsOthersUntouched) {
   EXPECT_GT(watcher.last["robot-model-2"].at, after);
   const std::map<std::string, int> pids = StatusPids(dir_ + "/run");
   EXPECT_EQ(pids.at("commands"), commands);
+  // The status (status.json, the same rows as the table and GRAPH_STATUS) after a restart.
+  nlohmann::json status;
+  const auto restarted_in_status = [&] {
+    status = nlohmann::json::parse(ReadText(dir_ + "/run/status.json"), nullptr, false);
+    if (status.is_discarded()) return false;
+    for (const auto& p : status.at("processes")) {
+      if (p.at("name") == "robot-model") return p.at("restarts") == 1 && p.at("state") == "RUNNING";
+    }
+    return false;
+  };
+  EXPECT_TRUE(watcher.SpinUntil(restarted_in_status, 2.5)) << status.dump();  // rewritten every second
+  for (const auto& p : status.at("processes")) {
+    EXPECT_EQ(p.at("state"), "RUNNING") << p.dump();
+    EXPECT_GT(p.at("rss_kB").get<int>(), 0) << p.dump();
+    EXPECT_GE(p.at("heartbeat_age_s").get<double>(), 0.0) << p.dump();
+    EXPECT_LT(p.at("heartbeat_age_s").get<double>(), 1.5) << p.dump();
+    EXPECT_EQ(p.at("restarts").get<int>(), p.at("name") == "robot-model" ? 1 : 0) << p.dump();
+  }
   EXPECT_FALSE(launch::ProcessAlive(victim));
 }
 
