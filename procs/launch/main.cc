@@ -102,6 +102,11 @@ int main(int argc, char** argv) {
   const bool isolated = f.isolated || (graph.isolated && !f.not_isolated);
   if (f.dry_run) {
     std::cout << launch::DescribePlan(graph, isolated, run_dir);
+    if (!f.replay_log.empty()) {
+      std::cout << "  replay: " << f.replay_log << " once every process is ready, speed " << f.replay.speed
+                << ", from " << f.replay.start_offset_s << " s, channels '" << f.replay.channels
+                << "', leaving out HEARTBEAT, GRAPH_STATUS and the channels the processes publish\n";
+    }
     return procs::kExitOk;
   }
   std::error_code error;

@@ -395,6 +395,24 @@ void Supervisor::PollOnce(Clock::time_point now) {
   std::erase_if(streams_, [](const auto& s) { return s->fd < 0; });
 }
 
+void Supervisor::Tick(Clock::time_point now) {
+  StartReady(now);
+  Supervise(now);
+  if (options_.duration_s && now - launched_ >= FromSeconds(*options_.duration_s)) BeginStop("duration reached", now);
+  if (AllDone()) BeginStop("every process has exited", now);
+  if (!player_ || stopping_) return;
+  if (!player_->started() && AllReady()) {
+    Log("every process is ready: replay starts");
+    player_->Start(now);
+  }
+  if (player_->Pump(now, lcm_.get()) && !replay_done_at_) {
+    Log("replay done: " + std::to_string(player_->published()) + " messages played, " +
+        std::to_string(player_->skipped()) + " left out");
+    replay_done_at_ = now + FromSeconds(options_.replay->linger_s);
+  }
+  if (replay_done_at_ && now >= *replay_done_at_) BeginStop("replay finished", now);
+}
+
 int Supervisor::Run() {
   launched_ = Clock::now();
   next_status_ = launched_;
@@ -402,26 +420,13 @@ int Supervisor::Run() {
   Log("graph " + graph_.name + " (" + graph_.file + "), run folder " + options_.run_dir);
   try {
     while (true) {
-      Clock::time_point now = Clock::now();
+      const Clock::time_point now = Clock::now();
       Reap(now);
       if (stopping_) {
         if (std::none_of(processes_.begin(), processes_.end(), [](const auto& p) { return p->alive(); })) break;
         StopStep(now);
       } else {
-        StartReady(now);
-        Supervise(now);
-        if (options_.duration_s && now - launched_ >= FromSeconds(*options_.duration_s)) BeginStop("duration reached", now);
-        if (AllDone()) BeginStop("every process has exited", now);
-        if (player_ && !player_->started() && AllReady()) {
-          Log("every process is ready: replay starts");
-          player_->Start(now);
-        }
-        if (player_ && player_->Pump(now, lcm_.get()) && !replay_done_at_) {
-          Log("replay done: " + std::to_string(player_->published()) + " messages played, " +
-              std::to_string(player_->skipped()) + " left out");
-          replay_done_at_ = now + FromSeconds(options_.replay->linger_s);
-        }
-        if (replay_done_at_ && now >= *replay_done_at_) BeginStop("replay finished", now);
+        Tick(now);
       }
       if (now >= next_status_) {
         const bool plain = !options_.tty && now >= next_plain_status_;

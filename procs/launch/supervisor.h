@@ -46,13 +46,15 @@ class Supervisor {
   ~Supervisor();
 
   /// Runs the graph until a signal, the duration, the end of the replay or every process has
-  /// exited for good. Returns 0, or 1 if a process could not be started at all.
+  /// exited for good. Returns 0, or 1 after an internal error (fork or poll failed; the graph
+  /// is stopped).
   int Run();
 
  private:
   struct Process;
   struct Stream;
 
+  void Tick(Clock::time_point now);  // one iteration while running (not stopping)
   void StartReady(Clock::time_point now);
   void Start(Process& p, Clock::time_point now);
   void MarkReady(Process& p);  // first heartbeat (or ready delay): dependents may start
