@@ -15,7 +15,12 @@ using test::WriteText;
 
 // Loads `text` as a graph file; returns the GraphError's message ("" if it loaded).
 std::string LoadError(const std::string& text, std::string* path_out = nullptr) {
-  const std::string path = TestDir("graph_spec") + "/graph.yaml";
+  // One folder per test: ctest runs the tests of this file in parallel.
+  static int call = 0;
+  const std::string path = TestDir(std::string("graph_spec_") +
+                                   testing::UnitTest::GetInstance()->current_test_info()->name() + "_" +
+                                   std::to_string(call++)) +
+                           "/graph.yaml";
   WriteText(path, text);
   if (path_out != nullptr) *path_out = path;
   try {
