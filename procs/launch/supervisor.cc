@@ -14,6 +14,7 @@
 
 #include "procs/launch/child_process.h"
 #include "procs/launch/proc_stats.h"
+#include "procs/launch/supervisor_process.h"
 #include "procs/launch/status_report.h"
 #include "procs/runtime/process_loop.h"
 #include "topay/graph_status_t.hpp"
@@ -51,33 +52,6 @@ const char* ToString(ProcState state) {
   }
   return "?";
 }
-
-struct Supervisor::Process {
-  ProcessSpec spec;
-  int index = 0;
-  ProcState state = ProcState::kWaiting;
-  pid_t pid = 0;
-  std::ofstream log;
-  int restarts = 0;
-  int consecutive_failures = 0;
-  bool ever_ready = false;     // first heartbeat seen (dependencies may start)
-  bool killed_silent = false;  // killed for a missing heartbeat: counts as a failure
-  bool term_sent = false;
-  Clock::time_point started, last_heartbeat, restart_at;
-  std::int8_t health = -1;
-  std::string status;
-  double cpu_percent = 0.0, last_cpu_s = 0.0;
-  std::int64_t rss_kB = 0;
-  Clock::time_point last_cpu_at;
-
-  bool alive() const { return pid > 0; }
-};
-
-struct Supervisor::Stream {
-  int fd = -1;
-  Process* process = nullptr;
-  std::string partial;
-};
 
 Supervisor::Supervisor(GraphSpec graph, SupervisorOptions options)
     : graph_(std::move(graph)),
@@ -273,44 +247,6 @@ void Supervisor::ReadOutput(Stream& stream, bool hang_up) {
   }
 }
 
-void Supervisor::ReportStatus(Clock::time_point now, bool plain) {
-  std::vector<ProcessStatusRow> rows;
-  for (auto& p : processes_) {
-    if (p->alive()) {
-      if (const std::optional<ProcSample> sample = ReadProcSample(p->pid)) {
-        const double dt = Seconds(now - p->last_cpu_at);
-        if (dt > 0.05 && p->last_cpu_s > 0.0) p->cpu_percent = 100.0 * (sample->cpu_time_s - p->last_cpu_s) / dt;
-        p->last_cpu_s = sample->cpu_time_s;
-        p->last_cpu_at = now;
-        p->rss_kB = sample->rss_kB;
-      }
-    } else {
-      p->cpu_percent = 0.0;
-      p->rss_kB = 0;
-    }
-    ProcessStatusRow row;
-    row.name = p->spec.name;
-    row.group = p->spec.group;
-    row.state = static_cast<std::int8_t>(p->state);
-    row.state_name = ToString(p->state);
-    row.pid = p->pid;
-    row.restarts = p->restarts;
-    row.cpu_percent = p->cpu_percent;
-    row.rss_kB = p->rss_kB;
-    row.heartbeat_age_s = (p->alive() && p->spec.heartbeat && p->health >= 0) ? Seconds(now - p->last_heartbeat) : -1.0;
-    row.health = p->health;
-    row.status = p->status;
-    rows.push_back(row);
-  }
-  const double uptime = Seconds(now - launched_);
-  const graph_status_t msg = ToGraphStatus(graph_.name, options_.run_dir, procs::NowUtime(), rows);
-  lcm_->publish(std::string(channels::GRAPH_STATUS), &msg);
-  const std::string json_path = options_.run_dir + "/status.json";
-  std::ofstream(json_path + ".tmp") << ToJson(graph_.name, options_.run_dir, uptime, rows);
-  std::filesystem::rename(json_path + ".tmp", json_path);
-  if (options_.tty || plain) console_.Table(FormatTable(graph_.name, uptime, rows));
-}
-
 void Supervisor::BeginStop(const std::string& reason, Clock::time_point now) {
   if (stopping_) return;
   stopping_ = true;
@@ -428,6 +364,8 @@ int Supervisor::Run() {
       } else {
         Tick(now);
       }
+      if (options_.tty && table_dirty_) console_.Table(FormatTable(graph_.name, Seconds(now - launched_), Rows(now)));
+      table_dirty_ = false;
       if (now >= next_status_) {
         const bool plain = !options_.tty && now >= next_plain_status_;
         if (plain) next_plain_status_ = now + FromSeconds(options_.plain_status_period_s);

@@ -18,6 +18,7 @@
 #include "procs/launch/graph_spec.h"
 #include "procs/launch/group_guardian.h"
 #include "procs/launch/log_player.h"
+#include "procs/launch/status_report.h"
 #include "procs/runtime/signal_fd.h"
 
 namespace topay::launch {
@@ -63,6 +64,9 @@ class Supervisor {
   void Supervise(Clock::time_point now);
   void OnHeartbeat(const lcm::ReceiveBuffer* rbuf, const std::string& channel);
   void ReadOutput(Stream& stream, bool hang_up);
+  // supervisor_status.cc: CPU and memory from /proc, the status rows, their three outputs.
+  void SampleResources(Clock::time_point now);
+  std::vector<ProcessStatusRow> Rows(Clock::time_point now) const;
   void ReportStatus(Clock::time_point now, bool plain);
   void BeginStop(const std::string& reason, Clock::time_point now);
   void StopStep(Clock::time_point now);
@@ -70,7 +74,10 @@ class Supervisor {
   bool AllDone() const;
   Clock::time_point NextWake(Clock::time_point now) const;
   void PollOnce(Clock::time_point now);
-  void Log(const std::string& text) { console_.Event(text); }
+  void Log(const std::string& text) {
+    console_.Event(text);
+    table_dirty_ = true;  // on a terminal the table is redrawn with the new state
+  }
 
   GraphSpec graph_;
   SupervisorOptions options_;
@@ -88,6 +95,7 @@ class Supervisor {
   bool stopping_ = false;
   Clock::time_point stop_deadline_;
   bool killed_all_ = false;
+  bool table_dirty_ = false;
   int exit_code_ = 0;
 };
 
