@@ -58,7 +58,8 @@ TEST(LogRoundTrip, CountsMatchAndReplayReproducesOutputs) {
   EXPECT_GE(summary.channels.at("HEARTBEAT").count, 4);  // 2 processes x >= 2 s
   EXPECT_GE(summary.channels.at("GRAPH_STATUS").count, 2);
   for (const auto& [channel, c] : summary.channels) EXPECT_EQ(c.decode_failures, 0) << channel;
-  EXPECT_NEAR(summary.channels.at("CONTROL_COMMAND").rate_hz(), 30.0, 6.0);
+  EXPECT_GT(summary.channels.at("CONTROL_COMMAND").rate_hz(), 15.0);  // sent at 30 Hz
+  EXPECT_LT(summary.channels.at("CONTROL_COMMAND").rate_hz(), 45.0);
   EXPECT_EQ(summary.channels.at("ROBOT_STATE").min_bytes, summary.channels.at("ROBOT_STATE").max_bytes);
   const pid_t info = Spawn({BinDir() + "/topay-log-info", "--json", recorded}, dir + "/info.json");
   ASSERT_EQ(WaitFor(info, 10.0), 0);

