@@ -106,3 +106,13 @@ time.sleep(30.0); c1, t1 = cpu_s(idle.pid), time.time()
 idle.terminate(); idle.wait()
 print(f"idle CPU of topay-kinematic-sim (heartbeat only) over {t1 - t0:.0f} s: {100 * (c1 - c0) / (t1 - t0):.3f} % of one core "
       f"({(c1 - c0) * 1000:.0f} ms CPU; clock tick {1000 / os.sysconf('SC_CLK_TCK'):.0f} ms)")
+
+# 5. CPU of topay-launch supervising the 3-process graph (status every second, heartbeats).
+run_dir = os.path.join(work, "launcher-cpu")
+p, _ = launch(run_dir)
+while len(first_heartbeats(run_dir)) < 3: time.sleep(0.01)
+time.sleep(1.0); c0, t0 = cpu_s(p.pid), time.time()
+time.sleep(30.0); c1, t1 = cpu_s(p.pid), time.time()
+p.send_signal(signal.SIGTERM); p.wait()
+print(f"CPU of topay-launch supervising 3 processes over {t1 - t0:.0f} s: {100 * (c1 - c0) / (t1 - t0):.3f} % of one core "
+      f"({(c1 - c0) * 1000:.0f} ms CPU)")

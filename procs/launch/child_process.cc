@@ -16,7 +16,8 @@
 namespace topay::launch {
 namespace {
 
-// Only async-signal-safe calls after fork (the launcher is single-threaded, but keep to it).
+// Runs in the child between fork and exec. The launcher is single-threaded (no lock can be held
+// by another thread at fork), so the error paths may build strings.
 void WriteAll(int fd, const std::string& text) {
   (void)!write(fd, text.data(), text.size());
 }

@@ -39,7 +39,8 @@ class ProcessLoop {
   const ProcessOptions& options() const { return options_; }
   ChannelStats& stats() { return stats_; }
 
-  /// Calls `callback` every period_s seconds (first call one period after Run starts).
+  /// Calls `callback` every period_s seconds (first call one period after Run starts). Add
+  /// timers before Run, not from a callback. A late timer skips to the next period (no burst).
   void AddTimer(double period_s, std::function<void()> callback);
 
   /// Subscribes to `channel` decoding each message with CheckedDecode<Msg>; a message that
