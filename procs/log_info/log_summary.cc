@@ -32,7 +32,8 @@ LogSummary SummarizeLog(const std::string& path) {
     c.bytes += size;
     c.min_bytes = std::min(c.min_bytes, size);
     c.max_bytes = std::max(c.max_bytes, size);
-    c.last_utime = event->timestamp;
+    c.first_utime = std::min(c.first_utime, event->timestamp);  // robust to out-of-order logs
+    c.last_utime = std::max(c.last_utime, event->timestamp);
     const std::optional<msgs::MessageTypeInfo> type = msgs::IdentifyMessage(event->data, size);
     std::string error;
     if (std::string(event->channel).starts_with("LCM_SELF_TEST")) {
@@ -44,8 +45,8 @@ LogSummary SummarizeLog(const std::string& path) {
       ++c.types[type->name];
       if (!type->check(event->data, size, &error)) ++c.decode_failures;
     }
-    if (summary.events == 0) summary.first_utime = event->timestamp;
-    summary.last_utime = std::max(summary.last_utime, event->timestamp);
+    summary.first_utime = summary.events == 0 ? event->timestamp : std::min(summary.first_utime, event->timestamp);
+    summary.last_utime = summary.events == 0 ? event->timestamp : std::max(summary.last_utime, event->timestamp);
     ++summary.events;
   }
   return summary;

@@ -12,7 +12,7 @@ struct ChannelSummary {
   std::int64_t count = 0;
   std::int64_t bytes = 0;
   std::int64_t min_bytes = 0, max_bytes = 0;
-  std::int64_t first_utime = 0, last_utime = 0;  ///< log timestamps, us since the Unix epoch
+  std::int64_t first_utime = 0, last_utime = 0;  ///< earliest and latest log timestamps, us
   std::map<std::string, std::int64_t> types;     ///< type name (or "unknown") -> count
   std::int64_t decode_failures = 0;  ///< known fingerprint but CheckedDecode failed, or unknown
 
