@@ -1,7 +1,7 @@
 # Two commands on a fresh Debian 12 machine:
 #   make demo   install what is missing, build, run the main job
 #   make test   install what is missing, build (with assertions), run every test
-.PHONY: all deps build build-test test test-fast demo bench clean
+.PHONY: all deps build build-test test test-fast demo graph bench clean
 
 BUILD_DIR      ?= build
 TEST_BUILD_DIR ?= build-test
@@ -42,6 +42,11 @@ demo: build
 	  --json $(DEMO_OUT)/trajectory.json --png $(DEMO_OUT)/path.png \
 	  --time-png $(DEMO_OUT)/time_plots.png || [ $$? -eq 3 ]
 	@echo "demo: wrote $(DEMO_OUT)/trajectory.json, path.png, time_plots.png"
+
+# The simulation process graph (config/graphs/sim.yaml), isolated in a private network
+# namespace; Ctrl-C stops it. Run folder: out/runs/<date-time>/ (docs/running.md).
+graph: build
+	$(BUILD_DIR)/bin/topay-launch config/graphs/sim.yaml $(GRAPH_ARGS)
 
 clean:
 	rm -rf $(BUILD_DIR) $(TEST_BUILD_DIR)

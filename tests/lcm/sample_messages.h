@@ -13,6 +13,7 @@
 #include "topay/base_velocity_t.hpp"
 #include "topay/control_command_t.hpp"
 #include "topay/goal_t.hpp"
+#include "topay/graph_status_t.hpp"
 #include "topay/heartbeat_t.hpp"
 #include "topay/joint_state_t.hpp"
 #include "topay/map_update_t.hpp"
@@ -40,7 +41,7 @@ struct MessageList {
 using Catalogue =
     MessageList<base_pose_t, base_velocity_t, joint_state_t, robot_state_t, whole_body_state_t,
                 point_cloud_t, map_update_t, goal_t, poly_trajectory_t, control_command_t,
-                planner_status_t, heartbeat_t>;
+                planner_status_t, heartbeat_t, graph_status_t>;
 using AllMessageTypes = Catalogue::GtestTypes;
 
 // Names typed tests after the message type ("RoundTrip/joint_state_t") instead of 0, 1, ...
@@ -358,6 +359,40 @@ struct MessageSample<heartbeat_t> {
     EXPECT_EQ(a.seq, b.seq);
     EXPECT_EQ(a.health, b.health);
     EXPECT_EQ(a.status, b.status);
+  }
+};
+
+template <>
+struct MessageSample<graph_status_t> {
+  static graph_status_t Make() {
+    graph_status_t m;
+    m.utime = 1'700'000'001'223'456;
+    m.graph_name = "sim";
+    m.run_dir = "out/runs/20261202-101500";
+    m.num_processes = 3;
+    m.names = {"robot-model", "", "lcm-logger"};
+    m.states = {graph_status_t::RUNNING, graph_status_t::BACKOFF, graph_status_t::STARTING};
+    m.pids = {4242, 0, -7};
+    m.restarts = {0, 12, 1};
+    m.cpu_percent = {1.5f, 0.0f, 99.25f};
+    m.rss_kB = {10240, 0, 8'000'000'000};
+    m.heartbeat_age_s = {0.25f, -1.0f, 3.5f};
+    m.health = {heartbeat_t::OK, -1, heartbeat_t::ERROR};
+    return m;
+  }
+  static void ExpectSame(const graph_status_t& a, const graph_status_t& b) {
+    EXPECT_EQ(a.utime, b.utime);
+    EXPECT_EQ(a.graph_name, b.graph_name);
+    EXPECT_EQ(a.run_dir, b.run_dir);
+    EXPECT_EQ(a.num_processes, b.num_processes);
+    EXPECT_EQ(a.names, b.names);
+    EXPECT_EQ(a.states, b.states);
+    EXPECT_EQ(a.pids, b.pids);
+    EXPECT_EQ(a.restarts, b.restarts);
+    EXPECT_EQ(a.cpu_percent, b.cpu_percent);
+    EXPECT_EQ(a.rss_kB, b.rss_kB);
+    EXPECT_EQ(a.heartbeat_age_s, b.heartbeat_age_s);
+    EXPECT_EQ(a.health, b.health);
   }
 };
 

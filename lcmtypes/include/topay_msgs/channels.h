@@ -18,10 +18,11 @@ inline constexpr std::string_view TRAJECTORY = "TRAJECTORY";            // poly_
 inline constexpr std::string_view CONTROL_COMMAND = "CONTROL_COMMAND";  // control_command_t
 inline constexpr std::string_view PLANNER_STATUS = "PLANNER_STATUS";    // planner_status_t
 inline constexpr std::string_view HEARTBEAT = "HEARTBEAT";              // heartbeat_t
+inline constexpr std::string_view GRAPH_STATUS = "GRAPH_STATUS";        // graph_status_t
 
 // Every channel above, e.g. for a logger's or a bridge's channel list.
-inline constexpr std::array<std::string_view, 11> kAll = {
+inline constexpr std::array<std::string_view, 12> kAll = {
     BASE_POSE,  BASE_VELOCITY, JOINT_STATE,     ROBOT_STATE,    POINT_CLOUD, MAP_UPDATE,
-    GOAL,       TRAJECTORY,    CONTROL_COMMAND, PLANNER_STATUS, HEARTBEAT};
+    GOAL,       TRAJECTORY,    CONTROL_COMMAND, PLANNER_STATUS, HEARTBEAT,   GRAPH_STATUS};
 
 }  // namespace topay::channels

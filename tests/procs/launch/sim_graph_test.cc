@@ -1,0 +1,36 @@
+// The shipped simulation graph (config/graphs/sim.yaml) runs as it is, isolated by default:
+// the logger records the robot model's ROBOT_STATE and HEARTBEAT and the launcher's
+// GRAPH_STATUS into <run>/graph.lcmlog; with --group drive the commands move the model.
+
+#include <gtest/gtest.h>
+
+#include "graph_test_support.h"
+#include "procs/log_info/log_summary.h"
+
+namespace topay::test {
+namespace {
+
+TEST(SimGraph, RunsIsolatedAndRecordsTheRobotModel) {
+  std::string why;
+  if (!EnterTestNamespace(&why)) GTEST_SKIP() << why;  // the launcher nests its own namespace
+  const std::string dir = TestDir("sim_graph");
+  const pid_t launcher = StartLauncher(std::string(TOPAY_SOURCE_DIR) + "/config/graphs/sim.yaml", dir,
+                                       {"--duration", "3", "--group", "sim", "--group", "drive"});
+  const int status = WaitFor(launcher, 15.0);
+  const std::string out = ReadText(dir + "/launcher.out");
+  ASSERT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 0) << out;
+  EXPECT_NE(out.find("isolated: private network namespace"), std::string::npos) << out;
+  const loginfo::LogSummary summary = loginfo::SummarizeLog(dir + "/graph.lcmlog");
+  ASSERT_TRUE(summary.channels.contains("ROBOT_STATE")) << loginfo::FormatSummary(summary);
+  EXPECT_GE(summary.channels.at("ROBOT_STATE").count, 20);  // 20 Hz commands for ~2 s
+  EXPECT_GE(summary.channels.at("HEARTBEAT").count, 4);
+  EXPECT_GE(summary.channels.at("GRAPH_STATUS").count, 2);
+  EXPECT_GE(summary.channels.at("CONTROL_COMMAND").count, 20);
+  for (const auto& [channel, c] : summary.channels) EXPECT_EQ(c.decode_failures, 0) << channel;
+  for (const char* log : {"/robot-model.log", "/drive-pattern.log", "/logger.log", "/launch.log", "/status.json"}) {
+    EXPECT_TRUE(std::filesystem::exists(dir + log)) << log;
+  }
+}
+
+}  // namespace
+}  // namespace topay::test
