@@ -95,6 +95,30 @@ std::vector<std::uint8_t> FloodFill(const GridGeometry2& g, const std::vector<st
   return reached;
 }
 
+// 8-connected flood fill over allowed cells from `seed`, inside the grid only.
+std::vector<std::uint8_t> FloodFillInside(const GridGeometry2& g,
+                                          const std::vector<std::uint8_t>& allowed,
+                                          const Eigen::Vector2i& seed) {
+  std::vector<std::uint8_t> reached(allowed.size(), 0);
+  std::vector<Eigen::Vector2i> stack{seed};
+  reached[g.Index(seed.x(), seed.y())] = 1;
+  while (!stack.empty()) {
+    const Eigen::Vector2i c = stack.back();
+    stack.pop_back();
+    for (int dy = -1; dy <= 1; ++dy) {
+      for (int dx = -1; dx <= 1; ++dx) {
+        const int ix = c.x() + dx, iy = c.y() + dy;
+        if (ix < 0 || iy < 0 || ix >= g.dims.x() || iy >= g.dims.y()) continue;
+        const std::int64_t i = g.Index(ix, iy);
+        if (allowed[i] == 0 || reached[i] != 0) continue;
+        reached[i] = 1;
+        stack.emplace_back(ix, iy);
+      }
+    }
+  }
+  return reached;
+}
+
 // True if a border cell was reached (then the free outside of the grid was too).
 bool ReachesOutside(const GridGeometry2& g, const std::vector<std::uint8_t>& reached) {
   const int nx = g.dims.x(), ny = g.dims.y();
@@ -140,6 +164,39 @@ std::vector<std::uint8_t> AllowedCells(const Scene& scene, const Kinematics& kin
     if (std::isfinite(need)) MarkBlocked(g, box, need, slack, &allowed);
   }
   return allowed;
+}
+
+// CertifyBaseOpen's cells: those keeping every needed distance + the clearance everywhere
+// in them, and within the approach radius of each of `ends` CertifyBaseEnclosed's lenient
+// ones.
+std::vector<std::uint8_t> OpenCells(const Scene& scene, const Kinematics& kinematics,
+                                    const GridGeometry2& g, const BaseOpennessOptions& openness,
+                                    const std::vector<Eigen::Vector2d>& ends) {
+  const double half_diagonal = g.resolution_m / std::sqrt(2.0);
+  std::vector<std::uint8_t> allowed =
+      AllowedCells(scene, kinematics, g, -(openness.clearance_m + half_diagonal));
+  const std::vector<std::uint8_t> lenient = AllowedCells(scene, kinematics, g, half_diagonal);
+  const int span = static_cast<int>(std::ceil(openness.approach_radius_m / g.resolution_m)) + 1;
+  for (const Eigen::Vector2d& p : ends) {
+    const Eigen::Vector2i c = g.CellOf(p);
+    for (int iy = std::max(c.y() - span, 0); iy <= std::min(c.y() + span, g.dims.y() - 1); ++iy) {
+      for (int ix = std::max(c.x() - span, 0); ix <= std::min(c.x() + span, g.dims.x() - 1);
+           ++ix) {
+        if ((g.CellCenter(ix, iy) - p).norm() <= openness.approach_radius_m) {
+          allowed[g.Index(ix, iy)] = lenient[g.Index(ix, iy)];
+        }
+      }
+    }
+  }
+  return allowed;
+}
+
+void CheckOpenness(const char* name, const BaseOpennessOptions& openness) {
+  if (!(openness.clearance_m >= 0.0) || !std::isfinite(openness.clearance_m) ||
+      !(openness.approach_radius_m >= 0.0) || !std::isfinite(openness.approach_radius_m)) {
+    throw std::invalid_argument(std::string(name) +
+                                ": clearance_m and approach_radius_m must be finite and >= 0");
+  }
 }
 
 // The grid of a window of half side window_m around p_WB_m: cells of CertifyBaseUnreachable's
@@ -194,26 +251,12 @@ BaseReachability CertifyBaseOpen(const Scene& scene, const Kinematics& kinematic
                                  const BaseOpennessOptions& openness,
                                  const BaseReachabilityOptions& options) {
   CheckWindowInputs("CertifyBaseOpen", p_WB_m, window_m, options);
-  if (!(openness.clearance_m >= 0.0) || !std::isfinite(openness.clearance_m) ||
-      !(openness.approach_radius_m >= 0.0) || !std::isfinite(openness.approach_radius_m)) {
-    throw std::invalid_argument(
-        "CertifyBaseOpen: clearance_m and approach_radius_m must be finite and >= 0");
-  }
+  CheckOpenness("CertifyBaseOpen", openness);
   const GridGeometry2 g = WindowGrid(scene, p_WB_m, window_m, options.resolution_m);
-  const double half_diagonal = options.resolution_m / std::sqrt(2.0);
   // Every point of a cell whose centre keeps need + clearance + half a diagonal keeps
   // need + clearance (each footprint distance is 1-Lipschitz); near the position itself, the
   // lenient cells of CertifyBaseEnclosed.
-  std::vector<std::uint8_t> allowed =
-      AllowedCells(scene, kinematics, g, -(openness.clearance_m + half_diagonal));
-  const std::vector<std::uint8_t> lenient = AllowedCells(scene, kinematics, g, half_diagonal);
-  for (int iy = 0; iy < g.dims.y(); ++iy) {
-    for (int ix = 0; ix < g.dims.x(); ++ix) {
-      if ((g.CellCenter(ix, iy) - p_WB_m).norm() <= openness.approach_radius_m) {
-        allowed[g.Index(ix, iy)] = lenient[g.Index(ix, iy)];
-      }
-    }
-  }
+  const std::vector<std::uint8_t> allowed = OpenCells(scene, kinematics, g, openness, {p_WB_m});
   const Eigen::Vector2i cell = g.CellOf(p_WB_m);
   BaseReachability out;
   out.certified_unreachable = true;  // here: "not proven open"
@@ -229,6 +272,71 @@ BaseReachability CertifyBaseOpen(const Scene& scene, const Kinematics& kinematic
                          std::to_string(out.component_cells) + " cells reached)"
                    : "the base can leave the window with the clearance";
   return out;
+}
+
+ProvenBaseRegion::ProvenBaseRegion(const Scene& scene, const Kinematics& kinematics,
+                                   const Eigen::Vector2d& p_start_m,
+                                   const BaseOpennessOptions& openness,
+                                   const BaseReachabilityOptions& options)
+    : scene_(&scene),
+      kinematics_(&kinematics),
+      openness_(openness),
+      grid_(GridGeometry2::FromBounds(Eigen::AlignedBox2d(scene.bounds_W_m.min().head<2>(),
+                                                          scene.bounds_W_m.max().head<2>()),
+                                      options.resolution_m)) {
+  CheckOpenness("ProvenBaseRegion", openness);
+  if (!p_start_m.allFinite() || !(options.resolution_m > 0.0)) {
+    throw std::invalid_argument(
+        "ProvenBaseRegion: need a finite start and resolution_m > 0");
+  }
+  if (!grid_.Contains(p_start_m)) return;
+  const std::vector<std::uint8_t> allowed =
+      OpenCells(scene, kinematics, grid_, openness, {p_start_m});
+  const Eigen::Vector2i cell = grid_.CellOf(p_start_m);
+  if (allowed[grid_.Index(cell.x(), cell.y())] == 0) return;
+  reached_ = FloodFill(grid_, allowed, cell);
+  for (std::uint8_t r : reached_) num_cells_ += r;
+}
+
+bool ProvenBaseRegion::Reaches(const Eigen::Vector2d& p_m) const {
+  if (reached_.empty() || !p_m.allFinite() || !grid_.Contains(p_m)) return false;
+  // The end's approach: lenient cells within approach_radius_m of it, filled from its cell;
+  // joined if one of them was reached from the start.
+  const double r = openness_.approach_radius_m + grid_.resolution_m;
+  const Eigen::AlignedBox2d box(p_m - Eigen::Vector2d(r, r), p_m + Eigen::Vector2d(r, r));
+  const GridGeometry2 local = GridGeometry2::FromBounds(
+      Eigen::AlignedBox2d(grid_.CellCenter(grid_.CellOf(box.min()).x(), grid_.CellOf(box.min()).y()) -
+                              Eigen::Vector2d::Constant(0.5 * grid_.resolution_m),
+                          grid_.CellCenter(grid_.CellOf(box.max()).x(), grid_.CellOf(box.max()).y()) +
+                              Eigen::Vector2d::Constant(0.5 * grid_.resolution_m)),
+      grid_.resolution_m);
+  const std::vector<std::uint8_t> allowed = OpenCells(*scene_, *kinematics_, local, openness_, {p_m});
+  std::vector<std::uint8_t> approach = allowed;
+  for (int iy = 0; iy < local.dims.y(); ++iy) {
+    for (int ix = 0; ix < local.dims.x(); ++ix) {
+      if ((local.CellCenter(ix, iy) - p_m).norm() > openness_.approach_radius_m) {
+        approach[local.Index(ix, iy)] = 0;
+      }
+    }
+  }
+  const Eigen::Vector2i cell = local.CellOf(p_m);
+  if (approach[local.Index(cell.x(), cell.y())] == 0) return false;
+  const std::vector<std::uint8_t> filled = FloodFillInside(local, approach, cell);
+  for (int iy = 0; iy < local.dims.y(); ++iy) {
+    for (int ix = 0; ix < local.dims.x(); ++ix) {
+      if (filled[local.Index(ix, iy)] == 0) continue;
+      const Eigen::Vector2i global = grid_.CellOf(local.CellCenter(ix, iy));
+      // A reached cell of the start's region next to (or at) a filled approach cell.
+      for (int dy = -1; dy <= 1; ++dy) {
+        for (int dx = -1; dx <= 1; ++dx) {
+          const int gx = global.x() + dx, gy = global.y() + dy;
+          if (gx < 0 || gy < 0 || gx >= grid_.dims.x() || gy >= grid_.dims.y()) continue;
+          if (reached_[grid_.Index(gx, gy)] != 0) return true;
+        }
+      }
+    }
+  }
+  return false;
 }
 
 BaseReachability CertifyBaseUnreachable(const Scene& scene, const Kinematics& kinematics,

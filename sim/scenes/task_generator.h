@@ -49,10 +49,11 @@ struct TaskGeneratorOptions {
   /// half side (m) around it with tight_passage_clearance_m to spare. 0: no such check.
   double tight_pocket_window_m = 2.0;
   /// The spare clearance (m) of that way out (BaseOpennessOptions::clearance_m), except in
-  /// the last tight_approach_radius_m (m) before the end. A passage within a centimetre of
-  /// the base's width is not one a robot is driven through: of 50 Tables small tight tasks
-  /// drawn with the lenient pocket test alone (CertifyBaseEnclosed), 5 had an end behind
-  /// such a gap, and no planner move reached it (docs/benchmarks.md, "Close quarters").
+  /// the last tight_approach_radius_m (m) before the end; the goal's base must also be
+  /// reachable from the start's with it (ProvenBaseRegion). A passage within a centimetre of
+  /// the base's width is not one a robot is driven through: with the lenient pocket test
+  /// alone (CertifyBaseEnclosed), 5 of 50 Tables small tight tasks had an end behind such a
+  /// gap, reached by no straight exact move (docs/benchmarks.md, "Close quarters").
   double tight_passage_clearance_m = 0.01;
   double tight_approach_radius_m = 0.1;
   /// Arm configurations drawn (uniform within the joint limits) per tight base pose.

@@ -87,15 +87,21 @@ class TightEndSampler {
   }
 
   // A tight goal of `kind` in range of `start`; *table_top: the anchor for on/under kinds.
+  // Its base must be one the start's base can reach (ProvenBaseRegion).
   bool DrawGoal(const WholeBodyState& start, TightGoalKind kind, WholeBodyState* state,
                 TightEnd* end, int* table_top) {
     const Eigen::Vector2d p_start(start.x_m, start.y_m);
+    std::optional<ProvenBaseRegion> from_start;
+    if (options_.tight_pocket_window_m > 0.0) {
+      from_start.emplace(scene_, kinematics_, p_start, Openness());
+    }
     std::vector<Anchor> anchors;
     for (const Anchor& a : kind == TightGoalKind::kNearBox ? any_box_ : table_tops_) {
       const double d = (Center(a) - p_start).norm();
       if (d + a.reach_m >= bounds_.min_m && d - a.reach_m <= bounds_.max_m) anchors.push_back(a);
     }
-    return DrawEnd(anchors, kind, p_start, state, end, table_top);
+    return DrawEnd(anchors, kind, p_start, state, end, table_top,
+                   from_start ? &*from_start : nullptr);
   }
 
  private:
@@ -120,7 +126,7 @@ class TightEndSampler {
 
   bool DrawEnd(const std::vector<Anchor>& anchors, TightGoalKind kind,
                const std::optional<Eigen::Vector2d>& p_start, WholeBodyState* state,
-               TightEnd* end, int* table_top) {
+               TightEnd* end, int* table_top, const ProvenBaseRegion* from_start = nullptr) {
     if (anchors.empty()) return false;
     const int last = static_cast<int>(anchors.size()) - 1;
     for (int i = 0; i < options_.max_tight_base_tries; ++i) {
@@ -129,6 +135,7 @@ class TightEndSampler {
       if (!DrawBasePose(box, state)) continue;
       const Eigen::Vector2d p_WB(state->x_m, state->y_m);
       if (p_start && !bounds_.Contains((p_WB - *p_start).norm())) continue;
+      if (from_start != nullptr && !from_start->Reaches(p_WB)) continue;
       if (DrawTightArm(kind, box, state, end) && !InPocket(*state)) {
         if (table_top != nullptr) *table_top = kind == TightGoalKind::kNearBox ? -1 : anchor.box;
         return true;
@@ -159,12 +166,16 @@ class TightEndSampler {
   // clearance (CertifyBaseOpen).
   bool InPocket(const WholeBodyState& state) const {
     if (options_.tight_pocket_window_m == 0.0) return false;
+    return CertifyBaseOpen(scene_, kinematics_, Eigen::Vector2d(state.x_m, state.y_m),
+                           options_.tight_pocket_window_m, Openness())
+        .certified_unreachable;
+  }
+
+  BaseOpennessOptions Openness() const {
     BaseOpennessOptions openness;
     openness.clearance_m = options_.tight_passage_clearance_m;
     openness.approach_radius_m = options_.tight_approach_radius_m;
-    return CertifyBaseOpen(scene_, kinematics_, Eigen::Vector2d(state.x_m, state.y_m),
-                           options_.tight_pocket_window_m, openness)
-        .certified_unreachable;
+    return openness;
   }
 
   // Every arm sphere above the floor and the end-effector point inside the scene's bounds.

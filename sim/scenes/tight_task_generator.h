@@ -47,7 +47,10 @@ bool GoalKindHolds(TightGoalKind kind, const OrientedBox& table_top, const Eigen
 ///     base_unreachable certificate reports such tasks);
 ///  3. the goal likewise, its anchor among the boxes whose grown footprint meets the range's
 ///     annulus around the start (table tops only for kOnTable / kUnderTable, whose end
-///     effector must then meet GoalKindHolds for the anchor), its base distance in range.
+///     effector must then meet GoalKindHolds for the anchor), its base distance in range,
+///     and its base one the start's can reach through passages with
+///     tight_passage_clearance_m to spare (ProvenBaseRegion from the start; unless
+///     tight_pocket_window_m is 0): the robot drove from the one to the other.
 /// Every number is on the 1e-6 grid (quantize.h). task.tight records each end's exact
 /// clearance, nearest box and body, the goal kind and its table top; task.seed = seed,
 /// task.scene_seed = scene.scene.seed, X_WE_goal = FK(goal). Same scene, seed and options,

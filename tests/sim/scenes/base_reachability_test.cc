@@ -140,6 +140,32 @@ TEST_F(BaseReachabilityTest, ATightEndLeavesThroughItsApproach) {
   EXPECT_THROW(CertifyBaseOpen(SplitRoom(0.86), kinematics_, kLeft, 0.0), std::invalid_argument);
 }
 
+// ProvenBaseRegion: the room-wide version, from a start to any end.
+TEST_F(BaseReachabilityTest, TheProvenRegionCrossesOnlyGapsWithTheClearance) {
+  // (The region keeps a pointer to its scene: the scenes must outlive it.)
+  const Scene wide_gap = SplitRoom(0.86), narrow_gap = SplitRoom(0.83), shut = SplitRoom(0.70);
+  const ProvenBaseRegion wide(wide_gap, kinematics_, kLeft);
+  EXPECT_GT(wide.num_cells(), 0);
+  EXPECT_TRUE(wide.Reaches(kRight));
+  EXPECT_TRUE(wide.Reaches({-0.8, -1.2}));
+  const ProvenBaseRegion narrow(narrow_gap, kinematics_, kLeft);
+  EXPECT_FALSE(narrow.Reaches(kRight));
+  EXPECT_TRUE(narrow.Reaches({-0.8, -1.2}));  // same side
+  EXPECT_FALSE(ProvenBaseRegion(shut, kinematics_, kLeft).Reaches(kRight));
+  // An end 3 mm from the right wall: reached through its approach disc.
+  const Eigen::Vector2d p_tight(2.9 - 0.40 - 0.003, -0.3);
+  EXPECT_TRUE(wide.Reaches(p_tight));
+  BaseOpennessOptions no_approach;
+  no_approach.approach_radius_m = 0.0;
+  EXPECT_FALSE(ProvenBaseRegion(wide_gap, kinematics_, kLeft, no_approach).Reaches(p_tight));
+  // Inside the divider, or outside the room: never.
+  EXPECT_FALSE(wide.Reaches({0.0, 1.5}));
+  EXPECT_FALSE(wide.Reaches({10.0, 0.0}));
+  EXPECT_THROW(ProvenBaseRegion(wide_gap, kinematics_,
+                                {std::numeric_limits<double>::quiet_NaN(), 0.0}),
+               std::invalid_argument);
+}
+
 TEST_F(BaseReachabilityTest, AGoalDiscReachingTheStartsSideIsNotExcluded) {
   // Left cells end at x = -(0.40 - 0.01 / sqrt 2 + 0.05) ~ -0.44 m; kRight is at x = 1.5.
   BaseReachabilityOptions o;

@@ -79,6 +79,15 @@ class TightTaskGeneratorTest : public ::testing::Test {
     const PlanningTask& task = c.task;
     ASSERT_TRUE(task.tight.has_value());
     const SceneClearanceChecker checker(kinematics_, c.scene.scene);
+    // The goal's base is one the start's can reach (passages with a centimetre to spare).
+    BaseOpennessOptions openness;
+    openness.clearance_m = options.tight_passage_clearance_m;
+    openness.approach_radius_m = options.tight_approach_radius_m;
+    if (options.tight_pocket_window_m > 0.0) {
+      EXPECT_TRUE(ProvenBaseRegion(c.scene.scene, kinematics_,
+                                   Eigen::Vector2d(task.start.x_m, task.start.y_m), openness)
+                      .Reaches(Eigen::Vector2d(task.goal.x_m, task.goal.y_m)));
+    }
     {
       SCOPED_TRACE("start");
       ExpectTightEnd(checker, c.scene.scene, task.start, task.tight->start, options);
