@@ -211,6 +211,21 @@ GridGeometry2 WindowGrid(const Scene& scene, const Eigen::Vector2d& p_WB_m, doub
   return GridGeometry2::FromBounds(Eigen::AlignedBox2d(lo, hi), res);
 }
 
+// The flood fill of a window's allowed cells from p's cell: true if it reaches the border
+// (the way out); out->component_cells gets the cells reached, 0 with out->reason set if p's
+// own cell is not allowed.
+bool LeavesWindow(const GridGeometry2& g, const std::vector<std::uint8_t>& allowed,
+                  const Eigen::Vector2d& p_m, BaseReachability* out) {
+  const Eigen::Vector2i cell = g.CellOf(p_m);
+  if (allowed[g.Index(cell.x(), cell.y())] == 0) {
+    out->reason = "the position is not allowed (the rigid lower body is in collision)";
+    return false;
+  }
+  const std::vector<std::uint8_t> reached = FloodFill(g, allowed, cell);
+  for (std::uint8_t r : reached) out->component_cells += r;
+  return ReachesOutside(g, reached);
+}
+
 void CheckWindowInputs(const char* name, const Eigen::Vector2d& p_WB_m, double window_m,
                        const BaseReachabilityOptions& options) {
   if (!p_WB_m.allFinite() || !(window_m > 0.0) || !std::isfinite(window_m) ||
@@ -228,17 +243,10 @@ BaseReachability CertifyBaseEnclosed(const Scene& scene, const Kinematics& kinem
   CheckWindowInputs("CertifyBaseEnclosed", p_WB_m, window_m, options);
   const GridGeometry2 g = WindowGrid(scene, p_WB_m, window_m, options.resolution_m);
   const double slack = options.resolution_m / std::sqrt(2.0);
-  const std::vector<std::uint8_t> allowed = AllowedCells(scene, kinematics, g, slack);
-  const Eigen::Vector2i cell = g.CellOf(p_WB_m);
   BaseReachability out;
-  if (allowed[g.Index(cell.x(), cell.y())] == 0) {
-    out.certified_unreachable = true;
-    out.reason = "the position is not allowed (the rigid lower body is in collision)";
-    return out;
-  }
-  const std::vector<std::uint8_t> reached = FloodFill(g, allowed, cell);
-  for (std::uint8_t r : reached) out.component_cells += r;
-  out.certified_unreachable = !ReachesOutside(g, reached);
+  out.certified_unreachable =
+      !LeavesWindow(g, AllowedCells(scene, kinematics, g, slack), p_WB_m, &out);
+  if (out.component_cells == 0) return out;
   out.reason = out.certified_unreachable
                    ? "shut in a pocket of " + std::to_string(out.component_cells) +
                          " cells inside the window"
@@ -256,17 +264,10 @@ BaseReachability CertifyBaseOpen(const Scene& scene, const Kinematics& kinematic
   // Every point of a cell whose centre keeps need + clearance + half a diagonal keeps
   // need + clearance (each footprint distance is 1-Lipschitz); near the position itself, the
   // lenient cells of CertifyBaseEnclosed.
-  const std::vector<std::uint8_t> allowed = OpenCells(scene, kinematics, g, openness, {p_WB_m});
-  const Eigen::Vector2i cell = g.CellOf(p_WB_m);
-  BaseReachability out;
-  out.certified_unreachable = true;  // here: "not proven open"
-  if (allowed[g.Index(cell.x(), cell.y())] == 0) {
-    out.reason = "the position is not allowed (the rigid lower body is in collision)";
-    return out;
-  }
-  const std::vector<std::uint8_t> reached = FloodFill(g, allowed, cell);
-  for (std::uint8_t r : reached) out.component_cells += r;
-  out.certified_unreachable = !ReachesOutside(g, reached);
+  BaseReachability out;  // certified_unreachable here: "not proven open"
+  out.certified_unreachable =
+      !LeavesWindow(g, OpenCells(scene, kinematics, g, openness, {p_WB_m}), p_WB_m, &out);
+  if (out.component_cells == 0) return out;
   out.reason = out.certified_unreachable
                    ? "no way out of the window with the clearance (" +
                          std::to_string(out.component_cells) + " cells reached)"
