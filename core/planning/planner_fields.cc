@@ -1,6 +1,7 @@
 #include "core/planning/planner_fields.h"
 
 #include <algorithm>
+#include <cmath>
 
 #include "core/planning/base_band.h"
 
@@ -14,17 +15,12 @@ SceneDistanceFieldsOptions PlannerFieldOptions(const Kinematics& kinematics) {
   const RigidLowerBody body = RigidLowerBodyOf(kinematics);
   options.base_band = HeightBand{0.0, body.chassis_top_m};
   if (body.top_m > body.chassis_top_m) {
-    // Up to the rigid top plus one 2D cell: the rigid spheres never move up or down, so an
-    // obstacle whose underside lies higher than that (a table top at 0.50 m over the 0.4915 m
-    // shoulder) lets the base pass under it, and the moving spheres near it are then the 3D
-    // field's (or, near an exact start or goal, the exact scene's) to keep clear. A band
-    // reaching the 3D field's margin (0.087 m) above the rigid top left 13 of 50 tight
-    // Tables small goals unreachable by the base search instead of 8 (docs/benchmarks.md,
-    // "Close quarters").
-    // The rigid spheres themselves are checked by this band exactly (offset = radius - their
-    // reach, no 3D margin; SpheresToCheckOnArmField).
-    const double rigid_top_clearance_m = options.base_resolution_m;
-    options.base_upper_band = HeightBand{0.0, body.top_m + rigid_top_clearance_m};
+    // Up to the rigid top plus the 3D field's margin: the arm, however folded, reaches at
+    // least the rigid top, and its moving spheres need that margin on the 3D field, so the
+    // base must not pass under anything lower. The rigid spheres themselves are checked by this
+    // band exactly (offset = radius - their reach, no 3D margin; SpheresToCheckOnArmField).
+    const double arm_margin_m = std::sqrt(3.0) * options.resolution_m;  // WholeBodyValidity's
+    options.base_upper_band = HeightBand{0.0, body.top_m + arm_margin_m};
     options.base_upper_band_offset_m =
         std::max(0.0, kinematics.model().base_cylinder.radius_m - body.sphere_reach_m);
   }

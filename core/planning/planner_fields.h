@@ -21,10 +21,11 @@ namespace topay {
 ///    docs/benchmarks.md, "Sixth measurement");
 ///  - the 2D field in two bands (SceneDistanceFieldsOptions::base_upper_band): obstacles up
 ///    to the chassis top against the base cylinder, and obstacles up to the top of the rigid
-///    lower body (chassis and the arm's rigid spheres, RigidLowerBodyOf) plus one 2D cell
-///    (0.01 m) against the rigid spheres' horizontal reach (0.195 m on the TopAY arm): the
-///    base may stand partly under a low table top, as long as its shoulder stays clear, but
-///    never under anything lower than its shoulder; the moving spheres are the 3D field's. The field declares that band (offset_band), so the rigid spheres are
+///    lower body (chassis and the arm's rigid spheres, RigidLowerBodyOf) plus the 3D field's
+///    margin against the rigid spheres' horizontal reach (0.195 m on the TopAY arm): the base
+///    may stand partly under a
+///    low table top, as long as its shoulder stays clear, but never under anything lower than
+///    its shoulder. The field declares that band (offset_band), so the rigid spheres are
 ///    checked by it exactly (at the 2D margin) and not again on the 3D field at its larger
 ///    margin (SpheresToCheckOnArmField).
 /// Map build time at these settings: see docs/benchmarks.md ("Large scenes"); it grows

@@ -41,12 +41,12 @@ TEST_F(BaseBandTest, FrontEndBaseBandAddsTheArmMargin) {
 
 TEST_F(BaseBandTest, PlannerFieldOptionsUseTwoBands) {
   const SceneDistanceFieldsOptions options = PlannerFieldOptions(kinematics_);
-  const double one_cell_m = 0.01;  // the 2D field's cell: the band's margin over the rigid top
+  const double arm_margin_m = std::sqrt(3.0) * 0.05;
   EXPECT_EQ(options.resolution_m, 0.05);
   EXPECT_EQ(options.base_resolution_m, 0.01);
   EXPECT_NEAR(options.base_band.z_max_m, 0.155, 1e-9);
   ASSERT_TRUE(options.base_upper_band.has_value());
-  EXPECT_NEAR(options.base_upper_band->z_max_m, 0.4915 + one_cell_m, 1e-6);
+  EXPECT_NEAR(options.base_upper_band->z_max_m, 0.4915 + arm_margin_m, 1e-6);
   // The rigid spheres are checked by the upper band exactly: no 3D margin in the offset.
   EXPECT_NEAR(options.base_upper_band_offset_m, 0.40 - 0.195, 1e-6);
   EXPECT_GT(options.base_exact_cap_m, 0.40 + 0.1 + 0.02);  // above the PRM's requirement
