@@ -8,6 +8,7 @@
 #include <cstdio>
 #include <exception>
 #include <limits>
+#include <optional>
 #include <string>
 #include <thread>
 #include <utility>
@@ -221,9 +222,10 @@ WholeBodyPlanResult WholeBodyPlanner::PlanBy(Clock::time_point deadline,
       const std::stop_callback forward_plan(plan_stop.get_token(),
                                             [&round_stop] { round_stop.request_stop(); });
       const bool may_retry = round + 1 < options_.retry.max_rounds;
-      const StopDeadline round_limit(
-          &round_stop, may_retry ? RoundDeadline(end, options_.retry.round_time_share)
-                                 : Clock::time_point::max());
+      std::optional<StopDeadline> round_limit;  // the last round: the plan's limit alone
+      if (may_retry) {
+        round_limit.emplace(&round_stop, RoundDeadline(end, options_.retry.round_time_share));
+      }
       result = PlanRound(round, level, start, X_WE_goal, hint, round_stop.get_token(),
                          plan_stop.get_token());
       round_cut = round_stop.stop_requested() && !plan_stop.stop_requested();

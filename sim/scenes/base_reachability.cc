@@ -61,10 +61,11 @@ void MarkBlocked(const GridGeometry2& g, const OrientedBox& box, double need, do
   }
 }
 
-// 8-connected flood fill over allowed cells from `seed`; the outside of the grid joins all
-// allowed border cells (the first time a border cell is reached, all of them are queued).
+// 8-connected flood fill over allowed cells from `seed`; with join_outside, the outside of
+// the grid joins all allowed border cells (the first time a border cell is reached, all of
+// them are queued).
 std::vector<std::uint8_t> FloodFill(const GridGeometry2& g, const std::vector<std::uint8_t>& allowed,
-                                    const Eigen::Vector2i& seed) {
+                                    const Eigen::Vector2i& seed, bool join_outside = true) {
   const int nx = g.dims.x(), ny = g.dims.y();
   std::vector<std::uint8_t> reached(allowed.size(), 0);
   std::vector<Eigen::Vector2i> stack;
@@ -80,7 +81,7 @@ std::vector<std::uint8_t> FloodFill(const GridGeometry2& g, const std::vector<st
     const Eigen::Vector2i c = stack.back();
     stack.pop_back();
     const bool on_border = c.x() == 0 || c.y() == 0 || c.x() == nx - 1 || c.y() == ny - 1;
-    if (on_border && !outside_joined) {
+    if (join_outside && on_border && !outside_joined) {
       outside_joined = true;
       for (int ix = 0; ix < nx; ++ix) { push(ix, 0); push(ix, ny - 1); }
       for (int iy = 0; iy < ny; ++iy) { push(0, iy); push(nx - 1, iy); }
@@ -89,30 +90,6 @@ std::vector<std::uint8_t> FloodFill(const GridGeometry2& g, const std::vector<st
       for (int dx = -1; dx <= 1; ++dx) {
         const int ix = c.x() + dx, iy = c.y() + dy;
         if (ix >= 0 && iy >= 0 && ix < nx && iy < ny) push(ix, iy);
-      }
-    }
-  }
-  return reached;
-}
-
-// 8-connected flood fill over allowed cells from `seed`, inside the grid only.
-std::vector<std::uint8_t> FloodFillInside(const GridGeometry2& g,
-                                          const std::vector<std::uint8_t>& allowed,
-                                          const Eigen::Vector2i& seed) {
-  std::vector<std::uint8_t> reached(allowed.size(), 0);
-  std::vector<Eigen::Vector2i> stack{seed};
-  reached[g.Index(seed.x(), seed.y())] = 1;
-  while (!stack.empty()) {
-    const Eigen::Vector2i c = stack.back();
-    stack.pop_back();
-    for (int dy = -1; dy <= 1; ++dy) {
-      for (int dx = -1; dx <= 1; ++dx) {
-        const int ix = c.x() + dx, iy = c.y() + dy;
-        if (ix < 0 || iy < 0 || ix >= g.dims.x() || iy >= g.dims.y()) continue;
-        const std::int64_t i = g.Index(ix, iy);
-        if (allowed[i] == 0 || reached[i] != 0) continue;
-        reached[i] = 1;
-        stack.emplace_back(ix, iy);
       }
     }
   }
@@ -302,17 +279,12 @@ ProvenBaseRegion::ProvenBaseRegion(const Scene& scene, const Kinematics& kinemat
 bool ProvenBaseRegion::Reaches(const Eigen::Vector2d& p_m) const {
   if (reached_.empty() || !p_m.allFinite() || !grid_.Contains(p_m)) return false;
   // The end's approach: lenient cells within approach_radius_m of it, filled from its cell;
-  // joined if one of them was reached from the start.
-  const double r = openness_.approach_radius_m + grid_.resolution_m;
-  const Eigen::AlignedBox2d box(p_m - Eigen::Vector2d(r, r), p_m + Eigen::Vector2d(r, r));
-  const GridGeometry2 local = GridGeometry2::FromBounds(
-      Eigen::AlignedBox2d(grid_.CellCenter(grid_.CellOf(box.min()).x(), grid_.CellOf(box.min()).y()) -
-                              Eigen::Vector2d::Constant(0.5 * grid_.resolution_m),
-                          grid_.CellCenter(grid_.CellOf(box.max()).x(), grid_.CellOf(box.max()).y()) +
-                              Eigen::Vector2d::Constant(0.5 * grid_.resolution_m)),
-      grid_.resolution_m);
-  const std::vector<std::uint8_t> allowed = OpenCells(*scene_, *kinematics_, local, openness_, {p_m});
-  std::vector<std::uint8_t> approach = allowed;
+  // joined if one of them was reached from the start (or lies next to such a cell).
+  const double res = grid_.resolution_m;
+  const GridGeometry2 local =
+      WindowGrid(*scene_, p_m, openness_.approach_radius_m + res, res);
+  std::vector<std::uint8_t> approach =
+      AllowedCells(*scene_, *kinematics_, local, res / std::sqrt(2.0));
   for (int iy = 0; iy < local.dims.y(); ++iy) {
     for (int ix = 0; ix < local.dims.x(); ++ix) {
       if ((local.CellCenter(ix, iy) - p_m).norm() > openness_.approach_radius_m) {
@@ -322,7 +294,7 @@ bool ProvenBaseRegion::Reaches(const Eigen::Vector2d& p_m) const {
   }
   const Eigen::Vector2i cell = local.CellOf(p_m);
   if (approach[local.Index(cell.x(), cell.y())] == 0) return false;
-  const std::vector<std::uint8_t> filled = FloodFillInside(local, approach, cell);
+  const std::vector<std::uint8_t> filled = FloodFill(local, approach, cell, false);
   for (int iy = 0; iy < local.dims.y(); ++iy) {
     for (int ix = 0; ix < local.dims.x(); ++ix) {
       if (filled[local.Index(ix, iy)] == 0) continue;
