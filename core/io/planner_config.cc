@@ -45,6 +45,7 @@ void ReadPlanner(YamlSection section, WholeBodyPlannerOptions* o) {
   retry.Read("min_time_left_s", &o->retry.min_time_left_s);
   retry.Read("clearance_step_m", &o->retry.clearance_step_m);
   retry.Read("round_time_share", &o->retry.round_time_share);
+  retry.Read("arm_budget_growth", &o->retry.arm_budget_growth);
   retry.Finish();
   YamlSection limits = section.Section("base_limits");
   if (limits.present()) {  // any field given: the rest from BaseLimits' defaults
@@ -135,6 +136,7 @@ void ReadFrontEnd(YamlSection section, FrontEndOptions* o) {
   escape.Read("step_m", &o->base_escape.step_m);
   escape.Read("num_directions", &o->base_escape.num_directions);
   escape.Read("check_step_m", &o->base_escape.check_step_m);
+  escape.Read("route_step_m", &o->base_escape.route_step_m);
   escape.Finish();
   ReadTopology(section.Section("topology"), &o->topology);
   YamlSection discretisation = section.Section("discretisation");

@@ -38,6 +38,8 @@ void SignedDistanceField<Dim>::Rebuild(const OccupancyGrid<Dim>& occupancy,
   inv_resolution_ = 1.0 / g.resolution_m;
   max_distance_m_ = max_distance_m;
   exactness_margin_m_ = std::sqrt(static_cast<double>(Dim)) * g.resolution_m;
+  offset_band_.reset();  // a rebuilt field holds no lowered band
+  primary_band_.reset();
 }
 
 template <int Dim>
@@ -73,6 +75,7 @@ void SignedDistanceField<Dim>::LowerTo(const SignedDistanceField& other, double 
   if (!std::isfinite(offset_m)) {
     throw std::invalid_argument(Name<Dim>("LowerTo") + ": offset_m must be finite");
   }
+  if (!primary_band_) primary_band_ = std::make_shared<const SignedDistanceField>(*this);
   for (std::size_t i = 0; i < values_.size(); ++i) {
     values_[i] = std::min(values_[i], static_cast<float>(other.values_[i] + offset_m));
   }

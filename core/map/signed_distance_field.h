@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <memory>
 #include <optional>
 #include <vector>
 
@@ -81,8 +82,16 @@ class SignedDistanceField {
   /// geometry (std::invalid_argument otherwise, also for a non-finite offset). The result is
   /// still 1-Lipschitz between neighbouring cells, and its interpolant is at most the minimum
   /// of the two interpolants (interpolation is a convex combination), so a point that clears a
-  /// requirement on the result clears it on both fields.
+  /// requirement on the result clears it on both fields. The first LowerTo keeps the field as
+  /// it was before as primary_band().
   void LowerTo(const SignedDistanceField& other, double offset_m);
+
+  /// The field of this field's own obstacles alone, as it was before the first LowerTo (for
+  /// the base field: the obstacles the base cylinder itself can touch, without the band
+  /// lowered in for the parts above it); null if nothing was lowered in. The lowered field is
+  /// never above it, so it matters only where a requirement on the lowered field is relaxed
+  /// (near a start or goal under a table top: EndpointRelief).
+  const SignedDistanceField* primary_band() const { return primary_band_.get(); }
 
   const Geometry& geometry() const { return geometry_; }
   double max_distance_m() const { return max_distance_m_; }
@@ -125,6 +134,7 @@ class SignedDistanceField {
   double exactness_margin_m_ = 0.0;
   std::optional<OffsetBand> offset_band_;
   std::vector<float> values_;
+  std::shared_ptr<const SignedDistanceField> primary_band_;  // immutable: shared by copies
 };
 
 extern template class SignedDistanceField<2>;

@@ -30,6 +30,8 @@ void CheckFraction(double fraction, const char* which) {
 void CheckDeficit(const ClearanceDeficit& deficit, const char* which) {
   Require(std::isfinite(deficit.base_m) && deficit.base_m >= 0.0,
           std::string(which) + " base deficit must be finite and >= 0");
+  Require(std::isfinite(deficit.base_primary_m) && deficit.base_primary_m >= 0.0,
+          std::string(which) + " primary-band base deficit must be finite and >= 0");
   Require(deficit.spheres_m.allFinite() && (deficit.spheres_m.array() >= 0.0).all(),
           std::string(which) + " sphere deficits must be finite and >= 0");
 }
@@ -72,9 +74,13 @@ ClearanceDeficit ComputeClearanceDeficit(const SamplePenalties& penalties,
   ClearanceDeficit deficit;
   // Eq. (13) as SamplePenalties evaluates it: the base on the 2D field, the arm spheres it
   // checks on the 3D field.
+  const Eigen::Vector2d p_WB(state.x_m, state.y_m);
   deficit.base_m =
-      Deficit(penalties.base_threshold_m(),
-              penalties.base_field().Distance(Eigen::Vector2d(state.x_m, state.y_m)), slack_m);
+      Deficit(penalties.base_threshold_m(), penalties.base_field().Distance(p_WB), slack_m);
+  const SignedDistanceField2* primary = penalties.base_field().primary_band();
+  deficit.base_primary_m =
+      primary ? Deficit(penalties.base_threshold_m(), primary->Distance(p_WB), slack_m)
+              : deficit.base_m;
   const Eigen::VectorXd& thresholds = penalties.sphere_thresholds_m();
   deficit.spheres_m.setZero(thresholds.size());
   KinematicsCache cache = kinematics.MakeCache();

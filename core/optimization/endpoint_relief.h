@@ -32,6 +32,11 @@ void CheckEndpointReliefOptions(const EndpointReliefOptions& options);
 /// (SpheresToCheckOnArmField) have deficit 0.
 struct ClearanceDeficit {
   double base_m = 0.0;
+  /// The base against the 2D field's primary band alone (SignedDistanceField::primary_band:
+  /// the obstacles the base cylinder itself can touch), <= base_m; base_m for a field without
+  /// a lowered band. Where the base's requirement is relieved, the primary band's is relieved
+  /// by this much only, so a base leaving a table top's shadow keeps its margin to the legs.
+  double base_primary_m = 0.0;
   Eigen::VectorXd spheres_m;  ///< One per RobotModel::spheres.
 
   bool IsZero() const { return base_m == 0.0 && (spheres_m.array() == 0.0).all(); }
@@ -89,6 +94,9 @@ class EndpointRelief {
   double base_m(const Weights& w) const {
     return std::max(w.start * start_.base_m, w.goal * goal_.base_m);
   }
+  double base_primary_m(const Weights& w) const {
+    return std::max(w.start * start_.base_primary_m, w.goal * goal_.base_primary_m);
+  }
   /// Sphere s (a RobotModel::spheres index); 0 where an endpoint has no deficit for it.
   double sphere_m(int s, const Weights& w) const {
     const double a = s < start_.spheres_m.size() ? w.start * start_.spheres_m(s) : 0.0;
@@ -96,6 +104,7 @@ class EndpointRelief {
     return std::max(a, b);
   }
   double base_m(double u) const { return base_m(WeightsAt(u)); }
+  double base_primary_m(double u) const { return base_primary_m(WeightsAt(u)); }
   double sphere_m(int s, double u) const { return sphere_m(s, WeightsAt(u)); }
 
   bool has_start() const { return has_start_; }

@@ -90,6 +90,7 @@ struct SampleRelief {
   EndpointRelief::Weights weights;
 
   double base_m() const { return relief ? relief->base_m(weights) : 0.0; }
+  double base_primary_m() const { return relief ? relief->base_primary_m(weights) : 0.0; }
   double sphere_m(int s) const { return relief ? relief->sphere_m(s, weights) : 0.0; }
 };
 
@@ -121,6 +122,14 @@ void CheckClearances(const TrajectorySample& point, const KinematicsCache& cache
   const double base = base_field.Distance(Eigen::Vector2d(point.state.x_m, point.state.y_m)) -
                       model.base_cylinder.radius_m - margins.base_m + relief.base_m();
   check->Clearance(base, &report->min_base_clearance_m, "base clearance", -1, t);
+  const SignedDistanceField2* primary = base_field.primary_band();
+  if (relief.base_m() > 0.0 && primary != nullptr) {  // as SamplePenalties::EvaluateBase
+    const double base_primary =
+        primary->Distance(Eigen::Vector2d(point.state.x_m, point.state.y_m)) -
+        model.base_cylinder.radius_m - margins.base_m + relief.base_primary_m();
+    check->Clearance(base_primary, &report->min_base_clearance_m,
+                     "base clearance (primary band)", -1, t);
+  }
   for (const int s : arm_field_spheres) {
     const double arm = arm_field.Distance(cache.p_WS[s]) - model.spheres[s].radius_m -
                        margins.arm_m + relief.sphere_m(s);

@@ -267,6 +267,23 @@ void SamplePenalties::EvaluateBase(const SampleQuantities& sample, const Endpoin
       gradient->x_m -= slope * field_gradient.x();
       gradient->y_m -= slope * field_gradient.y();
     }
+    const SignedDistanceField2* primary = base_field_.primary_band();
+    if (relief_m > 0.0 && primary != nullptr) {
+      // Relieved near an endpoint, the lowered band (parts above the chassis) may come as
+      // close as the endpoint does; the primary band (what the base cylinder itself touches)
+      // keeps its threshold less the endpoint's own deficit on it (usually none).
+      const double primary_distance = primary->DistanceAndGradient(
+          Eigen::Vector2d(sample.x_m, sample.y_m), &field_gradient);
+      const double primary_slope =
+          Add(PenaltyTerm::kBaseObstacle,
+              base_threshold_m_ + tightening_.base_m - relief->base_primary_m(u) -
+                  primary_distance,
+              total, costs);
+      if (gradient && primary_slope != 0.0) {
+        gradient->x_m -= primary_slope * field_gradient.x();
+        gradient->y_m -= primary_slope * field_gradient.y();
+      }
+    }
   }
 }
 

@@ -154,7 +154,9 @@ struct SampleQuantities {
 ///   q'_k: q'_k^2 - q'_max,k^2;   q''_k: q''_k^2 - q''_max,k^2               (eqs. (11)-(12))
 ///   base: threshold - field2(x, y);  sphere s: threshold_s - field3(p_WS)  (eq. (13)),
 ///        each threshold + its tightening - its endpoint relief at the sample's u
-///        (EndpointRelief, only with the Evaluate that takes u and a relief set)
+///        (EndpointRelief, only with the Evaluate that takes u and a relief set); where
+///        the base is relieved and the 2D field has a primary band, also
+///        threshold + tightening - primary relief - primary2(x, y)
 ///   pair (i, j): margin - (|p_i - p_j| - r_i - r_j)                        (eq. (14))
 ///   chassis, sphere s: margin - (z_s - r_s - chassis top)
 /// The sphere terms need forward kinematics (once per sample, only if one of the four

@@ -40,7 +40,8 @@ BaseLimits ResolveLimits(const WholeBodyPlannerOptions& options, const Kinematic
   return options.base_limits.value_or(kinematics.model().base_limits);
 }
 
-// Round r's front end: round 0 as configured, round r > 0 with every seed derived from r.
+// Round r's front end: round 0 as configured, round r > 0 with every seed derived from r
+// and growth^r times the arm RRT* budget.
 FrontEndOptions RoundFrontEndOptions(const WholeBodyPlannerOptions& options,
                                      const Kinematics& kinematics, int round) {
   FrontEndOptions front_end = options.front_end;
@@ -52,6 +53,10 @@ FrontEndOptions RoundFrontEndOptions(const WholeBodyPlannerOptions& options,
     const std::uint64_t r = static_cast<std::uint64_t>(round);
     front_end.seed = DeriveSeed(front_end.seed, kRoundSeedSalt + r);
     front_end.ik.seed = DeriveSeed(front_end.ik.seed, kRoundSeedSalt + r);
+    const double growth = std::pow(options.retry.arm_budget_growth, round);
+    front_end.rrt.time_budget_s *= growth;
+    front_end.rrt.max_iterations =
+        static_cast<std::int64_t>(std::llround(front_end.rrt.max_iterations * growth));
   }
   return front_end;
 }

@@ -24,6 +24,8 @@ void CheckWholeBodyPlannerOptions(const WholeBodyPlannerOptions& o) {
           "retry.clearance_step_m", "finite and >= 0");
   require(o.retry.round_time_share > 0.0 && o.retry.round_time_share <= 1.0,
           "retry.round_time_share", "in (0, 1]");
+  require(o.retry.arm_budget_growth >= 1.0 && std::isfinite(o.retry.arm_budget_growth),
+          "retry.arm_budget_growth", "finite and >= 1");
 }
 
 }  // namespace topay

@@ -16,7 +16,7 @@ namespace topay {
 /// an optimizer success, the back end's clearance margins (SamplePenaltyOptions::
 /// base_field_margin_m, arm_field_margin_m) grow by clearance_step_m. Every round runs under
 /// the plan's one time limit, so a retry only ever uses time the plan had left. Retried:
-/// no goal, no base path, no arm path, no validated trajectory; never an invalid input, a
+/// no goal, no base path, no arm path (with a larger arm RRT* budget), no validated trajectory; never an invalid input, a
 /// refused start, a cancelled plan or one the time limit ended.
 struct PlanRetryOptions {
   /// Rounds in all, the first included (1: plan once, as the paper). >= 1.
@@ -31,6 +31,11 @@ struct PlanRetryOptions {
   /// the last round may use all that is left. An optimizer that has not converged in that
   /// time seldom does later, and another path often converges at once. In (0, 1].
   double round_time_share = 0.6;
+  /// Round r's arm RRT* gets growth^r times the configured budget (its time_budget_s and,
+  /// if set, max_iterations): an arm path that did not connect within one budget at a tight
+  /// end often connects with a larger one, and a retry only runs on time the plan had left.
+  /// >= 1 (1: every round the same budget).
+  double arm_budget_growth = 2.0;
 };
 
 /// Options of WholeBodyPlanner (paper Sec. III), Ceres style.

@@ -1,6 +1,7 @@
 #pragma once
 
 #include <optional>
+#include <vector>
 
 #include <Eigen/Core>
 
@@ -18,10 +19,24 @@ struct BaseEscapeOptions {
   int num_directions = 32;
   /// The straight move to an exit is checked every check_step_m (m), both ends included.
   double check_step_m = 0.01;
+  /// When no straight move leads out: a shortest route on a lattice of this spacing (m)
+  /// within max_distance_m of the trapped position, through positions the base check
+  /// accepts, then shortened by straight moves (0: straight moves only).
+  double route_step_m = 0.02;
+};
+
+/// A way out: waypoints from the trapped position (not included) to the exit (the last),
+/// joined by straight moves that each pass the base check every check_step_m.
+struct BaseEscape {
+  std::vector<Eigen::Vector2d> waypoints_W_m;
+
+  const Eigen::Vector2d& exit() const { return waypoints_W_m.back(); }
+  /// Total length (m) of the moves from `from_W` through the waypoints.
+  double LengthFrom(const Eigen::Vector2d& from_W) const;
 };
 
 /// Throws std::invalid_argument naming the first option out of range (distances and steps
-/// finite and > 0, at least 4 directions).
+/// finite and > 0, route_step_m finite and >= 0, at least 4 directions).
 void CheckBaseEscapeOptions(const BaseEscapeOptions& options);
 
 /// A way out for a base position the base path search cannot start from (or end at): a start
@@ -29,11 +44,15 @@ void CheckBaseEscapeOptions(const BaseEscapeOptions& options);
 /// clearance. Returns the nearest exit p_exit (smallest ring first; on a ring, the directions
 /// closest to the base's axis first, forwards before backwards, as the base paths are driven
 /// forwards and an exit behind costs a turn in place first) such that
-/// free_space.IsFree(p_exit) and every checked point of the straight move p_W -> p_exit passes validity.IsBaseValid (the 2D field, or in a zone the exact base
-/// cylinder). nullopt if there is none within max_distance_m. `heading_rad`: the base's yaw.
-/// The base path search then runs from p_exit, and the move is the path's first segment (the
-/// arm search checks every whole-body state along it, exactly inside the zone).
-std::optional<Eigen::Vector2d> FindBaseEscape(const BaseFreeSpace& free_space,
+/// free_space.IsFree(p_exit) and every checked point of the straight move p_W -> p_exit passes
+/// validity.IsBaseValid (the 2D field, or in a zone the exact base cylinder): one waypoint.
+/// If no straight move leads out (a base under a table top whose legs stand in the way), the
+/// shortest 8-connected route on the route_step_m lattice around p_W through accepted
+/// positions to a free one, shortened where a straight move passes: a few waypoints.
+/// nullopt if there is neither within max_distance_m. `heading_rad`: the base's yaw.
+/// The base path search then runs from the exit, and the moves are the path's first segments
+/// (the arm search checks every whole-body state along them, exactly inside the zone).
+std::optional<BaseEscape> FindBaseEscape(const BaseFreeSpace& free_space,
                                               const WholeBodyValidity& validity,
                                               const Eigen::Vector2d& p_W, double heading_rad,
                                               const BaseEscapeOptions& options = {});

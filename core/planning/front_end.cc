@@ -272,9 +272,9 @@ bool FrontEnd::FindReachableGoals(PlanContext* context) const {
     const WholeBodyValidity validity =
         validity_.WithExactZones({exact_, options_.exact_zones, {*context->start_zone_W}});
     if (!free_space.IsFree(seed_W)) {
-      seed_W = FindBaseEscape(free_space, validity, seed_W, context->start.yaw_rad,
-                              options_.base_escape)
-                   .value_or(seed_W);
+      const std::optional<BaseEscape> escape = FindBaseEscape(
+          free_space, validity, seed_W, context->start.yaw_rad, options_.base_escape);
+      if (escape) seed_W = escape->exit();
     }
   }
   const BaseReachableRegion region(base_field_, seed_W, safe_distance_m);
@@ -404,25 +404,37 @@ TopologicalPathSearchResult FrontEnd::SearchBasePathsAt(
   options.clearance_m = clearance_m;
   const BaseFreeSpace free_space(base_field_, options.base_radius_m + clearance_m);
   // A start or goal in an exact zone that the field rejects at this clearance: search from
-  // (to) the nearest position it accepts.
-  const auto escape = [&](const WholeBodyState& state, bool* escaped) {
+  // (to) the exit of its escape route (FindBaseEscape).
+  const auto escape = [&](const WholeBodyState& state) -> std::optional<BaseEscape> {
     const Eigen::Vector2d p_W = BaseOf(state);
-    if (free_space.IsFree(p_W) || !validity.exact_zones().Contains(p_W)) return p_W;
-    const auto exit = FindBaseEscape(free_space, validity, p_W, state.yaw_rad, options_.base_escape);
-    *escaped = exit.has_value();
-    return exit.value_or(p_W);
+    if (free_space.IsFree(p_W) || !validity.exact_zones().Contains(p_W)) return std::nullopt;
+    return FindBaseEscape(free_space, validity, p_W, state.yaw_rad, options_.base_escape);
   };
-  bool start_escaped = false, goal_escaped = false;
-  const Eigen::Vector2d start_W = escape(context->start, &start_escaped);
-  const Eigen::Vector2d goal_W = escape(goal.state, &goal_escaped);
+  const std::optional<BaseEscape> start_escape = escape(context->start);
+  const std::optional<BaseEscape> goal_escape = escape(goal.state);
+  const Eigen::Vector2d start_W = start_escape ? start_escape->exit() : BaseOf(context->start);
+  const Eigen::Vector2d goal_W = goal_escape ? goal_escape->exit() : BaseOf(goal.state);
+  const bool start_escaped = start_escape.has_value(), goal_escaped = goal_escape.has_value();
   TopologicalPathSearchResult search =
       SearchTopologicalBasePaths(base_field_, start_W, goal_W, options, context->stop);
   if (!search.ok() || !(start_escaped || goal_escaped)) return search;
   for (BasePath& path : search.paths) {
-    std::vector<Eigen::Vector2d>& waypoints = path.waypoints_W_m;
-    if (start_escaped) waypoints.insert(waypoints.begin(), BaseOf(context->start));
-    if (goal_escaped) waypoints.push_back(BaseOf(goal.state));
-    path.length_m = PolylineLength(waypoints);
+    // start, the start's route up to (not including) its exit, the searched path (exit to
+    // exit), the goal's route back from (not including) its exit, goal.
+    std::vector<Eigen::Vector2d> waypoints;
+    if (start_escaped) {
+      waypoints.push_back(BaseOf(context->start));
+      const std::vector<Eigen::Vector2d>& route = start_escape->waypoints_W_m;
+      waypoints.insert(waypoints.end(), route.begin(), route.end() - 1);
+    }
+    waypoints.insert(waypoints.end(), path.waypoints_W_m.begin(), path.waypoints_W_m.end());
+    if (goal_escaped) {
+      const std::vector<Eigen::Vector2d>& route = goal_escape->waypoints_W_m;
+      waypoints.insert(waypoints.end(), route.rbegin() + 1, route.rend());
+      waypoints.push_back(BaseOf(goal.state));
+    }
+    path.waypoints_W_m = std::move(waypoints);
+    path.length_m = PolylineLength(path.waypoints_W_m);
   }
   FrontEndStats& stats = context->result->stats;
   stats.start_base_escape = stats.start_base_escape || start_escaped;

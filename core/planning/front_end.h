@@ -37,8 +37,8 @@ namespace topay {
 /// checker (the scene, or later the map's voxels), a start or goal candidate the fields
 /// reject but the exact scene accepts is valid: it gets an exact zone (ExactZones,
 /// FrontEndOptions::exact_zones) in which the fields' rejections are checked again exactly,
-/// and the base path search leaves (reaches) it by a straight escape move
-/// (FindBaseEscape); the paths say how many of their first and last states needed the
+/// and the base path search leaves (reaches) it by an escape route (FindBaseEscape: a straight
+/// move, or a short route around table legs); the paths say how many of their first and last states needed the
 /// exact check (FrontEndPath::exact_prefix_states).
 ///
 /// Cancellation: Plan polls `stop` between stages and passes it (merged with its own

@@ -80,6 +80,7 @@ validator: {sample_period_s: 0.005}
   EXPECT_EQ(o.retry.max_rounds, 1);
   EXPECT_EQ(o.retry.min_time_left_s, 0.5);
   EXPECT_EQ(o.retry.clearance_step_m, PlanRetryOptions{}.clearance_step_m);
+  EXPECT_EQ(o.retry.arm_budget_growth, PlanRetryOptions{}.arm_budget_growth);
   ASSERT_TRUE(o.base_limits.has_value());
   EXPECT_EQ(o.base_limits->omega_max_radps, 1.25);
   EXPECT_EQ(o.base_limits->v_max_mps, BaseLimits{}.v_max_mps);
@@ -107,6 +108,7 @@ TEST(PlannerConfigTest, BadValuesNameTheField) {
       {"planner: {retry: {rounds: 2}}", "planner.retry.rounds"},
       {"planner: {retry: {max_rounds: 0}}", "planner.retry.max_rounds"},
       {"planner: {retry: {clearance_step_m: -0.1}}", "planner.retry.clearance_step_m"},
+      {"planner: {retry: {arm_budget_growth: 0.5}}", "planner.retry.arm_budget_growth"},
       {"plnner: {}", "plnner"},
       {"front_end: 3", "front_end"},
   };

@@ -132,7 +132,13 @@ TEST(SignedDistanceField2Test, LowerToTakesTheCellwiseMinimumWithAnOffset) {
   const SignedDistanceField2 other = SignedDistanceField2::Build(right);
   const SignedDistanceField2 original = field;
   const double offset_m = 0.25;
+  EXPECT_EQ(field.primary_band(), nullptr);
   field.LowerTo(other, offset_m);
+  // The field as it was before is kept as its primary band, through further lowering.
+  ASSERT_NE(field.primary_band(), nullptr);
+  field.LowerTo(other, offset_m + 0.1);
+  ASSERT_NE(field.primary_band(), nullptr);
+  EXPECT_EQ(field.primary_band()->values(), original.values());
   for (int ix = 0; ix < geometry.dims.x(); ++ix) {
     for (int iy = 0; iy < geometry.dims.y(); ++iy) {
       const float expected = std::min(original.CellValue(ix, iy),

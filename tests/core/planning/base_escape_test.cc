@@ -57,8 +57,10 @@ TEST_F(BaseEscapeTest, LeavesALowTableTopByTheNearestFreePosition) {
   ASSERT_TRUE(validity.IsBaseValid({0.0, 0.0}));
   ASSERT_FALSE(validity.IsBaseValidOnField({0.0, 0.0}));
 
-  const auto exit = FindBaseEscape(free_space, validity, {0.0, 0.0}, 0.0);
-  ASSERT_TRUE(exit.has_value());
+  const auto escape = FindBaseEscape(free_space, validity, {0.0, 0.0}, 0.0);
+  ASSERT_TRUE(escape.has_value());
+  ASSERT_EQ(escape->waypoints_W_m.size(), 1u);  // a straight move
+  const Eigen::Vector2d* exit = &escape->exit();
   EXPECT_TRUE(free_space.IsFree(*exit));
   EXPECT_GT(exit->x(), 0.0) << exit->transpose();  // away from the table behind
   EXPECT_LE(exit->norm(), BaseEscapeOptions{}.max_distance_m + 1e-9);
@@ -97,6 +99,53 @@ TEST_F(BaseEscapeTest, NoExitWhenWalledIn) {
   ASSERT_TRUE(validity.IsBaseValid({0.0, 0.0}));
   EXPECT_FALSE(FindBaseEscape(free_space, validity, {0.0, 0.0}, 0.0).has_value());
   EXPECT_FALSE(FindBaseEscape(free_space, validity, {std::nan(""), 0.0}, 0.0).has_value());
+}
+
+// No straight way out: the base stands in a corridor of tall walls (open at +x only) under a
+// table top that covers the corridor and the room beyond its end, so every position the field
+// accepts lies beside the corridor; the escape is a bent route (out of the corridor's end,
+// then sideways), each move of which passes the base check.
+TEST_F(BaseEscapeTest, BentRouteWhenNoStraightMoveLeadsOut) {
+  Scene scene;
+  scene.bounds_W_m = Eigen::AlignedBox3d(Eigen::Vector3d(-4, -4, 0), Eigen::Vector3d(4, 4, 1.6));
+  scene.boxes.push_back(MakeBox({-0.175, 0.45, 0.6}, {0.85, 0.04, 1.2}));   // corridor walls,
+  scene.boxes.push_back(MakeBox({-0.175, -0.45, 0.6}, {0.85, 0.04, 1.2}));  // x -0.6 .. 0.25
+  scene.boxes.push_back(MakeBox({-0.6, 0.0, 0.6}, {0.04, 0.94, 1.2}));      // closed behind
+  scene.boxes.push_back(MakeBox({1.25, 0.0, 0.6}, {0.04, 1.2, 1.2}));       // a wall ahead
+  scene.boxes.push_back(MakeBox({0.35, 0.0, 0.5}, {1.9, 1.2, 0.04}));       // the table top
+  const SceneDistanceFields fields = BuildSceneDistanceFields(scene, PlannerFieldOptions(kinematics_));
+  const SceneClearanceChecker checker(kinematics_, scene);
+  const WholeBodyValidity validity =
+      WholeBodyValidity(kinematics_, fields.base_field_2d, fields.field_3d)
+          .WithExactZones({&checker, {1.5}, {{0.0, 0.0}}});
+  const BaseFreeSpace free_space(fields.base_field_2d, model_.base_cylinder.radius_m + 0.1);
+  ASSERT_FALSE(free_space.IsFree({0.0, 0.0}));
+  ASSERT_TRUE(validity.IsBaseValid({0.0, 0.0}));
+  BaseEscapeOptions options;
+  options.max_distance_m = 1.5;
+
+  BaseEscapeOptions straight_only = options;
+  straight_only.route_step_m = 0.0;
+  EXPECT_FALSE(FindBaseEscape(free_space, validity, {0.0, 0.0}, 0.0, straight_only).has_value());
+
+  const auto escape = FindBaseEscape(free_space, validity, {0.0, 0.0}, 0.0, options);
+  ASSERT_TRUE(escape.has_value());
+  EXPECT_GE(escape->waypoints_W_m.size(), 2u) << escape->exit().transpose();
+  EXPECT_TRUE(free_space.IsFree(escape->exit())) << escape->exit().transpose();
+  EXPECT_GT(escape->exit().x(), 0.25);  // out of the corridor's open end
+  EXPECT_LE((escape->exit()).norm(), options.max_distance_m + 1e-9);
+  Eigen::Vector2d from(0.0, 0.0);
+  double length_m = 0.0;
+  for (const Eigen::Vector2d& to : escape->waypoints_W_m) {
+    length_m += (to - from).norm();
+    for (int k = 0; k <= 200; ++k) {
+      const Eigen::Vector2d p = from + (to - from) * (k / 200.0);
+      ASSERT_TRUE(validity.IsBaseValid(p)) << p.transpose();
+      EXPECT_GT(checker.BaseClearance(p, 1.0), 0.0) << p.transpose();
+    }
+    from = to;
+  }
+  EXPECT_NEAR(escape->LengthFrom({0.0, 0.0}), length_m, 1e-12);
 }
 
 }  // namespace
