@@ -1,0 +1,100 @@
+#include "sim/lidar/lidar_scanner.h"
+
+#include <algorithm>
+
+#include "core/common/error.h"
+#include "core/geometry/vertical_cylinder.h"
+#include "sim/lidar/ray_primitives.h"
+
+namespace topay::sim {
+namespace {
+
+// The options checked before any member is built from them.
+const LidarOptions& Checked(const LidarOptions& options) {
+  CheckLidarOptions(options);
+  return options;
+}
+
+int MountLink(const LidarOptions& options, const RobotModel& model) {
+  const int link = model.FindLink(options.mount.parent_link);
+  if (link < 0) {
+    const std::string key =
+        options.key_prefix.empty() ? "mount.parent_link" : options.key_prefix + ".mount.parent_link";
+    throw ConfigError(options.source, key,
+                      "no link '" + options.mount.parent_link + "' in robot '" + model.name + "'");
+  }
+  return link;
+}
+
+}  // namespace
+
+LidarScanner::LidarScanner(const LidarOptions& options, const Kinematics& kinematics,
+                           std::uint64_t seed)
+    : options_(Checked(options)),
+      kinematics_(kinematics),
+      mount_link_(MountLink(options, kinematics.model())),
+      X_PS_(options.mount.X_PS()),
+      points_per_scan_(options.PointsPerScan()),
+      pattern_(options.elevation_min_rad, options.elevation_max_rad),
+      grid_(options.grid_cell_m),
+      cache_(kinematics.MakeCache()),
+      rng_(seed) {}
+
+void LidarScanner::SetWorld(const std::vector<OrientedBox>& boxes) { grid_.Build(boxes); }
+
+Eigen::Isometry3d LidarScanner::SensorPose(const WholeBodyState& state) {
+  kinematics_.Update(state, &cache_);
+  return cache_.X_WL[mount_link_] * X_PS_;
+}
+
+double LidarScanner::BodyEntry(const Eigen::Vector3d& p_WO, const Eigen::Vector3d& d_W) const {
+  const RobotModel& model = kinematics_.model();
+  const VerticalCylinder base{cache_.X_WB.translation().head<2>(), model.base_cylinder.radius_m,
+                              0.0, model.base_cylinder.height_m};
+  double best = RayCylinderEntry(base, p_WO, d_W);
+  for (std::size_t s = 0; s < model.spheres.size(); ++s) {
+    best = std::min(best, RaySphereEntry(cache_.p_WS[s], model.spheres[s].radius_m, p_WO, d_W));
+  }
+  return best;
+}
+
+LidarScan LidarScanner::Scan(const WholeBodyState& state, double t_s) {
+  LidarScan scan;
+  scan.t_s = t_s;
+  scan.X_WS = SensorPose(state);  // also updates cache_ (body spheres) for this state
+  scan.p_SP.reserve(points_per_scan_);
+  scan.t_offset_s.reserve(points_per_scan_);
+  scan.target.reserve(points_per_scan_);
+  const Eigen::Vector3d p_WO = scan.X_WS.translation();
+  const Eigen::Matrix3d R_WS = scan.X_WS.linear();
+  const double dt_s = options_.ScanPeriodS() / points_per_scan_;
+  const std::uint64_t first_ray = scan_index_ * static_cast<std::uint64_t>(points_per_scan_);
+  for (int k = 0; k < points_per_scan_; ++k) {
+    const Eigen::Vector3d d_S = pattern_.Direction(first_ray + k);
+    const Eigen::Vector3d d_W = R_WS * d_S;
+    // Nearest of the boxes, the floor and the robot itself (ties: the box).
+    const BoxRayGrid::Hit box = grid_.FirstHit(p_WO, d_W, options_.range_max_m);
+    double t = box.t_m;
+    std::int32_t target = box.box;
+    if (options_.ground_plane) {
+      const double t_ground = RayGroundEntry(p_WO, d_W);
+      if (t_ground < t) t = t_ground, target = kTargetGround;
+    }
+    const double t_body = BodyEntry(p_WO, d_W);
+    if (t_body < t) t = t_body, target = kTargetSelf;
+    if (!(t <= options_.range_max_m) || t < options_.range_min_m) continue;  // miss, blind zone
+    const double range_m =
+        std::max(0.0, t + options_.range_noise_sigma_m * (options_.range_noise_sigma_m > 0.0
+                                                              ? rng_.Normal()
+                                                              : 0.0));
+    scan.p_SP.push_back((range_m * d_S).cast<float>());
+    scan.t_offset_s.push_back(static_cast<float>(k * dt_s));
+    scan.target.push_back(target);
+    if (target == kTargetSelf) ++scan.self_hits;
+  }
+  scan.rays = points_per_scan_;
+  ++scan_index_;
+  return scan;
+}
+
+}  // namespace topay::sim
