@@ -157,41 +157,43 @@ BoxRayGrid::Hit BoxRayGrid::FirstHit(const Eigen::Vector3d& p_WO, const Eigen::V
   // Amanatides-Woo: the cell of the entry point, the t of the next x and y cell borders and
   // the t between two borders; step into whichever border comes first.
   const double inf = std::numeric_limits<double>::infinity();
-  int cell_xy[2];
-  int step[2];
-  double t_next[2];
-  double t_delta[2];
-  const int n[2] = {nx_, ny_};
-  for (int axis = 0; axis < 2; ++axis) {
+  const auto start_cell = [&](int axis, int n) {
     const double p = p_WO(axis) + t_enter * d_W(axis);
-    cell_xy[axis] =
-        std::clamp(static_cast<int>(std::floor((p - origin_m_(axis)) / cell_m_)), 0, n[axis] - 1);
-    const double d = d_W(axis);
-    step[axis] = d > 0.0 ? 1 : (d < 0.0 ? -1 : 0);
-    if (step[axis] == 0) {
-      t_next[axis] = inf;
-      t_delta[axis] = inf;
-    } else {
-      const double border =
-          origin_m_(axis) + (cell_xy[axis] + (step[axis] > 0 ? 1 : 0)) * cell_m_;
-      t_next[axis] = (border - p_WO(axis)) / d;
-      t_delta[axis] = cell_m_ / std::abs(d);
-    }
-  }
+    return std::clamp(static_cast<int>(std::floor((p - origin_m_(axis)) / cell_m_)), 0, n - 1);
+  };
+  int ix = start_cell(0, nx_), iy = start_cell(1, ny_);
+  const int step_x = d_W.x() > 0.0 ? 1 : (d_W.x() < 0.0 ? -1 : 0);
+  const int step_y = d_W.y() > 0.0 ? 1 : (d_W.y() < 0.0 ? -1 : 0);
+  // The next border on the side the ray moves to: cell index + 1 going up, + 0 going down.
+  double t_next_x = step_x == 0 ? inf
+                                : (origin_m_.x() + (ix + (step_x > 0)) * cell_m_ - p_WO.x()) /
+                                      d_W.x();
+  double t_next_y = step_y == 0 ? inf
+                                : (origin_m_.y() + (iy + (step_y > 0)) * cell_m_ - p_WO.y()) /
+                                      d_W.y();
+  const double t_delta_x = step_x == 0 ? inf : cell_m_ / std::abs(d_W.x());
+  const double t_delta_y = step_y == 0 ? inf : cell_m_ / std::abs(d_W.y());
+  double z_enter = p_WO.z() + t_enter * d_W.z();
   for (;;) {
-    const double t_exit = std::min({t_next[0], t_next[1], t_end});
-    const std::int64_t cell = std::int64_t{cell_xy[1]} * nx_ + cell_xy[0];
-    // The ray's z over this cell against the cell's boxes' z range.
-    const double z_a = p_WO.z() + t_enter * d_W.z(), z_b = p_WO.z() + t_exit * d_W.z();
-    if (std::max(z_a, z_b) >= cell_z_lo_[cell] && std::min(z_a, z_b) <= cell_z_hi_[cell]) {
+    const double t_exit = std::min(std::min(t_next_x, t_next_y), t_end);
+    const double z_exit = p_WO.z() + t_exit * d_W.z();
+    const std::int64_t cell = std::int64_t{iy} * nx_ + ix;
+    // The ray's z over this cell against the cell's boxes' z range (empty cells: none).
+    if (std::max(z_enter, z_exit) >= cell_z_lo_[cell] &&
+        std::min(z_enter, z_exit) <= cell_z_hi_[cell]) {
       TestCell(cell, p_WO, d_W, t_max_m, &best);
     }
     if (best.t_m < t_exit || t_exit >= t_end) break;
-    const int axis = t_next[0] < t_next[1] ? 0 : 1;
-    cell_xy[axis] += step[axis];
-    if (cell_xy[axis] < 0 || cell_xy[axis] >= n[axis]) break;
-    t_enter = t_next[axis];
-    t_next[axis] += t_delta[axis];
+    if (t_next_x < t_next_y) {
+      ix += step_x;
+      if (ix < 0 || ix >= nx_) break;
+      t_next_x += t_delta_x;
+    } else {
+      iy += step_y;
+      if (iy < 0 || iy >= ny_) break;
+      t_next_y += t_delta_y;
+    }
+    z_enter = z_exit;
   }
   return best;
 }

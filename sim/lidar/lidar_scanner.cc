@@ -3,7 +3,6 @@
 #include <algorithm>
 
 #include "core/common/error.h"
-#include "core/geometry/vertical_cylinder.h"
 #include "sim/lidar/ray_primitives.h"
 
 namespace topay::sim {
@@ -47,17 +46,6 @@ Eigen::Isometry3d LidarScanner::SensorPose(const WholeBodyState& state) {
   return cache_.X_WL[mount_link_] * X_PS_;
 }
 
-double LidarScanner::BodyEntry(const Eigen::Vector3d& p_WO, const Eigen::Vector3d& d_W) const {
-  const RobotModel& model = kinematics_.model();
-  const VerticalCylinder base{cache_.X_WB.translation().head<2>(), model.base_cylinder.radius_m,
-                              0.0, model.base_cylinder.height_m};
-  double best = RayCylinderEntry(base, p_WO, d_W);
-  for (std::size_t s = 0; s < model.spheres.size(); ++s) {
-    best = std::min(best, RaySphereEntry(cache_.p_WS[s], model.spheres[s].radius_m, p_WO, d_W));
-  }
-  return best;
-}
-
 LidarScan LidarScanner::Scan(const WholeBodyState& state, double t_s) {
   LidarScan scan;
   scan.t_s = t_s;
@@ -67,6 +55,7 @@ LidarScan LidarScanner::Scan(const WholeBodyState& state, double t_s) {
   scan.target.reserve(points_per_scan_);
   const Eigen::Vector3d p_WO = scan.X_WS.translation();
   const Eigen::Matrix3d R_WS = scan.X_WS.linear();
+  body_.Update(kinematics_.model(), cache_, p_WO);
   const double dt_s = options_.ScanPeriodS() / points_per_scan_;
   const std::uint64_t first_ray = scan_index_ * static_cast<std::uint64_t>(points_per_scan_);
   for (int k = 0; k < points_per_scan_; ++k) {
@@ -80,7 +69,7 @@ LidarScan LidarScanner::Scan(const WholeBodyState& state, double t_s) {
       const double t_ground = RayGroundEntry(p_WO, d_W);
       if (t_ground < t) t = t_ground, target = kTargetGround;
     }
-    const double t_body = BodyEntry(p_WO, d_W);
+    const double t_body = body_.Entry(d_W);
     if (t_body < t) t = t_body, target = kTargetSelf;
     if (!(t <= options_.range_max_m) || t < options_.range_min_m) continue;  // miss, blind zone
     const double range_m =

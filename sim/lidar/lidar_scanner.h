@@ -12,6 +12,7 @@
 #include "core/robot/whole_body_state.h"
 #include "sim/lidar/box_ray_grid.h"
 #include "sim/lidar/lidar_options.h"
+#include "sim/lidar/robot_body_rays.h"
 #include "sim/lidar/scan_pattern.h"
 
 namespace topay::sim {
@@ -76,9 +77,6 @@ class LidarScanner {
   const BoxRayGrid& grid() const { return grid_; }
 
  private:
-  // Nearest entry into the robot's own body (base cylinder, spheres); kNoHit if none.
-  double BodyEntry(const Eigen::Vector3d& p_WO, const Eigen::Vector3d& d_W) const;
-
   LidarOptions options_;
   const Kinematics& kinematics_;
   int mount_link_ = -1;
@@ -87,6 +85,7 @@ class LidarScanner {
   ScanPattern pattern_;
   BoxRayGrid grid_;
   KinematicsCache cache_;
+  RobotBodyRays body_;
   Rng rng_;
   std::uint64_t scan_index_ = 0;
 };

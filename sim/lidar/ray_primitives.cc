@@ -27,18 +27,6 @@ double Entry(double t_near, double t_far) {
 
 }  // namespace
 
-double RayCenteredBoxEntry(const Eigen::Vector3d& o_B, const Eigen::Vector3d& d_B,
-                           const Eigen::Vector3d& half_size_m) {
-  double t_near = -kNoHit;
-  double t_far = kNoHit;
-  for (int i = 0; i < 3; ++i) {
-    if (!ClipSlab(o_B(i), d_B(i), -half_size_m(i), half_size_m(i), &t_near, &t_far)) {
-      return kNoHit;
-    }
-  }
-  return Entry(t_near, t_far);
-}
-
 double RayBoxEntry(const OrientedBox& box, const Eigen::Vector3d& p_WO,
                    const Eigen::Vector3d& d_W) {
   // R_WB = Rz(yaw), so a vector v_W is v_B = Rz(yaw)^T v_W.

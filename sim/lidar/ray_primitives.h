@@ -1,5 +1,6 @@
 #pragma once
 
+#include <algorithm>
 #include <limits>
 
 #include <Eigen/Core>
@@ -19,8 +20,25 @@ inline constexpr double kNoHit = std::numeric_limits<double>::infinity();
 /// the box's own frame (o_B, d_B): on each axis the ray is between the two faces for
 /// t in [(-h - o) / d, (h - o) / d] (sorted; all t if d = 0 and |o| <= h, none if d = 0 and
 /// |o| > h); the ray is in the box on the intersection [t_near, t_far] of the three intervals.
-double RayCenteredBoxEntry(const Eigen::Vector3d& o_B, const Eigen::Vector3d& d_B,
-                           const Eigen::Vector3d& half_size_m);
+/// Inline: the ray-casting grid's inner loop.
+inline double RayCenteredBoxEntry(const Eigen::Vector3d& o_B, const Eigen::Vector3d& d_B,
+                                  const Eigen::Vector3d& half_size_m) {
+  double t_near = -kNoHit;
+  double t_far = kNoHit;
+  for (int i = 0; i < 3; ++i) {
+    const double o = o_B(i), d = d_B(i), h = half_size_m(i);
+    if (d == 0.0) {  // parallel to the faces: between them for all t or never
+      if (o < -h || o > h) return kNoHit;
+      continue;
+    }
+    const double inv = 1.0 / d;
+    const double t0 = (-h - o) * inv, t1 = (h - o) * inv;
+    t_near = std::max(t_near, std::min(t0, t1));
+    t_far = std::min(t_far, std::max(t0, t1));
+  }
+  if (t_far < 0.0 || t_near > t_far) return kNoHit;
+  return std::max(t_near, 0.0);
+}
 
 /// An upright box: the ray taken into the box frame B (rotation by -yaw about z, translation
 /// by the centre), then the slab test.

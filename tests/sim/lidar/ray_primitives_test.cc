@@ -48,7 +48,9 @@ TEST(RayPrimitivesTest, RandomRaysAgreeWithTheSignedDistance) {
     }
     if (t != kNoHit) {
       ++hits;
-      if (t > 0.0) EXPECT_NEAR(SignedDistanceToBox(box, o + t * d), 0.0, 1e-9) << trial;
+      if (t > 0.0) {
+        EXPECT_NEAR(SignedDistanceToBox(box, o + t * d), 0.0, 1e-9) << trial;
+      }
     }
   }
   EXPECT_GT(hits, 400);
