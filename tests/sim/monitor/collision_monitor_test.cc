@@ -14,6 +14,7 @@
 #include "core/geometry/primitive_box_distance.h"
 #include "core/robot/self_collision.h"
 #include "tests/common/make_box.h"
+#include "tests/core/robot/allocation_counter.h"
 #include "tests/core/robot/robot_test_model.h"
 
 namespace topay::sim {
@@ -200,6 +201,20 @@ TEST_F(CollisionMonitorTest, SetWorldChangesTheBoxes) {
   EXPECT_EQ(started[0].box, 1);
   EXPECT_EQ(monitor.counts().events, 2);
   EXPECT_EQ(monitor.num_boxes(), 2);
+}
+
+TEST_F(CollisionMonitorTest, AClearCheckDoesNotAllocate) {
+  CollisionMonitor monitor(kinematics_);
+  monitor.SetWorld({MakeBox({2.0, 0, 0.5}, {1, 1, 1}), MakeBox({0, 2.0, 0.5}, {1, 1, 1})});
+  monitor.Check(State(0, 0, 0), 0.0);
+  int allocations = 0;
+  {
+    testing::AllocationCounter counter;
+    for (int k = 1; k <= 10; ++k) monitor.Check(State(0.01 * k, 0, 0.1 * k), k * kDt);
+    allocations = counter.count();
+  }
+  EXPECT_EQ(allocations, 0);
+  EXPECT_EQ(monitor.counts().events, 0);
 }
 
 // Against the exact minimum of core's SceneClearanceChecker and a brute-force count over every
