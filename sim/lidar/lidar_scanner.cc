@@ -46,6 +46,26 @@ Eigen::Isometry3d LidarScanner::SensorPose(const WholeBodyState& state) {
   return cache_.X_WL[mount_link_] * X_PS_;
 }
 
+LidarScanner::Return LidarScanner::CastRay(const Eigen::Vector3d& p_WO,
+                                           const Eigen::Vector3d& d_W) {
+  // The robot first: its entry bounds the grid's walk (a box at the same range wins).
+  Return hit{body_.Entry(d_W), kTargetSelf};
+  const BoxRayGrid::Hit box =
+      grid_.FirstHit(p_WO, d_W, std::min(hit.range_m, options_.range_max_m));
+  if (box.box >= 0) hit = {box.t_m, box.box};
+  if (options_.ground_plane) {
+    const double t_ground = RayGroundEntry(p_WO, d_W);
+    if (t_ground < hit.range_m) hit = {t_ground, kTargetGround};
+  }
+  return hit;
+}
+
+double LidarScanner::MeasuredRange(double range_m) {
+  if (options_.range_noise_sigma_m == 0.0) return range_m;
+  // Gaussian range noise; a range cannot be negative.
+  return std::max(0.0, range_m + options_.range_noise_sigma_m * rng_.Normal());
+}
+
 LidarScan LidarScanner::Scan(const WholeBodyState& state, double t_s) {
   LidarScan scan;
   scan.t_s = t_s;
@@ -60,26 +80,13 @@ LidarScan LidarScanner::Scan(const WholeBodyState& state, double t_s) {
   const std::uint64_t first_ray = scan_index_ * static_cast<std::uint64_t>(points_per_scan_);
   for (int k = 0; k < points_per_scan_; ++k) {
     const Eigen::Vector3d d_S = pattern_.Direction(first_ray + k);
-    const Eigen::Vector3d d_W = R_WS * d_S;
-    // Nearest of the boxes, the floor and the robot itself (ties: the box).
-    const BoxRayGrid::Hit box = grid_.FirstHit(p_WO, d_W, options_.range_max_m);
-    double t = box.t_m;
-    std::int32_t target = box.box;
-    if (options_.ground_plane) {
-      const double t_ground = RayGroundEntry(p_WO, d_W);
-      if (t_ground < t) t = t_ground, target = kTargetGround;
-    }
-    const double t_body = body_.Entry(d_W);
-    if (t_body < t) t = t_body, target = kTargetSelf;
-    if (!(t <= options_.range_max_m) || t < options_.range_min_m) continue;  // miss, blind zone
-    const double range_m =
-        std::max(0.0, t + options_.range_noise_sigma_m * (options_.range_noise_sigma_m > 0.0
-                                                              ? rng_.Normal()
-                                                              : 0.0));
-    scan.p_SP.push_back((range_m * d_S).cast<float>());
+    const Return hit = CastRay(p_WO, R_WS * d_S);
+    // No return: nothing within range_max_m, or the first hit in the blind zone.
+    if (!(hit.range_m <= options_.range_max_m) || hit.range_m < options_.range_min_m) continue;
+    scan.p_SP.push_back((MeasuredRange(hit.range_m) * d_S).cast<float>());
     scan.t_offset_s.push_back(static_cast<float>(k * dt_s));
-    scan.target.push_back(target);
-    if (target == kTargetSelf) ++scan.self_hits;
+    scan.target.push_back(hit.target);
+    if (hit.target == kTargetSelf) ++scan.self_hits;
   }
   scan.rays = points_per_scan_;
   ++scan_index_;

@@ -47,7 +47,8 @@ struct LidarScan {
 /// enabled, and the robot's own body at that state: the base cylinder (RobotModel::
 /// base_cylinder about the base axis, ground to chassis top) and every arm collision sphere
 /// (Kinematics sphere centres). A hit on the body is a point like any other (a real sensor
-/// sees its robot) and is counted in self_hits. A first hit nearer than range_min_m (blind
+/// sees its robot) and is counted in self_hits (ties at equal range: a box, then the body, then
+/// the floor). A first hit nearer than range_min_m (blind
 /// zone) or beyond range_max_m, or no hit, gives no point. The measured range is the exact
 /// one plus Gaussian noise (sigma range_noise_sigma_m, drawn from a seeded topay::Rng, one
 /// draw per returned point), clamped at 0; the point is d_S times that range.
@@ -77,6 +78,15 @@ class LidarScanner {
   const BoxRayGrid& grid() const { return grid_; }
 
  private:
+  struct Return {
+    double range_m;       // exact range of the first hit; kNoHit if none
+    std::int32_t target;  // box index, kTargetGround or kTargetSelf
+  };
+  // The first hit among the robot's body, the boxes (up to range_max_m) and the floor.
+  Return CastRay(const Eigen::Vector3d& p_WO, const Eigen::Vector3d& d_W);
+  // The exact range plus the Gaussian noise, clamped at 0.
+  double MeasuredRange(double range_m);
+
   LidarOptions options_;
   const Kinematics& kinematics_;
   int mount_link_ = -1;
