@@ -187,6 +187,7 @@ TEST_F(CollisionMonitorTest, APersistentContactIsOneEventAndToleranceFiltersShal
 
 TEST_F(CollisionMonitorTest, SetWorldChangesTheBoxes) {
   CollisionMonitor monitor(kinematics_);
+  EXPECT_TRUE(monitor.Check(State(0, 0, 0), -kDt).empty());  // no world yet: no box
   const OrientedBox box = MakeBox({0.88, 0, 0.25}, {1.0, 1.0, 0.5});
   monitor.SetWorld({box});
   EXPECT_EQ(monitor.Check(State(0, 0, 0), 0.0).size(), 1u);
@@ -201,6 +202,18 @@ TEST_F(CollisionMonitorTest, SetWorldChangesTheBoxes) {
   EXPECT_EQ(started[0].box, 1);
   EXPECT_EQ(monitor.counts().events, 2);
   EXPECT_EQ(monitor.num_boxes(), 2);
+}
+
+TEST_F(CollisionMonitorTest, BadStateThrowsAndCountsNothing) {
+  CollisionMonitor monitor(kinematics_);
+  monitor.SetWorld({});
+  WholeBodyState state = State(0, 0, 0);
+  state.yaw_rad = std::nan("");
+  EXPECT_THROW(monitor.Check(state, 0.0), std::invalid_argument);
+  state.q_rad.resize(3);
+  state.yaw_rad = 0.0;
+  EXPECT_THROW(monitor.Check(state, 0.0), std::invalid_argument);
+  EXPECT_EQ(monitor.counts().steps, 0);
 }
 
 TEST_F(CollisionMonitorTest, AClearCheckDoesNotAllocate) {
