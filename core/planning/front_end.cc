@@ -198,7 +198,12 @@ std::string FrontEnd::CheckStart(PlanContext* context) const {
   const WholeBodyState& start = context->start;
   WholeBodyValidityWorkspace workspace = validity_.MakeWorkspace();
   const ValidityFailure failure = validity_.Check(start, &workspace);
-  if (failure == ValidityFailure::kNone) return "";
+  if (failure == ValidityFailure::kNone) {
+    // Valid on the fields but closer to an obstacle than the base path search keeps: its way
+    // out may lead through space only the exact scene accepts (under a table top).
+    if (exact_ != nullptr && BaseIsTight(start)) context->start_zone_W = BaseOf(start);
+    return "";
+  }
   if (exact_ == nullptr ||
       (failure != ValidityFailure::kBaseCollision && failure != ValidityFailure::kArmCollision)) {
     return std::string(ToString(failure));
@@ -306,13 +311,21 @@ bool FrontEnd::FindGoals(PlanContext* context) const {
   return true;
 }
 
+bool FrontEnd::BaseIsTight(const WholeBodyState& state) const {
+  const double search_clearance_m =
+      std::max(options_.topology.clearance_m, validity_.base_margin_m());
+  return !(base_field_.Distance(BaseOf(state)) >=
+           kinematics_.model().base_cylinder.radius_m + search_clearance_m);
+}
+
 WholeBodyValidity FrontEnd::AttemptValidity(const GoalCandidate& goal,
                                             PlanContext* context) const {
   ExactZones zones{exact_, options_.exact_zones, {}};
   if (context->start_zone_W) zones.centres_W_m.push_back(*context->start_zone_W);
   if (exact_ != nullptr) {
     WholeBodyValidityWorkspace workspace = validity_.MakeWorkspace();
-    if (validity_.CheckOnFields(goal.state, &workspace) != ValidityFailure::kNone) {
+    if (validity_.CheckOnFields(goal.state, &workspace) != ValidityFailure::kNone ||
+        BaseIsTight(goal.state)) {
       zones.centres_W_m.push_back(BaseOf(goal.state));
     }
   }

@@ -84,7 +84,12 @@ class FrontEnd {
                                    PlanContext* context) const;
   /// validity_ with the exact zones of this attempt: the start's, and the goal's if the
   /// fields reject it.
+  /// The exact zones of one goal attempt: the start's and the goal's, each where the fields
+  /// reject the state or its base is closer to an obstacle than the base path search keeps
+  /// (BaseIsTight).
   WholeBodyValidity AttemptValidity(const GoalCandidate& goal, PlanContext* context) const;
+  /// The base's field distance is below its radius + the base path search's clearance.
+  bool BaseIsTight(const WholeBodyState& state) const;
   bool FindGoals(PlanContext* context) const;
   /// Tries goal candidates [first, first + max_goal_attempts) in turn. True on success.
   bool AttemptGoals(int first, PlanContext* context) const;
