@@ -1,12 +1,15 @@
 #include "core/optimization/endpoint_relief.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <numbers>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 #include "core/optimization/sample_penalties.h"
+#include "core/planning/whole_body_validity.h"
 
 namespace topay {
 namespace {
@@ -56,6 +59,31 @@ std::string Part(const char* which, const ClearanceDeficit& deficit, const char*
   return buffer;
 }
 
+// Part by part: deficit <- max(deficit, other).
+void RaiseTo(const ClearanceDeficit& other, ClearanceDeficit* deficit) {
+  deficit->base_m = std::max(deficit->base_m, other.base_m);
+  deficit->base_primary_m = std::max(deficit->base_primary_m, other.base_primary_m);
+  deficit->spheres_m = deficit->spheres_m.cwiseMax(other.spheres_m);
+}
+
+// Raises `deficit` to the deficits along the edge a -> b (b included), interpolated every
+// 2 cm of base travel and 0.05 rad of yaw or joint motion.
+void RaiseToEdge(const SamplePenalties& penalties, const WholeBodyState& a,
+                 const WholeBodyState& b, double slack_m, ClearanceDeficit* deficit) {
+  const int steps = WholeBodyValidity::EdgeInterpolationSteps(a, b, 0.02, 0.05);
+  WholeBodyState between;
+  for (int i = 1; i <= steps; ++i) {
+    WholeBodyValidity::Interpolate(a, b, static_cast<double>(i) / steps, &between);
+    RaiseTo(ComputeClearanceDeficit(penalties, between, slack_m), deficit);
+  }
+}
+
+// Full relief over the exactly validated stretch (f less the extra piece), at least over half
+// the ramp; then down over the extra piece.
+double Plateau(double fraction, int num_pieces) {
+  return std::max(0.5 * fraction, fraction - 1.0 / num_pieces);
+}
+
 }  // namespace
 
 void CheckEndpointReliefOptions(const EndpointReliefOptions& options) {
@@ -92,37 +120,46 @@ ClearanceDeficit ComputeClearanceDeficit(const SamplePenalties& penalties,
   return deficit;
 }
 
-double ReliefRampWeight(double d, double f) {
-  if (d <= 0.5 * f) return 1.0;
+double ReliefRampWeight(double d, double f, double p) {
+  if (d <= p) return 1.0;
   if (d >= f) return 0.0;
-  const double half = 0.5 * f;
-  return 0.5 * (1.0 + std::cos(std::numbers::pi * (d - half) / half));
+  return 0.5 * (1.0 + std::cos(std::numbers::pi * (d - p) / (f - p)));
 }
 
-void EndpointRelief::SetStart(const ClearanceDeficit& deficit, double fraction) {
+void EndpointRelief::SetStart(const ClearanceDeficit& deficit, double fraction,
+                              double plateau) {
   CheckFraction(fraction, "start");
+  if (std::isnan(plateau)) plateau = 0.5 * fraction;
+  Require(plateau > 0.0 && plateau <= fraction,
+          "start ramp plateau " + std::to_string(plateau) + " must be in (0, fraction]");
   CheckDeficit(deficit, "start");
   Require(!has_goal_ || goal_.spheres_m.size() == deficit.spheres_m.size(),
           "the start's and the goal's deficits have different sphere counts");
   start_ = deficit;
   f_start_ = fraction;
+  p_start_ = plateau;
   has_start_ = true;
 }
 
-void EndpointRelief::SetGoal(const ClearanceDeficit& deficit, double fraction) {
+void EndpointRelief::SetGoal(const ClearanceDeficit& deficit, double fraction,
+                              double plateau) {
   CheckFraction(fraction, "goal");
+  if (std::isnan(plateau)) plateau = 0.5 * fraction;
+  Require(plateau > 0.0 && plateau <= fraction,
+          "goal ramp plateau " + std::to_string(plateau) + " must be in (0, fraction]");
   CheckDeficit(deficit, "goal");
   Require(!has_start_ || start_.spheres_m.size() == deficit.spheres_m.size(),
           "the start's and the goal's deficits have different sphere counts");
   goal_ = deficit;
   f_goal_ = fraction;
+  p_goal_ = plateau;
   has_goal_ = true;
 }
 
 EndpointRelief::Weights EndpointRelief::WeightsAt(double u) const {
   Weights w;
-  if (has_start_) w.start = ReliefRampWeight(u, f_start_);
-  if (has_goal_) w.goal = ReliefRampWeight(1.0 - u, f_goal_);
+  if (has_start_) w.start = ReliefRampWeight(u, f_start_, p_start_);
+  if (has_goal_) w.goal = ReliefRampWeight(1.0 - u, f_goal_, p_goal_);
   return w;
 }
 
@@ -153,21 +190,29 @@ double GoalReliefFraction(const Eigen::VectorXd& path_times_s, int exact_suffix_
 }
 
 EndpointRelief MakeEndpointRelief(const SamplePenalties& penalties, const WholeBodyState& start,
-                                  const WholeBodyState& end,
+                                  const std::vector<WholeBodyState>& path_states,
                                   const Eigen::VectorXd& path_times_s, int num_pieces,
                                   int exact_prefix_states, int exact_suffix_states,
                                   const EndpointReliefOptions& options) {
   CheckEndpointReliefOptions(options);
+  const int n = static_cast<int>(path_states.size());
   EndpointRelief relief;
   if (exact_prefix_states != 0) {
     const double f = StartReliefFraction(path_times_s, exact_prefix_states, num_pieces);
-    const ClearanceDeficit deficit = ComputeClearanceDeficit(penalties, start, options.slack_m);
-    if (!deficit.IsZero()) relief.SetStart(deficit, f);
+    ClearanceDeficit deficit = ComputeClearanceDeficit(penalties, start, options.slack_m);
+    for (int k = 1; k < std::min(exact_prefix_states, n); ++k) {
+      RaiseToEdge(penalties, path_states[k - 1], path_states[k], options.slack_m, &deficit);
+    }
+    if (!deficit.IsZero()) relief.SetStart(deficit, f, Plateau(f, num_pieces));
   }
   if (exact_suffix_states != 0) {
     const double f = GoalReliefFraction(path_times_s, exact_suffix_states, num_pieces);
-    const ClearanceDeficit deficit = ComputeClearanceDeficit(penalties, end, options.slack_m);
-    if (!deficit.IsZero()) relief.SetGoal(deficit, f);
+    const WholeBodyState& end = n > 1 ? path_states.back() : start;
+    ClearanceDeficit deficit = ComputeClearanceDeficit(penalties, end, options.slack_m);
+    for (int k = std::max(1, n - exact_suffix_states); k < n; ++k) {
+      RaiseToEdge(penalties, path_states[k - 1], path_states[k], options.slack_m, &deficit);
+    }
+    if (!deficit.IsZero()) relief.SetGoal(deficit, f, Plateau(f, num_pieces));
   }
   return relief;
 }

@@ -1,7 +1,9 @@
 #pragma once
 
 #include <algorithm>
+#include <limits>
 #include <string>
+#include <vector>
 
 #include <Eigen/Core>
 
@@ -57,17 +59,19 @@ inline double PieceFraction(int piece, double local_fraction, int num_pieces) {
   return (piece + local_fraction) / num_pieces;
 }
 
-/// The ramp weight at distance d (in u) from its endpoint for a ramp of extent f in (0, 1]:
-/// 1 on [0, f / 2], then a half cosine down to 0 at f, 0 beyond. Continuous and
-/// non-increasing in d.
-double ReliefRampWeight(double d, double f);
+/// The ramp weight at distance d (in u) from its endpoint for a ramp of extent f in (0, 1]
+/// with a plateau p in (0, f] (default f / 2): 1 on [0, p], then a half cosine down to 0 at
+/// f, 0 beyond. Continuous and non-increasing in d.
+double ReliefRampWeight(double d, double f, double p);
+inline double ReliefRampWeight(double d, double f) { return ReliefRampWeight(d, f, 0.5 * f); }
 
 /// Clearance margins relaxed near a start and a goal that lie inside them (the front end
 /// validated the first / last stretch of its path exactly rather than on the fields:
 /// TrajectoryProblem::exact_prefix_states / exact_suffix_states). At ramp coordinate u
 /// (PieceFraction) the relief of a part (base, sphere s) is
 ///   max(w_start(u) x deficit_start, w_goal(u) x deficit_goal),
-/// w_start(u) = ReliefRampWeight(u, f_start), w_goal(u) = ReliefRampWeight(1 - u, f_goal);
+/// w_start(u) = ReliefRampWeight(u, f_start, p_start), w_goal(u) = ReliefRampWeight(1 - u,
+/// f_goal, p_goal);
 /// the sample penalties compare against threshold (+ tightening) - relief, the optimizer's
 /// field check against radius + margin - relief. Default-constructed: no relief (0
 /// everywhere). Lookups are allocation-free.
@@ -81,11 +85,14 @@ class EndpointRelief {
 
   EndpointRelief() = default;
 
-  /// The start's (goal's) deficit and ramp extent f in (0, 1] (set again: replaced); throws
-  /// std::invalid_argument for f outside (0, 1], a negative or non-finite deficit, or sphere
-  /// counts that differ between the start and the goal.
-  void SetStart(const ClearanceDeficit& deficit, double fraction);
-  void SetGoal(const ClearanceDeficit& deficit, double fraction);
+  /// The start's (goal's) deficit, ramp extent f in (0, 1] and plateau p in (0, f] (NaN, the
+  /// default: f / 2) (set again: replaced); throws std::invalid_argument for f outside
+  /// (0, 1], p outside (0, f], a negative or non-finite deficit, or sphere counts that
+  /// differ between the start and the goal.
+  void SetStart(const ClearanceDeficit& deficit, double fraction,
+                double plateau = std::numeric_limits<double>::quiet_NaN());
+  void SetGoal(const ClearanceDeficit& deficit, double fraction,
+               double plateau = std::numeric_limits<double>::quiet_NaN());
 
   /// No part is relieved anywhere (no endpoint set, or only zero deficits).
   bool empty() const { return !has_start_ && !has_goal_; }
@@ -124,6 +131,8 @@ class EndpointRelief {
   ClearanceDeficit start_, goal_;
   double f_start_ = 0.0;
   double f_goal_ = 0.0;
+  double p_start_ = 0.0;
+  double p_goal_ = 0.0;
 };
 
 /// The ramp extents from the warm start's timing of the front-end path (WarmStart::
@@ -140,12 +149,17 @@ double StartReliefFraction(const Eigen::VectorXd& path_times_s, int exact_prefix
 double GoalReliefFraction(const Eigen::VectorXd& path_times_s, int exact_suffix_states,
                           int num_pieces);
 
-/// The relief of a problem: the start's deficit (at `start`) over f_start if
-/// exact_prefix_states > 0, the goal's (at `end`, the front-end path's last state) over
-/// f_goal if exact_suffix_states > 0; an endpoint whose deficit is zero is left out. Both
-/// counts 0: an empty relief. Throws std::invalid_argument for bad options or inputs.
+/// The relief of a problem: the start's deficit over f_start if exact_prefix_states > 0, the
+/// goal's over f_goal if exact_suffix_states > 0; an endpoint whose deficit is zero is left
+/// out. Both counts 0: an empty relief. An endpoint's deficit is the part-by-part maximum
+/// over the stretch of the front-end path the front end validated exactly: `start` and
+/// path_states[1 .. exact_prefix_states - 1]; path_states[n - exact_suffix_states .. n - 1]
+/// (the last is the goal). So a start that the fields accept but whose way out they do not
+/// (a pocket left under a table top) is relieved as much as that way out needs, and in full
+/// over that stretch (plateau max(f / 2, f - 1 / M)), then down over one more piece. Throws
+/// std::invalid_argument for bad options or inputs.
 EndpointRelief MakeEndpointRelief(const SamplePenalties& penalties, const WholeBodyState& start,
-                                  const WholeBodyState& end,
+                                  const std::vector<WholeBodyState>& path_states,
                                   const Eigen::VectorXd& path_times_s, int num_pieces,
                                   int exact_prefix_states, int exact_suffix_states,
                                   const EndpointReliefOptions& options = {});

@@ -221,11 +221,10 @@ void TrajectoryOptimizer::PrepareEndpointRelief(const WholeBodyPath& initial_pat
   // The thresholds the objective's penalties compare against.
   const SamplePenalties penalties(kinematics_, base_field_, arm_field_, problem.base_limits,
                                   options_.objective.penalties);
-  // The goal's deficit at the warm start's end state, the path's last one (its first is the
-  // start itself).
-  const WholeBodyState& end =
-      initial_path.states.size() > 1 ? initial_path.states.back() : problem.start;
-  run->relief = MakeEndpointRelief(penalties, problem.start, end, run->warm.path_times_s,
+  // The deficits along the path's exactly validated stretches (its first state is the start
+  // itself, its last the goal).
+  run->relief = MakeEndpointRelief(penalties, problem.start, initial_path.states,
+                                   run->warm.path_times_s,
                                    run->warm.num_pieces, problem.exact_prefix_states,
                                    problem.exact_suffix_states, options_.endpoint_relief);
   if (run->relief.empty()) return;

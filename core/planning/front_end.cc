@@ -69,17 +69,31 @@ WholeBodyIkOptions RetryIkOptions(const FrontEndOptions& o) {
 Eigen::Vector2d BaseOf(const WholeBodyState& state) { return {state.x_m, state.y_m}; }
 
 // 1 + the index of the last of the first states within the zone around `centre` (from the
-// front, or from the back) that the fields reject; 0 if none.
+// front, or from the back) that the fields reject, or that ends an edge (interpolated as the
+// arm search checks it) along which they reject a state; 0 if none. A tight start's way out
+// may lie between two path states the fields accept.
 int CountRejectedInZone(const WholeBodyValidity& validity, const std::vector<WholeBodyState>& states,
                         const Eigen::Vector2d& centre, bool from_back) {
   WholeBodyValidityWorkspace workspace = validity.MakeWorkspace();
   const double radius_m = validity.exact_zones().options.radius_m;
   const int n = static_cast<int>(states.size());
+  const auto at = [&](int k) -> const WholeBodyState& { return states[from_back ? n - 1 - k : k]; };
+  const auto rejected = [&](const WholeBodyState& state) {
+    return validity.CheckOnFields(state, &workspace) != ValidityFailure::kNone;
+  };
+  WholeBodyState between;
   int count = 0;
   for (int k = 0; k < n; ++k) {
-    const WholeBodyState& state = states[from_back ? n - 1 - k : k];
-    if ((BaseOf(state) - centre).norm() > radius_m) break;
-    if (validity.CheckOnFields(state, &workspace) != ValidityFailure::kNone) count = k + 1;
+    if ((BaseOf(at(k)) - centre).norm() > radius_m) break;
+    bool any = rejected(at(k));
+    if (k > 0) {
+      const int steps = validity.EdgeSteps(at(k - 1), at(k));
+      for (int i = 1; i < steps && !any; ++i) {
+        WholeBodyValidity::Interpolate(at(k - 1), at(k), static_cast<double>(i) / steps, &between);
+        any = rejected(between);
+      }
+    }
+    if (any) count = k + 1;
   }
   return count;
 }
