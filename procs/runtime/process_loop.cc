@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <cerrno>
 #include <cstring>
+#include <ctime>
 
 #include "topay/heartbeat_t.hpp"
 #include "topay_msgs/channels.h"
@@ -96,10 +97,14 @@ int ProcessLoop::RunUntil(Clock::time_point deadline) {
     if (now >= deadline) break;
     RunDueTimers(now);
     if (stop_) break;
+    // ppoll: nanosecond timeouts, so that fast timers (a 500 Hz plant) wake on time rather
+    // than on the next millisecond.
     const auto wait = std::min(NextDeadline(), deadline) - Clock::now();
-    const auto wait_ms = std::chrono::ceil<std::chrono::milliseconds>(wait).count();
+    const std::int64_t wait_ns = std::clamp<std::int64_t>(
+        std::chrono::duration_cast<std::chrono::nanoseconds>(wait).count(), 0, 60'000'000'000LL);
+    const timespec timeout{static_cast<time_t>(wait_ns / 1'000'000'000), static_cast<long>(wait_ns % 1'000'000'000)};
     pollfd fds[2] = {{lcm_fd, POLLIN, 0}, {signals_.fd(), POLLIN, 0}};
-    const int ready = poll(fds, 2, static_cast<int>(std::clamp<std::int64_t>(wait_ms, 0, 60'000)));
+    const int ready = ppoll(fds, 2, &timeout, nullptr);
     if (ready < 0 && errno != EINTR) {
       spdlog::error("poll: {}", std::strerror(errno));
       return kExitConfigError;
