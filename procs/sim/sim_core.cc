@@ -25,7 +25,7 @@ SimCore::SimCore(const RobotModel& model, const SimCoreOptions& options, const S
       scan_(std::move(scan)),
       contact_(std::move(contact)),
       state_every_steps_(Every(options.state_rate_hz, options.plant.step_s)),
-      scan_every_steps_(Every(options.lidar_rate_hz, options.plant.step_s)) {
+      scan_every_steps_(scan_ ? Every(scan_->rate_hz(), options.plant.step_s) : 1) {
   SyncWorld();
 }
 

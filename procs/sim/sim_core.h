@@ -45,7 +45,6 @@ class SimListener {
 struct SimCoreOptions {
   sim::PlantOptions plant;
   double state_rate_hz = 100.0;
-  double lidar_rate_hz = 10.0;
   sim::PoseNoiseOptions pose_noise;
   std::uint64_t seed = 1;        ///< master seed (plant, localisation; the sensors get theirs from the caller)
   std::uint64_t event_seed = 1;  ///< seed of the event jitter

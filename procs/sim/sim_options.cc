@@ -76,14 +76,11 @@ SimOptions LoadSimOptions(const std::string& path) {
   {
     YamlSection s = top.Section("lidar");
     s.Read("enabled", &o.lidar_enabled);
-    s.Read("rate_hz", &o.lidar_rate_hz);
-    Positive(s, "rate_hz", o.lidar_rate_hz);
     s.Read("file", &o.lidar_file);
     o.lidar_options = s.Raw("options");
     if (!o.lidar_file.empty() && o.lidar_options.IsDefined() && !o.lidar_options.IsNull()) {
       throw ConfigError(path, "lidar", "give `file` or `options`, not both");
     }
-    o.lidar_source = o.lidar_file.empty() ? path + ": lidar.options" : "";
     s.Finish();
   }
   {
@@ -98,7 +95,6 @@ SimOptions LoadSimOptions(const std::string& path) {
   o.robot_yaml = Resolve(o.robot_yaml, folder);
   o.events_file = Resolve(o.events_file, folder);
   o.lidar_file = Resolve(o.lidar_file, folder);
-  if (!o.lidar_file.empty()) o.lidar_source = o.lidar_file;
   if (o.scene != "tables" && o.scene != "cuboids") o.scene = Resolve(o.scene, folder);
   return o;
 }

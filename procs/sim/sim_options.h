@@ -28,10 +28,9 @@ struct SimOptions {
   double state_rate_hz = 100.0;    ///< ROBOT_STATE and BASE_POSE, Hz (sim time)
   sim::PoseNoiseOptions pose_noise;
   bool lidar_enabled = true;
-  double lidar_rate_hz = 10.0;     ///< POINT_CLOUD, Hz (sim time)
-  std::string lidar_file;          ///< LiDAR options file (empty: lidar_options or the defaults)
+  std::string lidar_file;          ///< LiDAR options file, config/sim/lidar.yaml's format (its scan_rate_hz is
+                                   ///< the POINT_CLOUD rate); empty: lidar_options or the defaults
   YAML::Node lidar_options;        ///< inline LiDAR options (the `lidar.options` map)
-  std::string lidar_source;        ///< where the LiDAR options come from, for errors
   bool monitor_enabled = true;     ///< the ground-truth collision monitor
   double status_rate_hz = 10.0;    ///< SIM_STATUS, Hz (wall time)
 };

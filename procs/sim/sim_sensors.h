@@ -46,6 +46,8 @@ class ScanSensor {
   virtual ~ScanSensor() = default;
   virtual void SetWorld(const std::vector<OrientedBox>& boxes) = 0;
   virtual ScanResult Scan(const WholeBodyState& state, double t_s) = 0;
+  /// Scans per second of sim time.
+  virtual double rate_hz() const = 0;
 };
 
 class ContactSensor {

@@ -34,7 +34,6 @@ SimAssembly AssembleSim(const SimOptions& options) {
   SimCoreOptions core;
   core.plant = options.plant;
   core.state_rate_hz = options.state_rate_hz;
-  core.lidar_rate_hz = options.lidar_rate_hz;
   core.pose_noise = options.pose_noise;
   core.seed = options.seed;
   core.event_seed = script.seed.value_or(DeriveSeed(options.seed, 4));

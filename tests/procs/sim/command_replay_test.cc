@@ -105,6 +105,7 @@ TEST(CommandReplay, SameLogSameSeedsGiveTheSameStatesAndScans) {
   const ReplayRun c = Replay(commands, 12);
   EXPECT_EQ(a.rejected, 1);
   EXPECT_EQ(a.digest.num_states, 700);
+  EXPECT_EQ(a.digest.num_scans, 70);  // 10 Hz LiDAR
   EXPECT_EQ(a.digest.states(), b.digest.states());
   EXPECT_EQ(a.digest.scans(), b.digest.scans());
   EXPECT_EQ(a.digest.contacts(), b.digest.contacts());

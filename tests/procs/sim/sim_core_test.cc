@@ -31,6 +31,7 @@ class FakeScanner : public ScanSensor {
     r.p_SP.push_back(Eigen::Vector3f(1, 2, 3));
     return r;
   }
+  double rate_hz() const override { return 10.0; }
 
  private:
   FakeWorldLog* log_;

@@ -32,13 +32,15 @@ TEST(SimOptions, LoadsTheShippedConfig) {
   EXPECT_EQ(o.plant.step_s, 0.002);
   EXPECT_EQ(o.plant.base.latency_s, 0.02);
   EXPECT_EQ(o.state_rate_hz, 100.0);
-  EXPECT_EQ(o.lidar_rate_hz, 10.0);
+  EXPECT_EQ(o.lidar_file, std::string(TOPAY_SOURCE_DIR) + "/config/sim/lidar.yaml");
   EXPECT_EQ(o.scene, "tables");
   EXPECT_TRUE(std::filesystem::exists(o.robot_urdf)) << o.robot_urdf;
   EXPECT_TRUE(std::filesystem::exists(o.robot_yaml)) << o.robot_yaml;
   const SimAssembly sim = AssembleSim(o);
   EXPECT_EQ(sim.model->num_joints(), 7);
   EXPECT_NE(sim.scene_description.find("tables seed 1"), std::string::npos);
+  EXPECT_TRUE(sim.core->has_lidar());
+  EXPECT_NE(sim.core->contact_sensor(), nullptr);
 }
 
 TEST(SimOptions, NamesTheFileAndKeyOfBadOptions) {
@@ -55,7 +57,8 @@ TEST(SimOptions, NamesTheFileAndKeyOfBadOptions) {
   expect_error("plant: {base: {latency_s: -1}}\n", "plant.base.latency_s");
   expect_error("plant: {joints: {tau: 1}}\n", "plant.joints.tau");
   expect_error("state: {rate_hz: 0}\n", "state.rate_hz");
-  expect_error("lidar: {rate_hz: fast}\n", "lidar.rate_hz");
+  expect_error("lidar: {enabled: maybe}\n", "lidar.enabled");
+  expect_error("lidar: {file: lidar.yaml, options: {range_max_m: 20}}\n", "lidar");
   expect_error("speed: 3\n", "speed");
   expect_error("plant: {initial: {q_rad: [0, nan]}}\n", "plant.initial.q_rad[1]");
 }
@@ -88,6 +91,15 @@ TEST(SimSetup, MalformedSceneUnknownRobotAndBadEventsAreConfigErrors) {
   } catch (const ConfigError& e) {
     EXPECT_EQ(e.file(), events.events_file);
     EXPECT_EQ(e.field(), "events[0].appear.center");
+  }
+  SimOptions lidar = Base();
+  lidar.lidar_enabled = true;
+  lidar.lidar_file = Write("lidar.yaml", "range_max_m: -3\n");
+  try {
+    AssembleSim(lidar);
+    ADD_FAILURE();
+  } catch (const ConfigError& e) {
+    EXPECT_EQ(e.file(), lidar.lidar_file);
   }
   SimOptions joints = Base();
   joints.plant.initial.q_rad = {0.0, 0.0};

@@ -11,6 +11,7 @@
 #include "procs/runtime/process_loop.h"
 #include "topay/control_command_t.hpp"
 #include "topay/robot_state_t.hpp"
+#include "topay/sim_contact_t.hpp"
 #include "topay/sim_event_t.hpp"
 #include "topay/sim_status_t.hpp"
 
@@ -147,6 +148,54 @@ TEST_F(SimProcess, AppliesRunTimeEvents) {
   const std::string out = ReadText(dir_ + "/out.txt");
   EXPECT_NE(out.find("1 bad SIM_EVENT"), std::string::npos) << out;
   EXPECT_NE(out.find("test crate"), std::string::npos);
+}
+
+struct ContactListener {
+  std::vector<sim_contact_t> contacts;
+  void On(const lcm::ReceiveBuffer*, const std::string&, const sim_contact_t* m) { contacts.push_back(*m); }
+};
+
+TEST(SimProcessContact, ADriveIntoABoxIsReportedOnSimContact) {
+  std::string why;
+  if (!EnterTestNamespace(&why)) GTEST_SKIP() << why;
+  const std::string dir = TestDir("sim_contact");
+  WriteText(dir + "/wall.json", R"({"boxes": [{"center": [1.5, 0, 0.5], "size": [0.4, 3, 1], "yaw": 0}]})");
+  const pid_t pid = Spawn({SimBin(), "--config", Config(), "--scene", dir + "/wall.json", "--name", "sim-contact"},
+                          dir + "/out.txt");
+  HeartbeatWatcher watcher;
+  ContactListener contacts;
+  Listener status;
+  watcher.lcm().subscribe(std::string(channels::SIM_CONTACT), &ContactListener::On, &contacts);
+  watcher.lcm().subscribe(std::string(channels::SIM_STATUS), &Listener::OnStatus, &status);
+  ASSERT_TRUE(watcher.SpinUntil([&] { return watcher.last.contains("sim-contact"); }, 10.0)) << ReadText(dir + "/out.txt");
+  const Clock::time_point start = Clock::now();
+  while (SecondsSince(start) < 4.0 && contacts.contacts.empty()) {
+    const control_command_t c = Command(0.5);
+    watcher.lcm().publish(std::string(channels::CONTROL_COMMAND), &c);
+    watcher.Spin(0.02);
+  }
+  ASSERT_FALSE(contacts.contacts.empty()) << ReadText(dir + "/out.txt");
+  EXPECT_EQ(contacts.contacts[0].body, "base");
+  EXPECT_EQ(contacts.contacts[0].box_id, 0);
+  EXPECT_GT(contacts.contacts[0].depth_m, 0.0);
+  // Keep pushing: the heartbeat turns ERROR (in contact), SIM_STATUS counts the event.
+  const Clock::time_point pushing = Clock::now();
+  while (SecondsSince(pushing) < 1.5) {
+    const control_command_t c = Command(0.5);
+    watcher.lcm().publish(std::string(channels::CONTROL_COMMAND), &c);
+    watcher.Spin(0.02);
+  }
+  ASSERT_FALSE(status.statuses.empty());
+  EXPECT_TRUE(status.statuses.back().in_contact);
+  EXPECT_GE(status.statuses.back().contact_events, 1);
+  EXPECT_GT(status.statuses.back().max_depth_m, 0.0);
+  EXPECT_NE(watcher.last["sim-contact"].status.find("IN CONTACT"), std::string::npos) << watcher.last["sim-contact"].status;
+  kill(pid, SIGTERM);
+  const int code = WaitFor(pid, 5.0);
+  EXPECT_TRUE(WIFEXITED(code) && WEXITSTATUS(code) == 0);
+  const std::string out = ReadText(dir + "/out.txt");
+  EXPECT_NE(out.find("CONTACT at t="), std::string::npos);
+  EXPECT_NE(out.find("final: contacts"), std::string::npos) << out;
 }
 
 TEST(SimProcessErrors, ExitCodesForBadFilesAndFlags) {
