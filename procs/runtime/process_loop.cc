@@ -44,6 +44,10 @@ void ProcessLoop::AddTimer(double period_s, std::function<void()> callback) {
                      std::move(callback)});
 }
 
+void ProcessLoop::AddScheduledTimer(std::function<Clock::time_point()> callback) {
+  timers_.push_back({std::chrono::nanoseconds(0), Clock::time_point::min(), nullptr, std::move(callback)});
+}
+
 void ProcessLoop::SetHealth(std::int8_t health, std::string status) {
   health_ = health;
   status_ = std::move(status);
@@ -66,6 +70,10 @@ void ProcessLoop::PublishHeartbeat() {
 void ProcessLoop::RunDueTimers(Clock::time_point now) {
   for (Timer& timer : timers_) {
     if (now < timer.next) continue;
+    if (timer.scheduled) {
+      timer.next = timer.scheduled();
+      continue;
+    }
     // Catch up without bursts: the next deadline is the first period boundary after now.
     timer.next += timer.period;
     if (timer.next <= now) timer.next = now + timer.period;
@@ -87,7 +95,7 @@ int ProcessLoop::RunUntil(Clock::time_point deadline) {
     return kExitConfigError;
   }
   const Clock::time_point start = Clock::now();
-  for (Timer& timer : timers_) timer.next = start + timer.period;
+  for (Timer& timer : timers_) timer.next = timer.scheduled ? start : start + timer.period;
   AddTimer(options_.heartbeat_period_s, [this] { PublishHeartbeat(); });
   timers_.back().next = start;  // the first heartbeat at once: "ready" for the supervisor
   stop_ = false;

@@ -120,6 +120,7 @@ int main(int argc, char** argv) {
   node_options.joint_names = sim.model->joint_names;
   simproc::SimNode node(&loop, sim.core.get(), node_options);
   const int code = loop.Run();
+  node.Finish();
   std::printf("%s\n", node.FinalReport().c_str());
   std::fflush(stdout);
   return code;

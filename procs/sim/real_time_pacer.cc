@@ -42,6 +42,20 @@ void RealTimePacer::RecordStep(Clock::time_point now, std::int64_t step) {
   const double late_us = std::chrono::duration<double, std::micro>(now - DueTime(step)).count();
   if (late_us > step_s_ / rate_ * 1e6) ++late_steps_;
   lateness_us_.push_back(std::max(0.0, late_us));
+  if (run_lateness_us_.size() < 10'000'000) run_lateness_us_.push_back(static_cast<float>(std::max(0.0, late_us)));
+}
+
+RealTimePacer::Lateness RealTimePacer::RunLateness() const {
+  Lateness l;
+  l.count = static_cast<std::int64_t>(run_lateness_us_.size());
+  if (run_lateness_us_.empty()) return l;
+  std::vector<float> sorted = run_lateness_us_;
+  std::sort(sorted.begin(), sorted.end());
+  const auto at = [&](double q) { return sorted[std::min(sorted.size() - 1, static_cast<std::size_t>(q * (sorted.size() - 1) + 0.5))]; };
+  l.p50_us = at(0.5);
+  l.p99_us = at(0.99);
+  l.max_us = sorted.back();
+  return l;
 }
 
 RealTimePacer::Lateness RealTimePacer::TakeLateness() {

@@ -36,6 +36,8 @@ class RealTimePacer {
     std::int64_t count = 0;
   };
   Lateness TakeLateness();
+  /// The same over every step recorded since Start (the first 10 million), not cleared.
+  Lateness RunLateness() const;
   double rate() const { return rate_; }
 
  private:
@@ -50,6 +52,7 @@ class RealTimePacer {
   std::int64_t late_steps_ = 0;
   std::int64_t resets_ = 0;
   std::vector<double> lateness_us_;
+  std::vector<float> run_lateness_us_;
 };
 
 }  // namespace topay::simproc

@@ -29,10 +29,17 @@ SimCore::SimCore(const RobotModel& model, const SimCoreOptions& options, const S
   SyncWorld();
 }
 
+std::unique_ptr<ScanSensor> SimCore::ReleaseScanSensor() {
+  if (!scan_) return nullptr;
+  scan_released_ = true;
+  return std::move(scan_);
+}
+
 void SimCore::SyncWorld() {
   if (world_.version() == world_version_seen_) return;
   world_version_seen_ = world_.version();
   if (scan_) scan_->SetWorld(world_.present_boxes());
+  if (scan_released_ && listener_ != nullptr) listener_->OnWorldChanged(world_.present_boxes());
   if (contact_) contact_->SetWorld(world_.present_boxes());
 }
 
@@ -64,10 +71,14 @@ void SimCore::Step() {
     sample.pose = pose_sensor_.Measure({state.x_m, state.y_m, state.yaw_rad});
     if (listener_ != nullptr) listener_->OnState(sample);
   }
-  if (scan_ && k % scan_every_steps_ == 0) {
-    const ScanResult scan = scan_->Scan(state, t_s);
+  if ((scan_ || scan_released_) && k % scan_every_steps_ == 0) {
     ++counts_.scans;
-    if (listener_ != nullptr) listener_->OnScan(scan);
+    if (scan_) {
+      const ScanResult scan = scan_->Scan(state, t_s);
+      if (listener_ != nullptr) listener_->OnScan(scan);
+    } else if (listener_ != nullptr) {
+      listener_->OnScanDue(state, t_s);
+    }
   }
 }
 

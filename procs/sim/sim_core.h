@@ -36,6 +36,11 @@ class SimListener {
   virtual ~SimListener() = default;
   virtual void OnState(const StateSample& sample) {}
   virtual void OnScan(const ScanResult& scan) {}
+  /// Only after ReleaseScanSensor: a scan is due now of this state (the caller scans it).
+  virtual void OnScanDue(const WholeBodyState& state, double t_s) {}
+  /// Only after ReleaseScanSensor: the world's present boxes changed (the caller's scanner
+  /// must see them before the next OnScanDue).
+  virtual void OnWorldChanged(const std::vector<OrientedBox>& boxes) {}
   /// box_id: the world's stable id of the box (-1: self collision).
   virtual void OnContact(const ContactResult& contact, int box_id) {}
   /// error empty: applied; else why it was not (the world is unchanged).
@@ -81,7 +86,11 @@ class SimCore {
   const SimCounts& counts() const { return counts_; }
   /// The monitor (null if none).
   const ContactSensor* contact_sensor() const { return contact_.get(); }
-  bool has_lidar() const { return scan_ != nullptr; }
+  bool has_lidar() const { return scan_ != nullptr || scan_released_; }
+  /// Hands the LiDAR to the caller (e.g. a ScanWorker thread; it has seen the current world):
+  /// from now on the core reports OnScanDue and OnWorldChanged instead of scanning, and
+  /// counts the scans it asked for. Null if there is no LiDAR.
+  std::unique_ptr<ScanSensor> ReleaseScanSensor();
 
  private:
   void SyncWorld();
@@ -96,6 +105,7 @@ class SimCore {
   std::int64_t state_every_steps_;
   std::int64_t scan_every_steps_;
   std::int64_t world_version_seen_ = -1;
+  bool scan_released_ = false;
   SimCounts counts_;
 };
 

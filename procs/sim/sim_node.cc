@@ -21,16 +21,16 @@ SimNode::SimNode(procs::ProcessLoop* loop, SimCore* core, const SimNodeOptions& 
       options_(options),
       pacer_(core->plant().step_s(), options.rate, options.max_catch_up_steps) {
   core_->SetListener(this);
+  if (options.async_scans && core_->has_lidar()) scan_worker_ = std::make_unique<ScanWorker>(core_->ReleaseScanSensor());
   loop_->Subscribe<control_command_t>(std::string(channels::CONTROL_COMMAND),
                                       [this](const control_command_t& msg) { OnCommand(msg); });
   loop_->Subscribe<sim_event_t>(std::string(channels::SIM_EVENT), [this](const sim_event_t& msg) { OnSimEvent(msg); });
-  const double period_s = options.rate > 0.0 ? core->plant().step_s() / options.rate : 0.0;
-  loop_->AddTimer(period_s, [this] { OnPlantTimer(); });
+  loop_->AddScheduledTimer([this] { return OnPlantTimer(); });
   loop_->AddTimer(1.0 / options.status_rate_hz, [this] { OnStatusTimer(); });
   loop_->SetHealth(heartbeat_t::OK, "starting");
 }
 
-void SimNode::OnPlantTimer() {
+RealTimePacer::Clock::time_point SimNode::OnPlantTimer() {
   const auto now = RealTimePacer::Clock::now();
   if (!started_) {
     started_ = true;
@@ -39,6 +39,8 @@ void SimNode::OnPlantTimer() {
     start_utime_ = options_.start_utime > 0 ? options_.start_utime : procs::NowUtime() - std::llround(core_->time_s() * 1e6);
     last_status_wall_ = now;
     last_status_sim_s_ = core_->time_s();
+    started_wall_ = now;
+    started_sim_s_ = core_->time_s();
   }
   const int due = pacer_.StepsDue(now, core_->steps() - steps_at_start_);
   for (int i = 0; i < due; ++i) {
@@ -46,9 +48,16 @@ void SimNode::OnPlantTimer() {
     pacer_.RecordStep(RealTimePacer::Clock::now(), core_->steps() - steps_at_start_);
     if (options_.duration_s > 0.0 && core_->time_s() >= options_.duration_s - 1e-9) {
       loop_->Stop();
-      return;
+      stopping_ = true;
+      break;
     }
   }
+  if (scan_worker_) {
+    if (options_.rate <= 0.0 || stopping_) scan_worker_->Drain();  // as fast as possible: scans keep pace
+    for (const ScanResult& scan : scan_worker_->TakeCompleted()) OnScan(scan);
+  }
+  // As fast as possible: at once again (after the loop has handled what LCM has).
+  return options_.rate > 0.0 ? pacer_.NextDue(core_->steps() - steps_at_start_) : RealTimePacer::Clock::now();
 }
 
 void SimNode::OnCommand(const control_command_t& msg) {
@@ -81,6 +90,10 @@ void SimNode::OnScan(const ScanResult& scan) {
   loop_->lcm().publish(std::string(channels::POINT_CLOUD), &cloud);
   ++scans_published_;
 }
+
+void SimNode::OnScanDue(const WholeBodyState& state, double t_s) { scan_worker_->Request(state, t_s); }
+
+void SimNode::OnWorldChanged(const std::vector<OrientedBox>& boxes) { scan_worker_->SetWorld(boxes); }
 
 void SimNode::OnContact(const ContactResult& contact, int box_id) {
   const sim_contact_t msg = ToContactMessage(contact, box_id, start_utime_);
@@ -142,14 +155,27 @@ void SimNode::OnStatusTimer() {
                                        s.commands_rejected, s.command_timeouts, s.step_lateness_p99_us));
 }
 
+void SimNode::Finish() {
+  if (!scan_worker_) return;
+  scan_worker_->Drain();
+  for (const ScanResult& scan : scan_worker_->TakeCompleted()) OnScan(scan);
+}
+
 std::string SimNode::FinalReport() const {
   const sim::PlantCounts& plant = core_->plant().counts();
+  const RealTimePacer::Lateness lateness = pacer_.RunLateness();
+  const double wall_s = std::chrono::duration<double>(RealTimePacer::Clock::now() - started_wall_).count();
   std::string text = fmt::format(
-      "final: sim time {:.3f} s, plant steps {}, late steps {} (schedule resets {}, worst p99 lateness {:.0f} us), "
-      "commands {} accepted / {} rejected / {} timeouts, scans {}, events {} applied / {} failed / {} bad SIM_EVENT",
-      core_->time_s(), plant.steps, pacer_.late_steps(), pacer_.schedule_resets(), worst_p99_us_,
-      plant.commands_accepted, plant.commands_rejected, plant.command_timeouts, core_->counts().scans,
-      core_->counts().events_applied, core_->counts().events_failed, bad_events_);
+      "final: sim time {:.3f} s in {:.3f} s wall (real-time factor {:.3f}, target {}), plant steps {}\n"
+      "final: step lateness p50 {:.0f} us, p99 {:.0f} us, max {:.0f} us over {} steps; late steps (> 1 period) {}, "
+      "schedule resets {}\n"
+      "final: commands {} accepted / {} rejected / {} timeouts, scans {} requested / {} published, events {} "
+      "applied / {} failed / {} bad SIM_EVENT",
+      core_->time_s(), wall_s, started_ ? (core_->time_s() - started_sim_s_) / wall_s : 0.0, options_.rate,
+      plant.steps, lateness.p50_us, lateness.p99_us, lateness.max_us, lateness.count, pacer_.late_steps(),
+      pacer_.schedule_resets(), plant.commands_accepted, plant.commands_rejected, plant.command_timeouts,
+      core_->counts().scans, scans_published_, core_->counts().events_applied, core_->counts().events_failed,
+      bad_events_);
   if (const ContactSensor* monitor = core_->contact_sensor()) {
     const ContactCounts c = monitor->counts();
     text += fmt::format("\nfinal: contacts {} events, {} of {} steps in contact, max depth {:.4f} m\n{}", c.events,

@@ -6,11 +6,13 @@
 // rejected command, else OK.
 
 #include <cstdint>
+#include <memory>
 #include <string>
 #include <vector>
 
 #include "procs/runtime/process_loop.h"
 #include "procs/sim/real_time_pacer.h"
+#include "procs/sim/scan_worker.h"
 #include "procs/sim/sim_core.h"
 #include "topay/control_command_t.hpp"
 #include "topay/sim_event_t.hpp"
@@ -25,6 +27,7 @@ struct SimNodeOptions {
   double status_rate_hz = 10.0;     ///< SIM_STATUS and the health, Hz (wall)
   double duration_s = 0.0;          ///< stop after this much sim time (0: run until stopped)
   std::string lidar_frame = "lidar";
+  bool async_scans = true;          ///< scan on a thread of its own (ScanWorker) instead of in the plant loop
   std::vector<std::string> joint_names;
 };
 
@@ -35,17 +38,22 @@ class SimNode : public SimListener {
 
   /// The status now (real_time_factor over the last status period).
   sim_status_t Status() const { return last_status_; }
+  /// Publishes the scans still being made (call after the loop ends).
+  void Finish();
   /// The final counts, printed on exit.
   std::string FinalReport() const;
   std::int64_t start_utime() const { return start_utime_; }
 
   void OnState(const StateSample& sample) override;
   void OnScan(const ScanResult& scan) override;
+  void OnScanDue(const WholeBodyState& state, double t_s) override;
+  void OnWorldChanged(const std::vector<OrientedBox>& boxes) override;
   void OnContact(const ContactResult& contact, int box_id) override;
   void OnEvent(const sim::SimEvent& event, double t_s, const std::string& error) override;
 
  private:
-  void OnPlantTimer();
+  /// Runs the steps due; returns when the next one is due.
+  RealTimePacer::Clock::time_point OnPlantTimer();
   void OnStatusTimer();
   void OnCommand(const control_command_t& msg);
   void OnSimEvent(const sim_event_t& msg);
@@ -54,7 +62,11 @@ class SimNode : public SimListener {
   SimCore* core_;
   SimNodeOptions options_;
   RealTimePacer pacer_;
+  std::unique_ptr<ScanWorker> scan_worker_;  // async_scans: the LiDAR's thread
+  RealTimePacer::Clock::time_point started_wall_{};
+  double started_sim_s_ = 0.0;
   bool started_ = false;
+  bool stopping_ = false;
   std::int64_t start_utime_ = 0;
   std::int64_t steps_at_start_ = 0;
   std::int64_t bad_events_ = 0;

@@ -10,6 +10,7 @@
 #include "graph_test_support.h"
 #include "procs/runtime/process_loop.h"
 #include "topay/control_command_t.hpp"
+#include "topay/point_cloud_t.hpp"
 #include "topay/robot_state_t.hpp"
 #include "topay/sim_contact_t.hpp"
 #include "topay/sim_event_t.hpp"
@@ -25,6 +26,8 @@ struct Listener {
   std::vector<robot_state_t> states;
   std::vector<sim_status_t> statuses;
   int poses = 0;
+  std::vector<point_cloud_t> clouds;
+  void OnCloud(const lcm::ReceiveBuffer*, const std::string&, const point_cloud_t* m) { clouds.push_back(*m); }
   void OnState(const lcm::ReceiveBuffer*, const std::string&, const robot_state_t* m) { states.push_back(*m); }
   void OnStatus(const lcm::ReceiveBuffer*, const std::string&, const sim_status_t* m) { statuses.push_back(*m); }
   void OnPose(const lcm::ReceiveBuffer*, const std::string&) { ++poses; }
@@ -52,6 +55,7 @@ class SimProcess : public testing::Test {
     watcher_->lcm().subscribe(std::string(channels::ROBOT_STATE), &Listener::OnState, &listener_);
     watcher_->lcm().subscribe(std::string(channels::SIM_STATUS), &Listener::OnStatus, &listener_);
     watcher_->lcm().subscribe(std::string(channels::BASE_POSE), &Listener::OnPose, &listener_);
+    watcher_->lcm().subscribe(std::string(channels::POINT_CLOUD), &Listener::OnCloud, &listener_);
     ASSERT_TRUE(watcher_->SpinUntil([&] { return watcher_->last.contains("sim-under-test"); }, 10.0))
         << ReadText(dir_ + "/out.txt");
   }
@@ -86,7 +90,19 @@ TEST_F(SimProcess, PublishesStateAt100HzAndStatusAt10Hz) {
   listener_.states.clear();
   listener_.statuses.clear();
   listener_.poses = 0;
+  listener_.clouds.clear();
   watcher_->Spin(2.0);
+  // The LiDAR at 10 Hz (a large message: LCM 1.3 may lose a fragmented one under load).
+  EXPECT_GE(listener_.clouds.size(), 12u);
+  EXPECT_LE(listener_.clouds.size(), 22u);
+  if (!listener_.clouds.empty()) {
+    const point_cloud_t& cloud = listener_.clouds.back();
+    ASSERT_FALSE(listener_.statuses.empty());
+    const std::int64_t start_utime = listener_.statuses.back().utime - std::llround(listener_.statuses.back().sim_time_s * 1e6);
+    EXPECT_EQ((cloud.utime - start_utime) % 100'000, 0);  // on the 10 Hz grid of sim time
+    EXPECT_GT(cloud.num_coords, 3 * 1000);  // the stowed arm and the chassis give self hits at least
+    EXPECT_EQ(cloud.sensor_frame, "lidar");
+  }
   const std::size_t n = listener_.states.size();
   EXPECT_GT(n, 160u);
   EXPECT_LT(n, 240u);
