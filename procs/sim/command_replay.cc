@@ -2,6 +2,9 @@
 
 #include <lcm/lcm-cpp.hpp>
 
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
 #include <cmath>
 
 #include "core/common/error.h"
@@ -29,7 +32,7 @@ std::vector<TimedCommand> ReadCommandLog(const std::string& path, const std::str
 }
 
 std::int64_t ReplayCommands(SimCore* core, const std::vector<TimedCommand>& commands,
-                            std::int64_t epoch_utime, double end_s) {
+                            std::int64_t epoch_utime, double end_s, std::vector<double>* step_us) {
   const double step_s = core->plant().step_s();
   const std::int64_t end_step = std::llround(end_s / step_s);
   std::int64_t rejected = 0;
@@ -43,9 +46,42 @@ std::int64_t ReplayCommands(SimCore* core, const std::vector<TimedCommand>& comm
       ++next;
     }
     if (core->steps() >= end_step) break;
+    if (step_us == nullptr) {
+      core->Step();
+      continue;
+    }
+    const auto start = std::chrono::steady_clock::now();
     core->Step();
+    step_us->push_back(std::chrono::duration<double, std::micro>(std::chrono::steady_clock::now() - start).count());
   }
   return rejected;
+}
+
+}  // namespace topay::simproc
+
+namespace topay::simproc {
+namespace {
+
+std::string Percentiles(std::vector<double> v, const char* what) {
+  if (v.empty()) return std::string(what) + ": none";
+  std::sort(v.begin(), v.end());
+  const auto at = [&](double q) { return v[std::min(v.size() - 1, static_cast<std::size_t>(q * (v.size() - 1) + 0.5))]; };
+  char text[256];
+  std::snprintf(text, sizeof text, "%s: median %.2f us, p95 %.2f us, max %.0f us over %zu steps", what, at(0.5), at(0.95),
+                v.back(), v.size());
+  return text;
+}
+
+}  // namespace
+
+std::string StepTimeSummary(const std::vector<double>& step_us, std::int64_t steps_per_scan) {
+  std::vector<double> plain, scanned;
+  for (std::size_t i = 0; i < step_us.size(); ++i) {
+    const std::int64_t k = static_cast<std::int64_t>(i) + 1;  // the step's number after it ran
+    (steps_per_scan > 0 && k % steps_per_scan == 0 ? scanned : plain).push_back(step_us[i]);
+  }
+  return Percentiles(plain, "core step (plant, events, monitor, localisation)") + "\n" +
+         Percentiles(scanned, "core step with a LiDAR scan");
 }
 
 }  // namespace topay::simproc

@@ -25,8 +25,18 @@ std::vector<TimedCommand> ReadCommandLog(const std::string& path, const std::str
 
 /// Runs `core` from its current step to end_s (sim seconds), giving each command at the first
 /// step at or after (utime - epoch_utime) (commands before the core's time go in at once).
-/// Returns the number of commands the plant rejected.
+/// Returns the number of commands the plant rejected. With step_us, the wall time of every
+/// core step (microseconds; steady clock) is appended.
 std::int64_t ReplayCommands(SimCore* core, const std::vector<TimedCommand>& commands,
-                            std::int64_t epoch_utime, double end_s);
+                            std::int64_t epoch_utime, double end_s, std::vector<double>* step_us = nullptr);
+
+}  // namespace topay::simproc
+
+namespace topay::simproc {
+
+/// "core step (no scan): median 2.1 us, p95 3.0 us over 4900 steps; with a LiDAR scan: ..."
+/// from the step times of ReplayCommands (steps k with k % steps_per_scan == 0 scanned;
+/// steps_per_scan 0: none did).
+std::string StepTimeSummary(const std::vector<double>& step_us, std::int64_t steps_per_scan);
 
 }  // namespace topay::simproc

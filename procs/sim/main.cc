@@ -70,7 +70,8 @@ int ReplayCommandLog(simproc::SimAssembly* sim, const std::string& log, double d
   sim->core->SetListener(&digest);
   const double end_s = duration_s > 0.0 ? duration_s
                                         : (commands.back().utime - commands.front().utime) * 1e-6 + 1.0;
-  const std::int64_t rejected = simproc::ReplayCommands(sim->core.get(), commands, commands.front().utime, end_s);
+  std::vector<double> step_us;
+  const std::int64_t rejected = simproc::ReplayCommands(sim->core.get(), commands, commands.front().utime, end_s, &step_us);
   std::printf("replay: %zu commands (%lld undecodable skipped, %lld rejected), %.3f s sim time\n", commands.size(),
               static_cast<long long>(skipped), static_cast<long long>(rejected), sim->core->time_s());
   std::printf("digest states %016llx (%lld) scans %016llx (%lld) contacts %016llx (%lld) events %016llx (%lld)\n",
@@ -78,6 +79,7 @@ int ReplayCommandLog(simproc::SimAssembly* sim, const std::string& log, double d
               static_cast<unsigned long long>(digest.scans()), static_cast<long long>(digest.num_scans),
               static_cast<unsigned long long>(digest.contacts()), static_cast<long long>(digest.num_contacts),
               static_cast<unsigned long long>(digest.events()), static_cast<long long>(digest.num_events));
+  std::printf("%s\n", simproc::StepTimeSummary(step_us, sim->core->steps_per_scan()).c_str());
   return procs::kExitOk;
 }
 

@@ -86,6 +86,8 @@ class SimCore {
   const SimCounts& counts() const { return counts_; }
   /// The monitor (null if none).
   const ContactSensor* contact_sensor() const { return contact_.get(); }
+  /// Plant steps between two scans (0: no LiDAR).
+  std::int64_t steps_per_scan() const { return has_lidar() ? scan_every_steps_ : 0; }
   bool has_lidar() const { return scan_ != nullptr || scan_released_; }
   /// Hands the LiDAR to the caller (e.g. a ScanWorker thread; it has seen the current world):
   /// from now on the core reports OnScanDue and OnWorldChanged instead of scanning, and
