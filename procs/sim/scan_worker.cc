@@ -1,10 +1,22 @@
 #include "procs/sim/scan_worker.h"
 
+#include <sys/resource.h>
+#include <sys/syscall.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cerrno>
 #include <optional>
 
 namespace topay::simproc {
+namespace {
 
-ScanWorker::ScanWorker(std::unique_ptr<ScanSensor> sensor) : sensor_(std::move(sensor)), thread_([this] { Run(); }) {}
+constexpr int kNiceIncrement = 10;
+
+}  // namespace
+
+ScanWorker::ScanWorker(std::unique_ptr<ScanSensor> sensor, std::function<void(ScanResult&&)> on_done)
+    : sensor_(std::move(sensor)), on_done_(std::move(on_done)), thread_([this] { Run(); }) {}
 
 ScanWorker::~ScanWorker() {
   {
@@ -49,6 +61,13 @@ int ScanWorker::backlog() const {
 }
 
 void ScanWorker::Run() {
+  // Lower this thread's priority (nice + kNiceIncrement, allowed to any user): on a busy
+  // machine the scheduler then lets the plant thread run as soon as it wakes instead of at the
+  // end of the scan's time slice. The scans keep their 10 Hz (one takes ~5 % of a core).
+  const int tid = static_cast<int>(syscall(SYS_gettid));
+  errno = 0;
+  const int nice = getpriority(PRIO_PROCESS, tid);
+  if (errno == 0) setpriority(PRIO_PROCESS, tid, std::min(19, nice + kNiceIncrement));
   std::unique_lock lock(mutex_);
   while (true) {
     wake_.wait(lock, [this] { return stop_ || !jobs_.empty(); });
@@ -63,6 +82,10 @@ void ScanWorker::Run() {
     } else {
       const ScanJob& scan = std::get<ScanJob>(job);
       result = sensor_->Scan(scan.state, scan.t_s);
+      if (on_done_) {
+        on_done_(std::move(*result));
+        result.reset();
+      }
     }
     lock.lock();
     if (result) done_.push_back(std::move(*result));

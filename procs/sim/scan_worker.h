@@ -6,6 +6,7 @@
 
 #include <condition_variable>
 #include <deque>
+#include <functional>
 #include <memory>
 #include <mutex>
 #include <thread>
@@ -18,7 +19,9 @@ namespace topay::simproc {
 
 class ScanWorker {
  public:
-  explicit ScanWorker(std::unique_ptr<ScanSensor> sensor);
+  /// With `on_done`, each finished scan is handed to it on the worker's thread (e.g. to
+  /// convert and publish it there) instead of being kept for TakeCompleted.
+  explicit ScanWorker(std::unique_ptr<ScanSensor> sensor, std::function<void(ScanResult&&)> on_done = nullptr);
   /// Finishes the queued jobs, then joins the thread.
   ~ScanWorker();
 
@@ -40,6 +43,7 @@ class ScanWorker {
   void Run();
 
   std::unique_ptr<ScanSensor> sensor_;
+  std::function<void(ScanResult&&)> on_done_;
   mutable std::mutex mutex_;
   std::condition_variable wake_, idle_;
   std::deque<Job> jobs_;

@@ -21,7 +21,14 @@ SimNode::SimNode(procs::ProcessLoop* loop, SimCore* core, const SimNodeOptions& 
       options_(options),
       pacer_(core->plant().step_s(), options.rate, options.max_catch_up_steps) {
   core_->SetListener(this);
-  if (options.async_scans && core_->has_lidar()) scan_worker_ = std::make_unique<ScanWorker>(core_->ReleaseScanSensor());
+  if (options.async_scans && core_->has_lidar()) {
+    // The scan thread converts and publishes its clouds itself (a 100 kB message takes about a
+    // millisecond to encode and send: not in the plant loop), on an LCM of its own.
+    cloud_lcm_ = std::make_unique<lcm::LCM>(loop_->options().lcm_url);
+    std::function<void(ScanResult&&)> publish;
+    if (cloud_lcm_->good()) publish = [this](ScanResult&& scan) { OnScan(scan); };
+    scan_worker_ = std::make_unique<ScanWorker>(core_->ReleaseScanSensor(), std::move(publish));
+  }
   loop_->Subscribe<control_command_t>(std::string(channels::CONTROL_COMMAND),
                                       [this](const control_command_t& msg) { OnCommand(msg); });
   loop_->Subscribe<sim_event_t>(std::string(channels::SIM_EVENT), [this](const sim_event_t& msg) { OnSimEvent(msg); });
@@ -87,7 +94,8 @@ void SimNode::OnState(const StateSample& sample) {
 
 void SimNode::OnScan(const ScanResult& scan) {
   const point_cloud_t cloud = ToPointCloud(scan, start_utime_, options_.lidar_frame);
-  loop_->lcm().publish(std::string(channels::POINT_CLOUD), &cloud);
+  lcm::LCM& lcm = cloud_lcm_ && cloud_lcm_->good() ? *cloud_lcm_ : loop_->lcm();
+  lcm.publish(std::string(channels::POINT_CLOUD), &cloud);
   ++scans_published_;
 }
 
@@ -174,7 +182,7 @@ std::string SimNode::FinalReport() const {
       core_->time_s(), wall_s, started_ ? (core_->time_s() - started_sim_s_) / wall_s : 0.0, options_.rate,
       plant.steps, lateness.p50_us, lateness.p99_us, lateness.max_us, lateness.count, pacer_.late_steps(),
       pacer_.schedule_resets(), plant.commands_accepted, plant.commands_rejected, plant.command_timeouts,
-      core_->counts().scans, scans_published_, core_->counts().events_applied, core_->counts().events_failed,
+      core_->counts().scans, scans_published_.load(), core_->counts().events_applied, core_->counts().events_failed,
       bad_events_);
   if (const ContactSensor* monitor = core_->contact_sensor()) {
     const ContactCounts c = monitor->counts();

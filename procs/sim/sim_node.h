@@ -5,6 +5,7 @@
 // rate, and keeps the heartbeat's health: ERROR while in contact, WARN after a contact or a
 // rejected command, else OK.
 
+#include <atomic>
 #include <cstdint>
 #include <memory>
 #include <string>
@@ -62,7 +63,6 @@ class SimNode : public SimListener {
   SimCore* core_;
   SimNodeOptions options_;
   RealTimePacer pacer_;
-  std::unique_ptr<ScanWorker> scan_worker_;  // async_scans: the LiDAR's thread
   RealTimePacer::Clock::time_point started_wall_{};
   double started_sim_s_ = 0.0;
   bool started_ = false;
@@ -70,12 +70,16 @@ class SimNode : public SimListener {
   std::int64_t start_utime_ = 0;
   std::int64_t steps_at_start_ = 0;
   std::int64_t bad_events_ = 0;
-  std::int64_t scans_published_ = 0;
+  std::atomic<std::int64_t> scans_published_{0};
   // Status period bookkeeping.
   RealTimePacer::Clock::time_point last_status_wall_{};
   double last_status_sim_s_ = 0.0;
   sim_status_t last_status_{};
   double worst_p99_us_ = 0.0;
+  // Last: the LiDAR's thread is joined (finishing its jobs, which use the members above)
+  // before anything else is destroyed.
+  std::unique_ptr<lcm::LCM> cloud_lcm_;       // async_scans: the LiDAR thread's own LCM (publishes POINT_CLOUD)
+  std::unique_ptr<ScanWorker> scan_worker_;  // async_scans: the LiDAR's thread (declared after cloud_lcm_)
 };
 
 }  // namespace topay::simproc
