@@ -22,6 +22,4 @@ std::unique_ptr<ContactSensor> MakeMonitor(const SimOptions& options, const Kine
   return std::make_unique<MonitorAdapter>(kinematics);
 }
 
-bool SensorsAvailable() { return true; }
-
 }  // namespace topay::simproc

@@ -15,7 +15,4 @@ namespace topay::simproc {
 std::unique_ptr<ScanSensor> MakeLidar(const SimOptions& options, const Kinematics& kinematics, std::uint64_t seed);
 std::unique_ptr<ContactSensor> MakeMonitor(const SimOptions& options, const Kinematics& kinematics);
 
-/// False in a build without the LiDAR and monitor libraries (then both makers return null).
-bool SensorsAvailable();
-
 }  // namespace topay::simproc
