@@ -93,7 +93,7 @@ TEST_F(SimProcess, PublishesStateAt100HzAndStatusAt10Hz) {
   listener_.clouds.clear();
   watcher_->Spin(2.0);
   // The LiDAR at 10 Hz (a large message: LCM 1.3 may lose a fragmented one under load).
-  EXPECT_GE(listener_.clouds.size(), 12u);
+  EXPECT_GE(listener_.clouds.size(), 10u);
   EXPECT_LE(listener_.clouds.size(), 22u);
   if (!listener_.clouds.empty()) {
     const point_cloud_t& cloud = listener_.clouds.back();
