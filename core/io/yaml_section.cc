@@ -84,6 +84,22 @@ void YamlSection::Read(const char* key, bool* value) {
   *value = parsed;
 }
 
+void YamlSection::Read(const char* key, std::vector<double>* value) {
+  const YAML::Node child = Child(key);
+  if (!child.IsDefined() || child.IsNull()) return;
+  if (!child.IsSequence()) throw ConfigError(source_, FieldPath(key), "expected a list of numbers");
+  std::vector<double> parsed;
+  for (std::size_t i = 0; i < child.size(); ++i) {
+    double number = 0.0;
+    const std::string item = FieldPath(key) + "[" + std::to_string(i) + "]";
+    if (!child[i].IsScalar() || !YAML::convert<double>::decode(child[i], number) || !std::isfinite(number)) {
+      throw ConfigError(source_, item, "expected a finite number");
+    }
+    parsed.push_back(number);
+  }
+  *value = std::move(parsed);
+}
+
 YamlSection YamlSection::Section(const char* key) {
   return YamlSection(Child(key), source_, FieldPath(key));
 }

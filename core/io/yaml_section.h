@@ -4,6 +4,7 @@
 #include <memory>
 #include <set>
 #include <string>
+#include <vector>
 
 #include <yaml-cpp/yaml.h>
 
@@ -25,6 +26,11 @@ class YamlSection {
   void Read(const char* key, bool* value);
   void Read(const char* key, std::uint64_t* value);
   void Read(const char* key, std::string* value);
+  /// A list of numbers, e.g. `q_rad: [0, 0.5, 0]` (every entry finite).
+  void Read(const char* key, std::vector<double>* value);
+  /// The raw node of `key` (undefined if absent), marked as read; for structures the typed
+  /// readers do not cover (lists of maps). Errors about it should name FieldPath(key).
+  YAML::Node Raw(const char* key) { return Child(key); }
   /// A sub-map (empty if absent). Finish it before finishing this one.
   YamlSection Section(const char* key);
   /// Throws ConfigError for the first key of this map that nothing read.

@@ -12,6 +12,9 @@
 #include "topay/point_cloud_t.hpp"
 #include "topay/poly_trajectory_t.hpp"
 #include "topay/robot_state_t.hpp"
+#include "topay/sim_contact_t.hpp"
+#include "topay/sim_event_t.hpp"
+#include "topay/sim_status_t.hpp"
 #include "topay/whole_body_state_t.hpp"
 #include "topay_msgs/checked_decode.h"
 
@@ -34,7 +37,8 @@ const std::vector<MessageTypeInfo>& AllMessageTypes() {
       Info<robot_state_t>(),    Info<whole_body_state_t>(), Info<point_cloud_t>(),
       Info<map_update_t>(),     Info<goal_t>(),           Info<poly_trajectory_t>(),
       Info<control_command_t>(), Info<planner_status_t>(), Info<heartbeat_t>(),
-      Info<graph_status_t>()};
+      Info<graph_status_t>(),   Info<sim_contact_t>(),    Info<sim_status_t>(),
+      Info<sim_event_t>()};
   return kTypes;
 }
 

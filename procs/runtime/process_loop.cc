@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <cerrno>
 #include <cstring>
+#include <ctime>
 
 #include "topay/heartbeat_t.hpp"
 #include "topay_msgs/channels.h"
@@ -43,6 +44,10 @@ void ProcessLoop::AddTimer(double period_s, std::function<void()> callback) {
                      std::move(callback)});
 }
 
+void ProcessLoop::AddScheduledTimer(std::function<Clock::time_point()> callback) {
+  timers_.push_back({std::chrono::nanoseconds(0), Clock::time_point::min(), nullptr, std::move(callback)});
+}
+
 void ProcessLoop::SetHealth(std::int8_t health, std::string status) {
   health_ = health;
   status_ = std::move(status);
@@ -65,6 +70,10 @@ void ProcessLoop::PublishHeartbeat() {
 void ProcessLoop::RunDueTimers(Clock::time_point now) {
   for (Timer& timer : timers_) {
     if (now < timer.next) continue;
+    if (timer.scheduled) {
+      timer.next = timer.scheduled();
+      continue;
+    }
     // Catch up without bursts: the next deadline is the first period boundary after now.
     timer.next += timer.period;
     if (timer.next <= now) timer.next = now + timer.period;
@@ -86,7 +95,7 @@ int ProcessLoop::RunUntil(Clock::time_point deadline) {
     return kExitConfigError;
   }
   const Clock::time_point start = Clock::now();
-  for (Timer& timer : timers_) timer.next = start + timer.period;
+  for (Timer& timer : timers_) timer.next = timer.scheduled ? start : start + timer.period;
   AddTimer(options_.heartbeat_period_s, [this] { PublishHeartbeat(); });
   timers_.back().next = start;  // the first heartbeat at once: "ready" for the supervisor
   stop_ = false;
@@ -96,10 +105,14 @@ int ProcessLoop::RunUntil(Clock::time_point deadline) {
     if (now >= deadline) break;
     RunDueTimers(now);
     if (stop_) break;
+    // ppoll: nanosecond timeouts, so that fast timers (a 500 Hz plant) wake on time rather
+    // than on the next millisecond.
     const auto wait = std::min(NextDeadline(), deadline) - Clock::now();
-    const auto wait_ms = std::chrono::ceil<std::chrono::milliseconds>(wait).count();
+    const std::int64_t wait_ns = std::clamp<std::int64_t>(
+        std::chrono::duration_cast<std::chrono::nanoseconds>(wait).count(), 0, 60'000'000'000LL);
+    const timespec timeout{static_cast<time_t>(wait_ns / 1'000'000'000), static_cast<long>(wait_ns % 1'000'000'000)};
     pollfd fds[2] = {{lcm_fd, POLLIN, 0}, {signals_.fd(), POLLIN, 0}};
-    const int ready = poll(fds, 2, static_cast<int>(std::clamp<std::int64_t>(wait_ms, 0, 60'000)));
+    const int ready = ppoll(fds, 2, &timeout, nullptr);
     if (ready < 0 && errno != EINTR) {
       spdlog::error("poll: {}", std::strerror(errno));
       return kExitConfigError;

@@ -43,6 +43,11 @@ class ProcessLoop {
   /// timers before Run, not from a callback. A late timer skips to the next period (no burst).
   void AddTimer(double period_s, std::function<void()> callback);
 
+  /// A timer that schedules itself: `callback` runs first when Run starts and returns when it
+  /// wants to run next (e.g. the due time of the next plant step), so that a late wake-up does
+  /// not shift its later deadlines as a fixed period would. Add it before Run.
+  void AddScheduledTimer(std::function<Clock::time_point()> callback);
+
   /// Subscribes to `channel` decoding each message with CheckedDecode<Msg>; a message that
   /// fails is counted and logged (ChannelStats) and never reaches `handler`.
   template <class Msg>
@@ -66,6 +71,7 @@ class ProcessLoop {
     std::chrono::nanoseconds period;
     Clock::time_point next;
     std::function<void()> callback;
+    std::function<Clock::time_point()> scheduled;  // AddScheduledTimer (then no period)
   };
   void PublishHeartbeat();
   void RunDueTimers(Clock::time_point now);

@@ -21,6 +21,9 @@
 #include "topay/point_cloud_t.hpp"
 #include "topay/poly_trajectory_t.hpp"
 #include "topay/robot_state_t.hpp"
+#include "topay/sim_contact_t.hpp"
+#include "topay/sim_event_t.hpp"
+#include "topay/sim_status_t.hpp"
 #include "topay/whole_body_state_t.hpp"
 
 namespace topay::test {
@@ -41,7 +44,8 @@ struct MessageList {
 using Catalogue =
     MessageList<base_pose_t, base_velocity_t, joint_state_t, robot_state_t, whole_body_state_t,
                 point_cloud_t, map_update_t, goal_t, poly_trajectory_t, control_command_t,
-                planner_status_t, heartbeat_t, graph_status_t>;
+                planner_status_t, heartbeat_t, graph_status_t, sim_contact_t, sim_status_t,
+                sim_event_t>;
 using AllMessageTypes = Catalogue::GtestTypes;
 
 // Names typed tests after the message type ("RoundTrip/joint_state_t") instead of 0, 1, ...
@@ -393,6 +397,103 @@ struct MessageSample<graph_status_t> {
     EXPECT_EQ(a.rss_kB, b.rss_kB);
     EXPECT_EQ(a.heartbeat_age_s, b.heartbeat_age_s);
     EXPECT_EQ(a.health, b.health);
+  }
+};
+
+template <>
+struct MessageSample<sim_contact_t> {
+  static sim_contact_t Make() {
+    sim_contact_t m;
+    m.utime = 1'700'000'001'323'456;
+    m.body = "sphere 11 (link7)";
+    m.box_id = -1;  // self collision
+    m.depth_m = 0.0125;
+    return m;
+  }
+  static void ExpectSame(const sim_contact_t& a, const sim_contact_t& b) {
+    EXPECT_EQ(a.utime, b.utime);
+    EXPECT_EQ(a.body, b.body);
+    EXPECT_EQ(a.box_id, b.box_id);
+    EXPECT_EQ(a.depth_m, b.depth_m);
+  }
+};
+
+template <>
+struct MessageSample<sim_status_t> {
+  static sim_status_t Make() {
+    sim_status_t m;
+    m.utime = 1'700'000'001'423'456;
+    m.sim_time_s = 12.5;
+    m.real_time_factor = 0.97;
+    m.target_rate = 1.0;
+    m.plant_steps = 6250;
+    m.late_steps = 3;
+    m.step_lateness_p99_us = 181.5;
+    m.commands_accepted = 625;
+    m.commands_rejected = 2;
+    m.command_timeouts = 1;
+    m.contact_events = 4;
+    m.contact_steps = 77;
+    m.max_depth_m = 0.031;
+    m.in_contact = true;
+    m.scans = 125;
+    m.events_applied = 2;
+    m.boxes_present = -5;  // not meaningful, but it must survive
+    return m;
+  }
+  static void ExpectSame(const sim_status_t& a, const sim_status_t& b) {
+    EXPECT_EQ(a.utime, b.utime);
+    EXPECT_EQ(a.sim_time_s, b.sim_time_s);
+    EXPECT_EQ(a.real_time_factor, b.real_time_factor);
+    EXPECT_EQ(a.target_rate, b.target_rate);
+    EXPECT_EQ(a.plant_steps, b.plant_steps);
+    EXPECT_EQ(a.late_steps, b.late_steps);
+    EXPECT_EQ(a.step_lateness_p99_us, b.step_lateness_p99_us);
+    EXPECT_EQ(a.commands_accepted, b.commands_accepted);
+    EXPECT_EQ(a.commands_rejected, b.commands_rejected);
+    EXPECT_EQ(a.command_timeouts, b.command_timeouts);
+    EXPECT_EQ(a.contact_events, b.contact_events);
+    EXPECT_EQ(a.contact_steps, b.contact_steps);
+    EXPECT_EQ(a.max_depth_m, b.max_depth_m);
+    EXPECT_EQ(a.in_contact, b.in_contact);
+    EXPECT_EQ(a.scans, b.scans);
+    EXPECT_EQ(a.events_applied, b.events_applied);
+    EXPECT_EQ(a.boxes_present, b.boxes_present);
+  }
+};
+
+template <>
+struct MessageSample<sim_event_t> {
+  static sim_event_t Make() {
+    sim_event_t m;
+    m.utime = 1'700'000'001'523'456;
+    m.name = "door closes";
+    m.action = sim_event_t::APPEAR;
+    m.box_id = 1001;
+    m.has_box = true;
+    const double center[3] = {2.5, -1.25, 0.75}, size[3] = {0.4, 1.2, 1.5}, point[2] = {-3.0, 4.5};
+    for (int i = 0; i < 3; ++i) m.center_m[i] = center[i];
+    for (int i = 0; i < 3; ++i) m.size_m[i] = size[i];
+    m.yaw_rad = -0.3;
+    m.trigger = sim_event_t::NEAR_POINT;
+    m.at_s = 7.5;
+    for (int i = 0; i < 2; ++i) m.point_m[i] = point[i];
+    m.distance_m = 1.5;
+    return m;
+  }
+  static void ExpectSame(const sim_event_t& a, const sim_event_t& b) {
+    EXPECT_EQ(a.utime, b.utime);
+    EXPECT_EQ(a.name, b.name);
+    EXPECT_EQ(a.action, b.action);
+    EXPECT_EQ(a.box_id, b.box_id);
+    EXPECT_EQ(a.has_box, b.has_box);
+    for (int i = 0; i < 3; ++i) EXPECT_EQ(a.center_m[i], b.center_m[i]) << i;
+    for (int i = 0; i < 3; ++i) EXPECT_EQ(a.size_m[i], b.size_m[i]) << i;
+    EXPECT_EQ(a.yaw_rad, b.yaw_rad);
+    EXPECT_EQ(a.trigger, b.trigger);
+    EXPECT_EQ(a.at_s, b.at_s);
+    for (int i = 0; i < 2; ++i) EXPECT_EQ(a.point_m[i], b.point_m[i]) << i;
+    EXPECT_EQ(a.distance_m, b.distance_m);
   }
 };
 

@@ -19,10 +19,14 @@ inline constexpr std::string_view CONTROL_COMMAND = "CONTROL_COMMAND";  // contr
 inline constexpr std::string_view PLANNER_STATUS = "PLANNER_STATUS";    // planner_status_t
 inline constexpr std::string_view HEARTBEAT = "HEARTBEAT";              // heartbeat_t
 inline constexpr std::string_view GRAPH_STATUS = "GRAPH_STATUS";        // graph_status_t
+inline constexpr std::string_view SIM_CONTACT = "SIM_CONTACT";          // sim_contact_t
+inline constexpr std::string_view SIM_STATUS = "SIM_STATUS";            // sim_status_t
+inline constexpr std::string_view SIM_EVENT = "SIM_EVENT";              // sim_event_t
 
 // Every channel above, e.g. for a logger's or a bridge's channel list.
-inline constexpr std::array<std::string_view, 12> kAll = {
+inline constexpr std::array<std::string_view, 15> kAll = {
     BASE_POSE,  BASE_VELOCITY, JOINT_STATE,     ROBOT_STATE,    POINT_CLOUD, MAP_UPDATE,
-    GOAL,       TRAJECTORY,    CONTROL_COMMAND, PLANNER_STATUS, HEARTBEAT,   GRAPH_STATUS};
+    GOAL,       TRAJECTORY,    CONTROL_COMMAND, PLANNER_STATUS, HEARTBEAT,   GRAPH_STATUS,
+    SIM_CONTACT, SIM_STATUS,   SIM_EVENT};
 
 }  // namespace topay::channels

@@ -24,8 +24,8 @@ TEST(LaunchCli, DryRunPrintsTheResolvedPlan) {
   const std::string out = ReadText(dir + "/out.txt");
   EXPECT_NE(out.find("private network namespace (isolated)"), std::string::npos) << out;
   EXPECT_NE(out.find("1. logger"), std::string::npos) << out;
-  EXPECT_NE(out.find("2. robot-model"), std::string::npos) << out;
-  EXPECT_NE(out.find(BinDir() + "/topay-kinematic-sim --config"), std::string::npos) << out;
+  EXPECT_NE(out.find("2. sim"), std::string::npos) << out;
+  EXPECT_NE(out.find(BinDir() + "/topay-sim --config"), std::string::npos) << out;
   EXPECT_NE(out.find("lcm-logger --quiet -f " + dir + "/run/graph.lcmlog"), std::string::npos) << out;
   EXPECT_EQ(out.find("drive-pattern"), std::string::npos) << "autostart: false";
   EXPECT_FALSE(std::filesystem::exists(dir + "/run")) << "a dry run creates nothing";

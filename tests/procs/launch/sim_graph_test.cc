@@ -1,6 +1,7 @@
 // The shipped simulation graph (config/graphs/sim.yaml) runs as it is, isolated by default:
-// the logger records the robot model's ROBOT_STATE and HEARTBEAT and the launcher's
-// GRAPH_STATUS into <run>/graph.lcmlog; with --group drive the commands move the model.
+// the logger records the simulator's ROBOT_STATE, BASE_POSE, POINT_CLOUD, SIM_STATUS, HEARTBEAT
+// and the launcher's GRAPH_STATUS into <run>/graph.lcmlog; with --group drive the commands move
+// the robot.
 
 #include <gtest/gtest.h>
 
@@ -10,7 +11,7 @@
 namespace topay::test {
 namespace {
 
-TEST(SimGraph, RunsIsolatedAndRecordsTheRobotModel) {
+TEST(SimGraph, RunsIsolatedAndRecordsTheSimulator) {
   std::string why;
   if (!EnterTestNamespace(&why)) GTEST_SKIP() << why;  // the launcher nests its own namespace
   const std::string dir = TestDir("sim_graph");
@@ -22,12 +23,18 @@ TEST(SimGraph, RunsIsolatedAndRecordsTheRobotModel) {
   EXPECT_NE(out.find("isolated: private network namespace"), std::string::npos) << out;
   const loginfo::LogSummary summary = loginfo::SummarizeLog(dir + "/graph.lcmlog");
   ASSERT_TRUE(summary.channels.contains("ROBOT_STATE")) << loginfo::FormatSummary(summary);
-  EXPECT_GE(summary.channels.at("ROBOT_STATE").count, 20);  // 20 Hz commands for ~2 s
+  EXPECT_GE(summary.channels.at("ROBOT_STATE").count, 150);  // 100 Hz for ~2-3 s
+  ASSERT_TRUE(summary.channels.contains("SIM_STATUS"));
+  EXPECT_GE(summary.channels.at("SIM_STATUS").count, 15);
+  ASSERT_TRUE(summary.channels.contains("BASE_POSE"));
+  ASSERT_TRUE(summary.channels.contains("POINT_CLOUD"));
+  EXPECT_GE(summary.channels.at("POINT_CLOUD").count, 10);
   EXPECT_GE(summary.channels.at("HEARTBEAT").count, 4);
   EXPECT_GE(summary.channels.at("GRAPH_STATUS").count, 2);
   EXPECT_GE(summary.channels.at("CONTROL_COMMAND").count, 20);
   for (const auto& [channel, c] : summary.channels) EXPECT_EQ(c.decode_failures, 0) << channel;
-  for (const char* log : {"/robot-model.log", "/drive-pattern.log", "/logger.log", "/launch.log", "/status.json"}) {
+  EXPECT_NE(ReadText(dir + "/sim.log").find("final: sim time"), std::string::npos);  // counts printed on SIGTERM
+  for (const char* log : {"/sim.log", "/drive-pattern.log", "/logger.log", "/launch.log", "/status.json"}) {
     EXPECT_TRUE(std::filesystem::exists(dir + log)) << log;
   }
 }

@@ -64,6 +64,27 @@ TEST(ProcessLoop, RunsTimersAtTheirPeriod) {
   EXPECT_LE(slow, 2);
 }
 
+TEST(ProcessLoop, ScheduledTimersRunAtTheDeadlinesTheyAskFor) {
+  ProcessLoop loop(MemqOptions());
+  const ProcessLoop::Clock::time_point start = ProcessLoop::Clock::now();
+  int calls = 0;
+  double earliest_ms = 1e9;
+  // Deadlines on a fixed grid of 3 ms from the start, whatever the wake-up delays.
+  loop.AddScheduledTimer([&] {
+    const auto now = ProcessLoop::Clock::now();
+    if (calls > 0) {
+      const auto due = start + std::chrono::milliseconds(3 * calls);
+      earliest_ms = std::min(earliest_ms, std::chrono::duration<double, std::milli>(now - due).count());
+    }
+    ++calls;
+    return start + std::chrono::milliseconds(3 * calls);
+  });
+  loop.RunUntil(start + std::chrono::milliseconds(300));
+  EXPECT_GE(calls, 90);   // 100 deadlines in 300 ms (a loaded machine may merge a few)
+  EXPECT_LE(calls, 102);
+  EXPECT_GE(earliest_ms, 0.0) << "called before its deadline";
+}
+
 TEST(ProcessLoop, SigtermEndsRunCleanly) {
   ProcessLoop loop(MemqOptions());
   int ticks = 0;

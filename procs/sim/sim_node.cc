@@ -1,0 +1,197 @@
+#include "procs/sim/sim_node.h"
+
+#include <spdlog/spdlog.h>
+
+#include <algorithm>
+
+#include "procs/sim/sim_messages.h"
+#include "topay/heartbeat_t.hpp"
+#include "topay_msgs/channels.h"
+
+namespace topay::simproc {
+namespace {
+
+bool Every(std::int64_t n) { return n <= 10 || n % 1000 == 0; }  // log the first 10, then every 1000th
+
+}  // namespace
+
+SimNode::SimNode(procs::ProcessLoop* loop, SimCore* core, const SimNodeOptions& options)
+    : loop_(loop),
+      core_(core),
+      options_(options),
+      pacer_(core->plant().step_s(), options.rate, options.max_catch_up_steps) {
+  core_->SetListener(this);
+  if (options.async_scans && core_->has_lidar()) {
+    // The scan thread converts and publishes its clouds itself (a 100 kB message takes about a
+    // millisecond to encode and send: not in the plant loop), on an LCM of its own.
+    cloud_lcm_ = std::make_unique<lcm::LCM>(loop_->options().lcm_url);
+    std::function<void(ScanResult&&)> publish;
+    if (cloud_lcm_->good()) publish = [this](ScanResult&& scan) { OnScan(scan); };
+    scan_worker_ = std::make_unique<ScanWorker>(core_->ReleaseScanSensor(), std::move(publish));
+  }
+  loop_->Subscribe<control_command_t>(std::string(channels::CONTROL_COMMAND),
+                                      [this](const control_command_t& msg) { OnCommand(msg); });
+  loop_->Subscribe<sim_event_t>(std::string(channels::SIM_EVENT), [this](const sim_event_t& msg) { OnSimEvent(msg); });
+  loop_->AddScheduledTimer([this] { return OnPlantTimer(); });
+  loop_->AddTimer(1.0 / options.status_rate_hz, [this] { OnStatusTimer(); });
+  loop_->SetHealth(heartbeat_t::OK, "starting");
+}
+
+RealTimePacer::Clock::time_point SimNode::OnPlantTimer() {
+  const auto now = RealTimePacer::Clock::now();
+  if (!started_) {
+    started_ = true;
+    pacer_.Start(now);
+    steps_at_start_ = core_->steps();
+    start_utime_ = options_.start_utime > 0 ? options_.start_utime : procs::NowUtime() - std::llround(core_->time_s() * 1e6);
+    last_status_wall_ = now;
+    last_status_sim_s_ = core_->time_s();
+    started_wall_ = now;
+    started_sim_s_ = core_->time_s();
+  }
+  const int due = pacer_.StepsDue(now, core_->steps() - steps_at_start_);
+  for (int i = 0; i < due; ++i) {
+    core_->Step();
+    pacer_.RecordStep(RealTimePacer::Clock::now(), core_->steps() - steps_at_start_);
+    if (options_.duration_s > 0.0 && core_->time_s() >= options_.duration_s - 1e-9) {
+      loop_->Stop();
+      stopping_ = true;
+      break;
+    }
+  }
+  if (scan_worker_) {
+    if (options_.rate <= 0.0 || stopping_) scan_worker_->Drain();  // as fast as possible: scans keep pace
+    for (const ScanResult& scan : scan_worker_->TakeCompleted()) OnScan(scan);
+  }
+  // As fast as possible: at once again (after the loop has handled what LCM has).
+  return options_.rate > 0.0 ? pacer_.NextDue(core_->steps() - steps_at_start_) : RealTimePacer::Clock::now();
+}
+
+void SimNode::OnCommand(const control_command_t& msg) {
+  const std::string why = core_->Command(ToActuatorCommand(msg));
+  if (!why.empty() && Every(core_->plant().counts().commands_rejected)) {
+    spdlog::warn("rejected command #{} ({}): the drives brake", core_->plant().counts().commands_rejected, why);
+  }
+}
+
+void SimNode::OnSimEvent(const sim_event_t& msg) {
+  std::string error;
+  std::optional<sim::SimEvent> event = FromEventMessage(msg, &error);
+  if (!event) {
+    ++bad_events_;
+    spdlog::warn("ignored SIM_EVENT '{}': {}", msg.name, error);
+    return;
+  }
+  spdlog::info("SIM_EVENT queued: {}", sim::Describe(*event));
+  core_->AddEvent(std::move(*event));
+}
+
+void SimNode::OnState(const StateSample& sample) {
+  const robot_state_t state = ToRobotState(sample, start_utime_, options_.joint_names);
+  loop_->lcm().publish(std::string(channels::ROBOT_STATE), &state);
+  loop_->lcm().publish(std::string(channels::BASE_POSE), &state.pose);
+}
+
+void SimNode::OnScan(const ScanResult& scan) {
+  const point_cloud_t cloud = ToPointCloud(scan, start_utime_, options_.lidar_frame);
+  lcm::LCM& lcm = cloud_lcm_ && cloud_lcm_->good() ? *cloud_lcm_ : loop_->lcm();
+  lcm.publish(std::string(channels::POINT_CLOUD), &cloud);
+  ++scans_published_;
+}
+
+void SimNode::OnScanDue(const WholeBodyState& state, double t_s) { scan_worker_->Request(state, t_s); }
+
+void SimNode::OnWorldChanged(const std::vector<OrientedBox>& boxes) { scan_worker_->SetWorld(boxes); }
+
+void SimNode::OnContact(const ContactResult& contact, int box_id) {
+  const sim_contact_t msg = ToContactMessage(contact, box_id, start_utime_);
+  loop_->lcm().publish(std::string(channels::SIM_CONTACT), &msg);
+  spdlog::error("CONTACT at t={:.3f} s: {} with box {} depth {:.4f} m", contact.t_s, contact.body, box_id,
+                contact.depth_m);
+}
+
+void SimNode::OnEvent(const sim::SimEvent& event, double t_s, const std::string& error) {
+  if (error.empty()) {
+    spdlog::info("event at t={:.3f} s: {} ({} boxes present)", t_s, sim::Describe(event), core_->world().num_present());
+  } else {
+    spdlog::warn("event at t={:.3f} s not applied: {}: {}", t_s, sim::Describe(event), error);
+  }
+}
+
+void SimNode::OnStatusTimer() {
+  if (!started_) return;
+  const auto now = RealTimePacer::Clock::now();
+  const double wall_s = std::chrono::duration<double>(now - last_status_wall_).count();
+  const double sim_s = core_->time_s() - last_status_sim_s_;
+  last_status_wall_ = now;
+  last_status_sim_s_ = core_->time_s();
+  const RealTimePacer::Lateness lateness = pacer_.TakeLateness();
+  worst_p99_us_ = std::max(worst_p99_us_, lateness.p99_us);
+
+  sim_status_t s{};
+  s.utime = SimUtime(start_utime_, core_->time_s());
+  s.sim_time_s = core_->time_s();
+  s.real_time_factor = wall_s > 0.0 ? sim_s / wall_s : 0.0;
+  s.target_rate = options_.rate;
+  const sim::PlantCounts& plant = core_->plant().counts();
+  s.plant_steps = plant.steps;
+  s.late_steps = pacer_.late_steps();
+  s.step_lateness_p99_us = lateness.p99_us;
+  s.commands_accepted = plant.commands_accepted;
+  s.commands_rejected = plant.commands_rejected;
+  s.command_timeouts = plant.command_timeouts;
+  if (const ContactSensor* monitor = core_->contact_sensor()) {
+    const ContactCounts c = monitor->counts();
+    s.contact_events = c.events;
+    s.contact_steps = c.steps_in_contact;
+    s.max_depth_m = c.max_depth_m;
+    s.in_contact = monitor->active() > 0;
+  }
+  s.scans = core_->counts().scans;
+  s.events_applied = core_->counts().events_applied;
+  s.boxes_present = core_->world().num_present();
+  last_status_ = s;
+  loop_->lcm().publish(std::string(channels::SIM_STATUS), &s);
+
+  const std::int8_t health = s.in_contact ? heartbeat_t::ERROR
+                             : (s.contact_events > 0 || s.commands_rejected > 0) ? heartbeat_t::WARN
+                                                                                 : heartbeat_t::OK;
+  loop_->SetHealth(health, fmt::format("t {:.1f} s, rtf {:.2f}, contacts {}{}, scans {}, commands {} (rejected {}, "
+                                       "timeouts {}), step p99 late {:.0f} us",
+                                       s.sim_time_s, s.real_time_factor, s.contact_events,
+                                       s.in_contact ? " (IN CONTACT)" : "", s.scans, s.commands_accepted,
+                                       s.commands_rejected, s.command_timeouts, s.step_lateness_p99_us));
+}
+
+void SimNode::Finish() {
+  if (!scan_worker_) return;
+  scan_worker_->Drain();
+  for (const ScanResult& scan : scan_worker_->TakeCompleted()) OnScan(scan);
+}
+
+std::string SimNode::FinalReport() const {
+  const sim::PlantCounts& plant = core_->plant().counts();
+  const RealTimePacer::Lateness lateness = pacer_.RunLateness();
+  const double wall_s = std::chrono::duration<double>(RealTimePacer::Clock::now() - started_wall_).count();
+  std::string text = fmt::format(
+      "final: sim time {:.3f} s in {:.3f} s wall (real-time factor {:.3f}, target {}), plant steps {}\n"
+      "final: step lateness p50 {:.0f} us, p99 {:.0f} us, max {:.0f} us over {} steps; late steps (> 1 period) {}, "
+      "schedule resets {}\n"
+      "final: commands {} accepted / {} rejected / {} timeouts, scans {} requested / {} published, events {} "
+      "applied / {} failed / {} bad SIM_EVENT",
+      core_->time_s(), wall_s, started_ ? (core_->time_s() - started_sim_s_) / wall_s : 0.0, options_.rate,
+      plant.steps, lateness.p50_us, lateness.p99_us, lateness.max_us, lateness.count, pacer_.late_steps(),
+      pacer_.schedule_resets(), plant.commands_accepted, plant.commands_rejected, plant.command_timeouts,
+      core_->counts().scans, scans_published_.load(), core_->counts().events_applied, core_->counts().events_failed,
+      bad_events_);
+  if (const ContactSensor* monitor = core_->contact_sensor()) {
+    const ContactCounts c = monitor->counts();
+    text += fmt::format("\nfinal: contacts {} events, {} of {} steps in contact, max depth {:.4f} m\n{}", c.events,
+                        c.steps_in_contact, c.steps, c.max_depth_m, monitor->Report());
+  } else {
+    text += "\nfinal: no collision monitor";
+  }
+  return text;
+}
+
+}  // namespace topay::simproc

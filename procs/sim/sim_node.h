@@ -1,0 +1,85 @@
+#pragma once
+// topay-sim on the bus: paces a SimCore in real time (or faster, or as fast as possible) on the
+// process loop's timers, feeds it CONTROL_COMMAND and SIM_EVENT, publishes ROBOT_STATE,
+// BASE_POSE, POINT_CLOUD, SIM_CONTACT as the core produces them and SIM_STATUS at the status
+// rate, and keeps the heartbeat's health: ERROR while in contact, WARN after a contact or a
+// rejected command, else OK.
+
+#include <atomic>
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "procs/runtime/process_loop.h"
+#include "procs/sim/real_time_pacer.h"
+#include "procs/sim/scan_worker.h"
+#include "procs/sim/sim_core.h"
+#include "topay/control_command_t.hpp"
+#include "topay/sim_event_t.hpp"
+#include "topay/sim_status_t.hpp"
+
+namespace topay::simproc {
+
+struct SimNodeOptions {
+  std::int64_t start_utime = 0;     ///< utime of sim time 0 (0: the wall clock when stepping starts)
+  double rate = 1.0;                ///< real-time factor (0: as fast as possible)
+  int max_catch_up_steps = 50;
+  double status_rate_hz = 10.0;     ///< SIM_STATUS and the health, Hz (wall)
+  double duration_s = 0.0;          ///< stop after this much sim time (0: run until stopped)
+  std::string lidar_frame = "lidar";
+  bool async_scans = true;          ///< scan on a thread of its own (ScanWorker) instead of in the plant loop
+  std::vector<std::string> joint_names;
+};
+
+class SimNode : public SimListener {
+ public:
+  /// Subscribes and adds the timers to *loop (call before loop->Run()). loop and core outlive it.
+  SimNode(procs::ProcessLoop* loop, SimCore* core, const SimNodeOptions& options);
+
+  /// The status now (real_time_factor over the last status period).
+  sim_status_t Status() const { return last_status_; }
+  /// Publishes the scans still being made (call after the loop ends).
+  void Finish();
+  /// The final counts, printed on exit.
+  std::string FinalReport() const;
+  std::int64_t start_utime() const { return start_utime_; }
+
+  void OnState(const StateSample& sample) override;
+  void OnScan(const ScanResult& scan) override;
+  void OnScanDue(const WholeBodyState& state, double t_s) override;
+  void OnWorldChanged(const std::vector<OrientedBox>& boxes) override;
+  void OnContact(const ContactResult& contact, int box_id) override;
+  void OnEvent(const sim::SimEvent& event, double t_s, const std::string& error) override;
+
+ private:
+  /// Runs the steps due; returns when the next one is due.
+  RealTimePacer::Clock::time_point OnPlantTimer();
+  void OnStatusTimer();
+  void OnCommand(const control_command_t& msg);
+  void OnSimEvent(const sim_event_t& msg);
+
+  procs::ProcessLoop* loop_;
+  SimCore* core_;
+  SimNodeOptions options_;
+  RealTimePacer pacer_;
+  RealTimePacer::Clock::time_point started_wall_{};
+  double started_sim_s_ = 0.0;
+  bool started_ = false;
+  bool stopping_ = false;
+  std::int64_t start_utime_ = 0;
+  std::int64_t steps_at_start_ = 0;
+  std::int64_t bad_events_ = 0;
+  std::atomic<std::int64_t> scans_published_{0};
+  // Status period bookkeeping.
+  RealTimePacer::Clock::time_point last_status_wall_{};
+  double last_status_sim_s_ = 0.0;
+  sim_status_t last_status_{};
+  double worst_p99_us_ = 0.0;
+  // Last: the LiDAR's thread is joined (finishing its jobs, which use the members above)
+  // before anything else is destroyed.
+  std::unique_ptr<lcm::LCM> cloud_lcm_;       // async_scans: the LiDAR thread's own LCM (publishes POINT_CLOUD)
+  std::unique_ptr<ScanWorker> scan_worker_;  // async_scans: the LiDAR's thread (declared after cloud_lcm_)
+};
+
+}  // namespace topay::simproc

@@ -1,0 +1,102 @@
+#include "procs/sim/sim_options.h"
+
+#include <cmath>
+#include <filesystem>
+
+#include "core/common/error.h"
+#include "core/io/bounded_text_file.h"
+#include "core/io/yaml_section.h"
+
+namespace topay::simproc {
+namespace {
+
+std::string Resolve(const std::string& path, const std::filesystem::path& folder) {
+  if (path.empty() || std::filesystem::path(path).is_absolute()) return path;
+  return (folder / path).lexically_normal().string();
+}
+
+void Positive(const YamlSection& s, const char* key, double value) {
+  if (!(value > 0.0) || !std::isfinite(value)) throw ConfigError(s.source(), s.FieldPath(key), "must be a finite number > 0");
+}
+
+}  // namespace
+
+SimOptions LoadSimOptions(const std::string& path) {
+  const std::string text = ReadBoundedTextFile(path, kMaxConfigFileBytes, "simulator YAML");
+  YAML::Node root;
+  try {
+    root = YAML::Load(text);
+  } catch (const YAML::Exception& e) {
+    throw ConfigError(path, "", std::string("malformed YAML: ") + e.what());
+  }
+  const std::filesystem::path folder = std::filesystem::path(path).parent_path();
+  SimOptions o;
+  o.source = path;
+  YamlSection top(root, path);
+  top.Read("seed", &o.seed);
+  double start_utime = 0.0;
+  top.Read("start_utime", &start_utime);
+  if (start_utime < 0.0 || start_utime != std::floor(start_utime)) {
+    throw ConfigError(path, "start_utime", "must be a whole number of microseconds >= 0");
+  }
+  o.start_utime = static_cast<std::int64_t>(start_utime);
+  top.Read("rate", &o.rate);
+  if (!(o.rate >= 0.0) || !std::isfinite(o.rate)) throw ConfigError(path, "rate", "must be >= 0 (0: as fast as possible)");
+  top.Read("max_catch_up_steps", &o.max_catch_up_steps);
+  if (o.max_catch_up_steps < 1) throw ConfigError(path, "max_catch_up_steps", "must be >= 1");
+  {
+    YamlSection s = top.Section("robot");
+    s.Read("urdf", &o.robot_urdf);
+    s.Read("yaml", &o.robot_yaml);
+    s.Finish();
+  }
+  {
+    YamlSection s = top.Section("scene");
+    s.Read("source", &o.scene);
+    s.Read("seed", &o.scene_seed);
+    s.Read("keep_out_radius_m", &o.keep_out_radius_m);
+    if (!(o.keep_out_radius_m >= 0.0)) throw ConfigError(path, "scene.keep_out_radius_m", "must be >= 0");
+    s.Finish();
+  }
+  top.Read("events_file", &o.events_file);
+  {
+    YamlSection s = top.Section("plant");
+    sim::ReadPlantOptions(s, &o.plant);
+    s.Finish();
+  }
+  {
+    YamlSection s = top.Section("state");
+    s.Read("rate_hz", &o.state_rate_hz);
+    Positive(s, "rate_hz", o.state_rate_hz);
+    YamlSection noise = s.Section("pose_noise");
+    sim::ReadPoseNoiseOptions(noise, &o.pose_noise);
+    noise.Finish();
+    s.Finish();
+  }
+  {
+    YamlSection s = top.Section("lidar");
+    s.Read("enabled", &o.lidar_enabled);
+    s.Read("file", &o.lidar_file);
+    o.lidar_options = s.Raw("options");
+    if (!o.lidar_file.empty() && o.lidar_options.IsDefined() && !o.lidar_options.IsNull()) {
+      throw ConfigError(path, "lidar", "give `file` or `options`, not both");
+    }
+    s.Finish();
+  }
+  {
+    YamlSection s = top.Section("monitor");
+    s.Read("enabled", &o.monitor_enabled);
+    s.Finish();
+  }
+  top.Read("status_rate_hz", &o.status_rate_hz);
+  Positive(top, "status_rate_hz", o.status_rate_hz);
+  top.Finish();
+  o.robot_urdf = Resolve(o.robot_urdf, folder);
+  o.robot_yaml = Resolve(o.robot_yaml, folder);
+  o.events_file = Resolve(o.events_file, folder);
+  o.lidar_file = Resolve(o.lidar_file, folder);
+  if (o.scene != "tables" && o.scene != "cuboids") o.scene = Resolve(o.scene, folder);
+  return o;
+}
+
+}  // namespace topay::simproc

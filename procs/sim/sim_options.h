@@ -1,0 +1,42 @@
+#pragma once
+// The options of topay-sim, from config/sim/sim.yaml (every key documented there and in
+// docs/simulator.md). Command-line flags override some of them (sim_flags in main.cc).
+
+#include <cstdint>
+#include <string>
+
+#include <yaml-cpp/yaml.h>
+
+#include "sim/localization/pose_sensor.h"
+#include "sim/plant/plant_options.h"
+
+namespace topay::simproc {
+
+struct SimOptions {
+  std::string source = "(built-in defaults)";  ///< the config file, for errors
+  std::uint64_t seed = 1;          ///< master seed: plant slip, pose noise, LiDAR, event jitter
+  std::int64_t start_utime = 0;    ///< utime of sim time 0, us since the Unix epoch (0: wall clock at start)
+  double rate = 1.0;               ///< real-time factor of the pacing (0: as fast as possible)
+  int max_catch_up_steps = 50;     ///< most plant steps run at one wake-up when late (then it lags)
+  std::string robot_urdf;          ///< robot URDF (empty: the shipped TopAY robot, config/robot/)
+  std::string robot_yaml;          ///< robot YAML (empty: the shipped one)
+  std::string scene = "tables";    ///< "tables", "cuboids" (generated) or a scene JSON file
+  std::uint64_t scene_seed = 1;    ///< seed of a generated scene
+  double keep_out_radius_m = 1.2;  ///< generated scenes: no obstacle within this radius of the start
+  std::string events_file;         ///< scripted events (empty: none)
+  sim::PlantOptions plant;
+  double state_rate_hz = 100.0;    ///< ROBOT_STATE and BASE_POSE, Hz (sim time)
+  sim::PoseNoiseOptions pose_noise;
+  bool lidar_enabled = true;
+  std::string lidar_file;          ///< LiDAR options file, config/sim/lidar.yaml's format (its scan_rate_hz is
+                                   ///< the POINT_CLOUD rate); empty: lidar_options or the defaults
+  YAML::Node lidar_options;        ///< inline LiDAR options (the `lidar.options` map)
+  bool monitor_enabled = true;     ///< the ground-truth collision monitor
+  double status_rate_hz = 10.0;    ///< SIM_STATUS, Hz (wall time)
+};
+
+/// Loads the YAML at `path` (relative paths inside resolved against its folder). Throws
+/// ConfigError naming the file and key.
+SimOptions LoadSimOptions(const std::string& path);
+
+}  // namespace topay::simproc
