@@ -41,7 +41,7 @@ std::string ProcessLoop::error() const {
 void ProcessLoop::AddTimer(double period_s, std::function<void()> callback) {
   const auto period = std::chrono::nanoseconds(static_cast<std::int64_t>(period_s * 1e9));
   timers_.push_back({std::max(period, std::chrono::nanoseconds(1000)), Clock::time_point::min(),
-                     std::move(callback)});
+                     std::move(callback), nullptr});
 }
 
 void ProcessLoop::AddScheduledTimer(std::function<Clock::time_point()> callback) {

@@ -57,8 +57,12 @@ TEST(Plant, StepResponseMatchesTheFirstOrderModelAfterTheLatency) {
     max_error_v = std::max(max_error_v, std::abs(plant.measured().v_mps - response(u_v, 0.02, 0.1)));
     max_error_w = std::max(max_error_w, std::abs(plant.measured().omega_radps - response(u_w, 0.02, 0.2)));
     max_error_q = std::max(max_error_q, std::abs(plant.state().qdot_radps[0] - response(u_q, 0.01, 0.05)));
-    if (k == 10) EXPECT_EQ(plant.measured().v_mps, 0.0) << "moved before the latency";
-    if (k == 11) EXPECT_GT(plant.measured().v_mps, 0.0) << "did not move right after the latency";
+    if (k == 10) {
+      EXPECT_EQ(plant.measured().v_mps, 0.0) << "moved before the latency";
+    }
+    if (k == 11) {
+      EXPECT_GT(plant.measured().v_mps, 0.0) << "did not move right after the latency";
+    }
   }
   EXPECT_LT(max_error_v, 1e-12);
   EXPECT_LT(max_error_w, 1e-12);
