@@ -28,8 +28,6 @@ namespace {
 
 using Clock = Stopwatch::Clock;
 
-// Salt of the seeds of retry rounds (DeriveSeed(seed, salt + round)).
-constexpr std::uint64_t kRoundSeedSalt = 0x7e7a0000;
 
 WholeBodyPlannerOptions Checked(WholeBodyPlannerOptions options) {
   CheckWholeBodyPlannerOptions(options);
@@ -49,16 +47,7 @@ FrontEndOptions RoundFrontEndOptions(const WholeBodyPlannerOptions& options,
   // A state the exact zones accept must pass the validator.
   front_end.exact_zones.obstacle_margin_m = options.validator.obstacle_margin_m;
   front_end.exact_zones.self_margin_m = options.validator.self_margin_m;
-  if (round > 0) {
-    const std::uint64_t r = static_cast<std::uint64_t>(round);
-    front_end.seed = DeriveSeed(front_end.seed, kRoundSeedSalt + r);
-    front_end.ik.seed = DeriveSeed(front_end.ik.seed, kRoundSeedSalt + r);
-    const double growth = std::pow(options.retry.arm_budget_growth, round);
-    front_end.rrt.time_budget_s *= growth;
-    front_end.rrt.max_iterations =
-        static_cast<std::int64_t>(std::llround(front_end.rrt.max_iterations * growth));
-  }
-  return front_end;
+  return RetryRoundFrontEnd(front_end, options.retry, round);
 }
 
 // The back end at margin level k: both clearance margins (their defaults resolved as

@@ -1,8 +1,11 @@
 #include "core/planner/whole_body_planner_options.h"
 
 #include <cmath>
+#include <cstdint>
 #include <stdexcept>
 #include <string>
+
+#include "core/common/random.h"
 
 namespace topay {
 
@@ -26,6 +29,20 @@ void CheckWholeBodyPlannerOptions(const WholeBodyPlannerOptions& o) {
           "retry.round_time_share", "in (0, 1]");
   require(o.retry.arm_budget_growth >= 1.0 && std::isfinite(o.retry.arm_budget_growth),
           "retry.arm_budget_growth", "finite and >= 1");
+}
+
+FrontEndOptions RetryRoundFrontEnd(const FrontEndOptions& front_end, const PlanRetryOptions& retry,
+                                   int round) {
+  constexpr std::uint64_t kRoundSeedSalt = 0x7e7a0000;  // DeriveSeed(seed, salt + round)
+  FrontEndOptions out = front_end;
+  if (round <= 0) return out;
+  const std::uint64_t r = static_cast<std::uint64_t>(round);
+  out.seed = DeriveSeed(out.seed, kRoundSeedSalt + r);
+  out.ik.seed = DeriveSeed(out.ik.seed, kRoundSeedSalt + r);
+  const double growth = std::pow(retry.arm_budget_growth, round);
+  out.rrt.time_budget_s *= growth;
+  out.rrt.max_iterations = static_cast<std::int64_t>(std::llround(out.rrt.max_iterations * growth));
+  return out;
 }
 
 }  // namespace topay

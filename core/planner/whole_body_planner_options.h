@@ -76,6 +76,13 @@ struct WholeBodyPlannerOptions {
   PlanRetryOptions retry;
 };
 
+/// The front end of retry round r (PlanRetryOptions): round 0 as given; round r > 0 with every
+/// seed derived from r (DeriveSeed(seed, salt + r): other IK restarts and base poses, PRM
+/// samples, RRT* trees) and the arm RRT*'s time budget and iteration cap (if set) times
+/// arm_budget_growth^r.
+FrontEndOptions RetryRoundFrontEnd(const FrontEndOptions& front_end, const PlanRetryOptions& retry,
+                                   int round);
+
 /// Throws std::invalid_argument naming the first option (of the planner's own) out of range.
 void CheckWholeBodyPlannerOptions(const WholeBodyPlannerOptions& options);
 
