@@ -124,38 +124,48 @@ void FillColumnDistanceWindow(const OccupancyGrid2& columns, const GridGeometry2
     RowTerms(columns, rows, source_x, num_targets, ws);
   }
 
-  // Step 2: per target cell, the minimum over rows, outward from its own row.
+  // Step 2: per target row, the minimum over the source rows of ey^2 + the row's term, for
+  // both phases at once. ey depends on the rows only, so the inner loops run along the
+  // target's columns over contiguous terms (vectorised); rows with ey^2 beyond the start
+  // bound cannot lower a value below the cap and are skipped.
   const double grid_y_min = oc.y(), grid_y_max = oc.y() + ncy * rc;
   const double start_bound = (cap_m + rc) * (cap_m + rc);  // beyond it the value is the cap
   const std::uint8_t* cells = columns.cells().data();
+  ws->best_to_occupied.resize(num_targets);
+  ws->best_to_free.resize(num_targets);
+  double* to_occupied = ws->best_to_occupied.data();
+  double* to_free = ws->best_to_free.data();
   for (int fy = target.begin.y(); fy < target.end.y(); ++fy) {
     const double y = fg.origin_W_m.y() + (fy + 0.5) * fg.resolution_m;
     const int r = static_cast<int>(std::floor((y - oc.y()) / rc));
-    const bool row_inside = r >= 0 && r < ncy;
-    // Distance in y to the outside of the grid (free), for occupied points (inside the grid).
+    // Occupied points (inside the grid) also reach the free outside of the grid in y.
     const double e_outside_y = std::max(std::min(y - grid_y_min, grid_y_max - y), 0.0);
+    std::fill_n(to_occupied, num_targets, start_bound);
+    std::fill_n(to_free, num_targets, std::min(start_bound, e_outside_y * e_outside_y));
+    for (int cy = rows.begin; cy < rows.end; ++cy) {
+      // ey: distance from y to the row's interval (rows at or below r: y - upper edge, 0 in r
+      // itself; rows above: lower edge - y), one formula whatever the window.
+      const double ey = cy <= r ? std::max(y - (oc.y() + (cy + 1) * rc), 0.0)
+                                : std::max((oc.y() + cy * rc) - y, 0.0);
+      const double ey_squared = ey * ey;
+      if (ey_squared >= start_bound) continue;
+      const double* occupied_terms =
+          ws->squared_x_to_occupied.data() + std::int64_t{cy - rows.begin} * num_targets;
+      const double* free_terms =
+          ws->squared_x_to_free.data() + std::int64_t{cy - rows.begin} * num_targets;
+      for (int i = 0; i < num_targets; ++i) {
+        to_occupied[i] = std::min(to_occupied[i], ey_squared + occupied_terms[i]);
+        to_free[i] = std::min(to_free[i], ey_squared + free_terms[i]);
+      }
+    }
+    // The phase of each point picks its distance: to the occupied squares from a free point,
+    // to the free squares (and the outside) from an occupied one.
+    const bool row_inside = r >= 0 && r < ncy;
     float* out = values + fg.Index(target.begin.x(), fy);
     for (int i = 0; i < num_targets; ++i) {
       const int c = ws->column_of_x[i];
       const bool occupied = row_inside && c >= 0 && c < ncx && cells[std::int64_t{r} * ncx + c];
-      const double* terms = occupied ? ws->squared_x_to_free.data() : ws->squared_x_to_occupied.data();
-      double best = start_bound;
-      if (occupied) best = std::min(best, e_outside_y * e_outside_y);
-      // Rows at or below r: ey = y - upper edge (0 in r itself), growing downwards.
-      for (int cy = std::min(r, rows.end - 1); cy >= rows.begin; --cy) {
-        const double ey = std::max(y - (oc.y() + (cy + 1) * rc), 0.0);
-        const double ey_squared = ey * ey;
-        if (ey_squared >= best) break;
-        best = std::min(best, ey_squared + terms[std::int64_t{cy - rows.begin} * num_targets + i]);
-      }
-      // Rows above r: ey = lower edge - y, growing upwards.
-      for (int cy = std::max(r + 1, rows.begin); cy < rows.end; ++cy) {
-        const double ey = std::max((oc.y() + cy * rc) - y, 0.0);
-        const double ey_squared = ey * ey;
-        if (ey_squared >= best) break;
-        best = std::min(best, ey_squared + terms[std::int64_t{cy - rows.begin} * num_targets + i]);
-      }
-      const double distance = std::min(std::sqrt(best), cap_m);
+      const double distance = std::min(std::sqrt(occupied ? to_free[i] : to_occupied[i]), cap_m);
       out[i] = static_cast<float>(occupied ? -distance : distance);
     }
   }

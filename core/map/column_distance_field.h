@@ -20,6 +20,8 @@ struct ColumnDistanceWorkspace {
   // Per source row and target field column: squared x distance to the nearest occupied / free
   // column square of that row (+inf: none within the source window).
   std::vector<double> squared_x_to_occupied, squared_x_to_free;
+  // Per target field column of the current row: the squared distance so far.
+  std::vector<double> best_to_occupied, best_to_free;
 };
 
 /// The base's 2D field from voxel columns: the capped exact signed distance, at the centres of
@@ -47,10 +49,10 @@ struct ColumnDistanceWorkspace {
 ///  1. per source row cy and target field column: the squared x distance to the nearest
 ///     occupied (and free) square of the row, from the nearest such columns before and after
 ///     (two sweeps per row);
-///  2. per target cell: the minimum over rows of ey^2 + that term, rows visited outward from
-///     the cell's own row and stopped in each direction once ey^2 alone is no better.
-/// Cost: (source rows x target columns) + (target cells x rows within the cap, fewer near
-/// obstacles). Throws std::invalid_argument for a target outside the field grid or cap_m not
+///  2. per target cell: the minimum over the rows within cap_m + one column of ey^2 + that
+///     term (for both phases; ey is the same along a target row, so these loops run over
+///     contiguous memory), then the point's phase picks one.
+/// Cost: (source rows x target columns) + (target cells x rows within the cap). Throws std::invalid_argument for a target outside the field grid or cap_m not
 /// finite and > 0.
 void FillColumnDistanceWindow(const OccupancyGrid2& columns, const GridGeometry2& field_geometry,
                               const CellBox& target, double cap_m,

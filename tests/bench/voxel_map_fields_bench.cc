@@ -121,12 +121,15 @@ void BM_FullBuild3d(benchmark::State& state) {
 }
 BENCHMARK(BM_FullBuild3d)->Unit(benchmark::kMillisecond)->Iterations(8);
 
-// A box of the given size (cm: x, y, z; floor standing, random yaw) appears 0.8-2 m from a
+// A box of the given size (cm: x, y, z; floor standing, random yaw; fourth argument: the 3D
+// field's cap in cm) appears 0.8-2 m from a
 // seeded robot pose in the Tables room, and goes away at the next iteration: each iteration is
 // one ApplyChanges of the box's voxels.
 void BM_BoxAppears(benchmark::State& state) {
   const Scene scene = GenerateTablesScene(1).scene;
-  VoxelMapFields map(BenchOptions(scene));
+  VoxelMapFieldsOptions options = BenchOptions(scene);
+  options.field_3d_cap_m = state.range(3) / 100.0;
+  VoxelMapFields map(options);
   map.ResetFrom(Voxels(scene, map.geometry()));
   const Eigen::Vector3d size(state.range(0) / 100.0, state.range(1) / 100.0,
                              state.range(2) / 100.0);
@@ -173,9 +176,12 @@ void BM_BoxAppears(benchmark::State& state) {
   state.counters["cells_2d"] = cells_2d / n;
 }
 BENCHMARK(BM_BoxAppears)
-    ->Args({30, 30, 60})    // ~430 voxels: a small box or a bag
-    ->Args({50, 50, 100})   // ~2,000 voxels: a box, a person's legs and trunk
-    ->Args({100, 60, 80})   // ~4,000 voxels: a cart or a small table
+    ->Args({30, 30, 60, 100})    // ~600 voxels: a small box or a bag
+    ->Args({50, 50, 100, 100})   // ~2,400 voxels: a box, a person's legs and trunk
+    ->Args({100, 60, 80, 100})   // ~4,300 voxels: a cart or a small table
+    ->Args({30, 30, 60, 50})     // the same with the 3D field capped at 0.5 m
+    ->Args({50, 50, 100, 50})
+    ->Args({100, 60, 80, 50})
     ->Unit(benchmark::kMillisecond);
 
 // Scattered changes (a scan's noise): `count` voxels within 4 m of a seeded robot pose flip
