@@ -53,6 +53,10 @@ std::vector<CellBox> MergeCellBoxes(std::vector<CellBox> boxes,
       }
     }
   }
+  std::int64_t total = 0;
+  for (const CellBox& box : boxes) total += cost(box);
+  const CellBox grid{Eigen::Vector3i::Zero(), dims};
+  if (total > grid.NumCells()) return {grid};
   return boxes;
 }
 

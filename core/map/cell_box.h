@@ -45,7 +45,9 @@ std::vector<CellBox> TileBoundsOfCells(std::span<const Eigen::Vector3i> cells,
 /// the cells of the box grown by `source_reach` (clipped to [0, dims)), the cells a window
 /// recomputation reads. Repeats until no pair merges. Every input cell stays covered; the
 /// result's boxes may overlap (a cell recomputed twice gets the same value). Quadratic in the
-/// boxes per round: above `max_boxes` boxes, returns the single union instead.
+/// boxes per round: above `max_boxes` boxes, returns the single union instead. When the
+/// boxes' costs add up to more than the whole grid's cells, returns the whole grid (one
+/// recomputation of everything reads less).
 std::vector<CellBox> MergeCellBoxes(std::vector<CellBox> boxes,
                                     const Eigen::Vector3i& source_reach,
                                     const Eigen::Vector3i& dims, int max_boxes = 256);

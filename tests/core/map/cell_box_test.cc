@@ -55,6 +55,16 @@ TEST(CellBoxTest, MergeJoinsBoxesOnlyWhenThatSavesWorkAndCoversEveryCell) {
   EXPECT_EQ(one[0].begin, Eigen::Vector3i(10, 10, 0));
   EXPECT_EQ(one[0].end, Eigen::Vector3i(152, 152, 1));
   EXPECT_TRUE(MergeCellBoxes({}, {1, 1, 1}, dims).empty());
+  // Four corner windows each reading 0.36 of the grid (reach 80 in 200 x 200): together they
+  // read more than the grid, so they end as the whole grid, recomputed once.
+  const std::vector<CellBox> corners = {{{0, 0, 0}, {40, 40, 1}},
+                                        {{160, 0, 0}, {200, 40, 1}},
+                                        {{0, 160, 0}, {40, 200, 1}},
+                                        {{160, 160, 0}, {200, 200, 1}}};
+  const std::vector<CellBox> whole = MergeCellBoxes(corners, {80, 80, 0}, dims);
+  ASSERT_EQ(whole.size(), 1u);
+  EXPECT_EQ(whole[0].begin, Eigen::Vector3i(0, 0, 0));
+  EXPECT_EQ(whole[0].end, dims);
 }
 
 }  // namespace
