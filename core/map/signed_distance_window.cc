@@ -52,19 +52,31 @@ void RecomputeSignedDistanceWindow(const std::uint8_t* cells, const Eigen::Vecto
       std::copy(row, row + s.x(), window_cells + (std::int64_t{z} * s.y() + y) * s.x());
     }
   }
-  // 2. and 3. The exact EDT of the window, then signed, capped values placed in the grid.
+  // 2. The exact EDT of the window, its later passes only on the lines through the target.
   float* window_values = ws->values.data();
-  SquaredDistanceToOtherPhase(window_cells, s, window_values, &ws->edt);
-  SignedValuesFromSquaredDistancesInWindow(window_cells, s, source.begin, dims, num_axes,
-                                           resolution_m, cap_m, options, window_values);
-  // 4. Scatter the target's rows back into the grid's values.
   const Eigen::Vector3i t = target.sizes();
   const Eigen::Vector3i offset = target.begin - source.begin;
+  SquaredDistanceToOtherPhaseAt(window_cells, s, offset, offset + t, window_values, &ws->edt);
+  // 3. Gather the target's squared distances and cells, and make them signed, capped values
+  // placed in the grid (the full build's conversion, on the target's block).
+  ws->target_cells.resize(static_cast<std::size_t>(target.NumCells()));
+  ws->target_values.resize(static_cast<std::size_t>(target.NumCells()));
   for (int z = 0; z < t.z(); ++z) {
     for (int y = 0; y < t.y(); ++y) {
-      const float* from = window_values +
-                          (std::int64_t{offset.z() + z} * s.y() + offset.y() + y) * s.x() +
-                          offset.x();
+      const std::int64_t from = (std::int64_t{offset.z() + z} * s.y() + offset.y() + y) * s.x() +
+                                offset.x();
+      const std::int64_t to = (std::int64_t{z} * t.y() + y) * t.x();
+      std::copy(window_values + from, window_values + from + t.x(), ws->target_values.data() + to);
+      std::copy(window_cells + from, window_cells + from + t.x(), ws->target_cells.data() + to);
+    }
+  }
+  SignedValuesFromSquaredDistancesInWindow(ws->target_cells.data(), t, target.begin, dims,
+                                           num_axes, resolution_m, cap_m, options,
+                                           ws->target_values.data());
+  // 4. Scatter the target's rows into the grid's values.
+  for (int z = 0; z < t.z(); ++z) {
+    for (int y = 0; y < t.y(); ++y) {
+      const float* from = ws->target_values.data() + (std::int64_t{z} * t.y() + y) * t.x();
       float* to = values + (target.begin.z() + z) * nxy + (target.begin.y() + y) * nx +
                   target.begin.x();
       std::copy(from, from + t.x(), to);

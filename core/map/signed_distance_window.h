@@ -16,7 +16,9 @@ namespace topay {
 struct SignedDistanceWindowWorkspace {
   EdtWorkspace edt;
   std::vector<std::uint8_t> cells;  ///< The source window's cells.
-  std::vector<float> values;        ///< The source window's squared, then signed, distances.
+  std::vector<float> values;        ///< The source window's squared distances.
+  std::vector<std::uint8_t> target_cells;  ///< The target's cells, contiguous.
+  std::vector<float> target_values;        ///< The target's squared, then signed, distances.
 };
 
 /// How many cells away an occupancy change can alter a signed field capped at cap_m (m) with
@@ -33,12 +35,13 @@ int SignedDistanceReachCells(double cap_m, double resolution_m);
 /// target only:
 ///  1. copy the source window (the target grown by the reach, clipped to the grid) into
 ///     scratch;
-///  2. the exact squared EDT of both phases over that window alone (SquaredDistanceToOtherPhase):
-///     every site within the reach of a target cell lies in the window, and a site beyond it
-///     could only give a value at the cap, which the window then gives as well (its distance
-///     is no smaller);
-///  3. the same conversion to signed, capped values as the full build, with the virtual free
-///     cells beyond the grid placed by the grid (SignedValuesFromSquaredDistancesInWindow);
+///  2. the exact squared EDT of both phases over that window alone, its y and z passes only on
+///     the lines through the target (SquaredDistanceToOtherPhaseAt): every site within the
+///     reach of a target cell lies in the window, and a site beyond it could only give a value
+///     at the cap, which the window then gives as well (its distance is no smaller);
+///  3. the same conversion to signed, capped values as the full build, on the target's cells
+///     gathered into a block, with the virtual free cells beyond the grid placed by the grid
+///     (SignedValuesFromSquaredDistancesInWindow);
 ///  4. copy the target's values into `values` (the whole grid's, x fastest).
 /// A target that is the whole grid runs in place on `values` (the full build). Cost: the
 /// source window's cells (EDT) plus the target's (copies). Throws std::invalid_argument for a
