@@ -133,6 +133,7 @@ void FillColumnDistanceWindow(const OccupancyGrid2& columns, const GridGeometry2
   const std::uint8_t* cells = columns.cells().data();
   ws->best_to_occupied.resize(num_targets);
   ws->best_to_free.resize(num_targets);
+  ws->occupied_in_row.resize(num_targets);
   double* to_occupied = ws->best_to_occupied.data();
   double* to_free = ws->best_to_free.data();
   for (int fy = target.begin.y(); fy < target.end.y(); ++fy) {
@@ -140,6 +141,16 @@ void FillColumnDistanceWindow(const OccupancyGrid2& columns, const GridGeometry2
     const int r = static_cast<int>(std::floor((y - oc.y()) / rc));
     // Occupied points (inside the grid) also reach the free outside of the grid in y.
     const double e_outside_y = std::max(std::min(y - grid_y_min, grid_y_max - y), 0.0);
+    // Which points of the row are occupied (the distance to the free squares is needed for
+    // those only: most rows have none, and skip that half of the work).
+    const bool row_inside = r >= 0 && r < ncy;
+    bool any_occupied = false;
+    for (int i = 0; i < num_targets; ++i) {
+      const int c = ws->column_of_x[i];
+      const bool occupied = row_inside && c >= 0 && c < ncx && cells[std::int64_t{r} * ncx + c];
+      ws->occupied_in_row[i] = occupied;
+      any_occupied = any_occupied || occupied;
+    }
     std::fill_n(to_occupied, num_targets, start_bound);
     std::fill_n(to_free, num_targets, std::min(start_bound, e_outside_y * e_outside_y));
     for (int cy = rows.begin; cy < rows.end; ++cy) {
@@ -151,20 +162,21 @@ void FillColumnDistanceWindow(const OccupancyGrid2& columns, const GridGeometry2
       if (ey_squared >= start_bound) continue;
       const double* occupied_terms =
           ws->squared_x_to_occupied.data() + std::int64_t{cy - rows.begin} * num_targets;
+      for (int i = 0; i < num_targets; ++i) {
+        to_occupied[i] = std::min(to_occupied[i], ey_squared + occupied_terms[i]);
+      }
+      if (!any_occupied) continue;
       const double* free_terms =
           ws->squared_x_to_free.data() + std::int64_t{cy - rows.begin} * num_targets;
       for (int i = 0; i < num_targets; ++i) {
-        to_occupied[i] = std::min(to_occupied[i], ey_squared + occupied_terms[i]);
         to_free[i] = std::min(to_free[i], ey_squared + free_terms[i]);
       }
     }
     // The phase of each point picks its distance: to the occupied squares from a free point,
     // to the free squares (and the outside) from an occupied one.
-    const bool row_inside = r >= 0 && r < ncy;
     float* out = values + fg.Index(target.begin.x(), fy);
     for (int i = 0; i < num_targets; ++i) {
-      const int c = ws->column_of_x[i];
-      const bool occupied = row_inside && c >= 0 && c < ncx && cells[std::int64_t{r} * ncx + c];
+      const bool occupied = ws->occupied_in_row[i] != 0;
       const double distance = std::min(std::sqrt(occupied ? to_free[i] : to_occupied[i]), cap_m);
       out[i] = static_cast<float>(occupied ? -distance : distance);
     }

@@ -22,6 +22,7 @@ struct ColumnDistanceWorkspace {
   std::vector<double> squared_x_to_occupied, squared_x_to_free;
   // Per target field column of the current row: the squared distance so far.
   std::vector<double> best_to_occupied, best_to_free;
+  std::vector<std::uint8_t> occupied_in_row;  ///< Per target field column: its point's phase.
 };
 
 /// The base's 2D field from voxel columns: the capped exact signed distance, at the centres of
