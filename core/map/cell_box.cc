@@ -28,8 +28,7 @@ std::vector<CellBox> TileBoundsOfCells(std::span<const Eigen::Vector3i> cells,
   return boxes;
 }
 
-std::vector<CellBox> MergeCellBoxes(std::vector<CellBox> boxes,
-                                    const Eigen::Vector3i& source_reach,
+std::vector<CellBox> MergeCellBoxes(std::vector<CellBox> boxes, const Eigen::Vector3i& source_reach,
                                     const Eigen::Vector3i& dims, int max_boxes) {
   if (boxes.empty()) return boxes;
   auto cost = [&](const CellBox& box) { return box.Dilated(source_reach, dims).NumCells(); };

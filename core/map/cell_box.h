@@ -48,8 +48,7 @@ std::vector<CellBox> TileBoundsOfCells(std::span<const Eigen::Vector3i> cells,
 /// boxes per round: above `max_boxes` boxes, returns the single union instead. When the
 /// boxes' costs add up to more than the whole grid's cells, returns the whole grid (one
 /// recomputation of everything reads less).
-std::vector<CellBox> MergeCellBoxes(std::vector<CellBox> boxes,
-                                    const Eigen::Vector3i& source_reach,
+std::vector<CellBox> MergeCellBoxes(std::vector<CellBox> boxes, const Eigen::Vector3i& source_reach,
                                     const Eigen::Vector3i& dims, int max_boxes = 256);
 
 }  // namespace topay

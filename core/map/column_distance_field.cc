@@ -52,8 +52,8 @@ void RowTerms(const OccupancyGrid2& columns, const CellRange& rows, const CellRa
   for (int cy = rows.begin; cy < rows.end; ++cy) {
     NearestColumns(columns.cells().data() + std::int64_t{cy} * ncx, source_x.begin, source_x.end,
                    ws);
-    double* to_occupied = ws->squared_x_to_occupied.data() +
-                          std::int64_t{cy - rows.begin} * num_targets;
+    double* to_occupied =
+        ws->squared_x_to_occupied.data() + std::int64_t{cy - rows.begin} * num_targets;
     double* to_free = ws->squared_x_to_free.data() + std::int64_t{cy - rows.begin} * num_targets;
     for (int i = 0; i < num_targets; ++i) {
       const double x = ws->x_m[i];
@@ -62,9 +62,8 @@ void RowTerms(const OccupancyGrid2& columns, const CellRange& rows, const CellRa
       const int at = std::min(c, source_x.end - 1) - source_x.begin;
       const int above = std::max(c + 1, source_x.begin) - source_x.begin;
       const bool has_at = at >= 0, has_above = above < source_x.end - source_x.begin;
-      const double e_occupied = AxisDistance(
-          x, has_at ? ws->prev_occupied[at] : -1, has_above ? ws->next_occupied[above] : -1, ox,
-          rc);
+      const double e_occupied = AxisDistance(x, has_at ? ws->prev_occupied[at] : -1,
+                                             has_above ? ws->next_occupied[above] : -1, ox, rc);
       double e_free = AxisDistance(x, has_at ? ws->prev_free[at] : -1,
                                    has_above ? ws->next_free[above] : -1, ox, rc);
       // The outside of the grid is free: the distance to the grid's x interval's complement.
@@ -105,8 +104,8 @@ void FillColumnDistanceWindow(const OccupancyGrid2& columns, const GridGeometry2
   const double reach_m = cap_m + rc;
   const double y_first = fg.origin_W_m.y() + (target.begin.y() + 0.5) * fg.resolution_m;
   const double y_last = fg.origin_W_m.y() + (target.end.y() - 0.5) * fg.resolution_m;
-  const CellRange source_x = CellsOverlapping(ws->x_m.front() - reach_m, ws->x_m.back() + reach_m,
-                                              oc.x(), rc, ncx);
+  const CellRange source_x =
+      CellsOverlapping(ws->x_m.front() - reach_m, ws->x_m.back() + reach_m, oc.x(), rc, ncx);
   const CellRange rows = CellsOverlapping(y_first - reach_m, y_last + reach_m, oc.y(), rc, ncy);
   const int num_rows = std::max(rows.end - rows.begin, 0);
   const int source_width = std::max(source_x.end - source_x.begin, 1);

@@ -51,10 +51,11 @@ struct ColumnDistanceWorkspace {
 ///     occupied (and free) square of the row, from the nearest such columns before and after
 ///     (two sweeps per row);
 ///  2. per target cell: the minimum over the rows within cap_m + one column of ey^2 + that
-///     term (for both phases; ey is the same along a target row, so these loops run over
-///     contiguous memory), then the point's phase picks one.
-/// Cost: (source rows x target columns) + (target cells x rows within the cap). Throws std::invalid_argument for a target outside the field grid or cap_m not
-/// finite and > 0.
+///     term (ey is the same along a target row, so these loops run over contiguous memory;
+///     the distance to free squares only in rows with occupied points), then the point's
+///     phase picks one.
+/// Cost: (source rows x target columns) + (target cells x rows within the cap). Throws
+/// std::invalid_argument for a target outside the field grid or cap_m not finite and > 0.
 void FillColumnDistanceWindow(const OccupancyGrid2& columns, const GridGeometry2& field_geometry,
                               const CellBox& target, double cap_m,
                               ColumnDistanceWorkspace* workspace, float* values);

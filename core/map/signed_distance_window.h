@@ -15,8 +15,8 @@ namespace topay {
 /// up to the largest window). Not thread safe: one per thread.
 struct SignedDistanceWindowWorkspace {
   EdtWorkspace edt;
-  std::vector<std::uint8_t> cells;  ///< The source window's cells.
-  std::vector<float> values;        ///< The source window's squared distances.
+  std::vector<std::uint8_t> cells;         ///< The source window's cells.
+  std::vector<float> values;               ///< The source window's squared distances.
   std::vector<std::uint8_t> target_cells;  ///< The target's cells, contiguous.
   std::vector<float> target_values;        ///< The target's squared, then signed, distances.
 };
@@ -48,8 +48,7 @@ int SignedDistanceReachCells(double cap_m, double resolution_m);
 /// target outside the grid or bad options.
 void RecomputeSignedDistanceWindow(const std::uint8_t* cells, const Eigen::Vector3i& dims,
                                    int num_axes, double resolution_m, double cap_m,
-                                   const SignedDistanceFieldOptions& options,
-                                   const CellBox& target, SignedDistanceWindowWorkspace* workspace,
-                                   float* values);
+                                   const SignedDistanceFieldOptions& options, const CellBox& target,
+                                   SignedDistanceWindowWorkspace* workspace, float* values);
 
 }  // namespace topay

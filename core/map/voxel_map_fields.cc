@@ -59,8 +59,7 @@ GridGeometry2 BaseGeometryOf(const VoxelMapFieldsOptions& options) {
 }
 
 CellRange LayersOf(const HeightBand& band, const GridGeometry3& g) {
-  return CellsOverlapping(band.z_min_m, band.z_max_m, g.origin_W_m.z(), g.resolution_m,
-                          g.dims.z());
+  return CellsOverlapping(band.z_min_m, band.z_max_m, g.origin_W_m.z(), g.resolution_m, g.dims.z());
 }
 
 // The initial 3D field: every value at the cap (no obstacle), the EDT field's margin.
@@ -97,8 +96,7 @@ VoxelMapFieldsOptions VoxelMapFieldsOptionsFrom(const SceneDistanceFieldsOptions
   options.base_resolution_m = scene_options.base_resolution_m > 0.0
                                   ? scene_options.base_resolution_m
                                   : scene_options.resolution_m;
-  options.base_cap_m =
-      scene_options.base_exact_cap_m > 0.0 ? scene_options.base_exact_cap_m : 1.0;
+  options.base_cap_m = scene_options.base_exact_cap_m > 0.0 ? scene_options.base_exact_cap_m : 1.0;
   options.base_band = scene_options.base_band;
   options.base_upper_band = scene_options.base_upper_band;
   options.base_upper_band_offset_m = scene_options.base_upper_band_offset_m;
@@ -199,8 +197,7 @@ void VoxelMapFields::ValidateChanges(std::span<const VoxelChange> changes) const
     }
     if (static_cast<std::uint8_t>(changes[i].state) > 2) {
       throw std::invalid_argument("VoxelMapFields::ApplyChanges: change " + std::to_string(i) +
-                                  ": state " +
-                                  std::to_string(static_cast<int>(changes[i].state)) +
+                                  ": state " + std::to_string(static_cast<int>(changes[i].state)) +
                                   " is not a VoxelState (0 free, 1 occupied, 2 unknown)");
     }
   }
@@ -280,8 +277,9 @@ std::vector<CellBox> VoxelMapFields::ColumnWindows(
     if (!target.empty()) targets.push_back(target);
   }
   // A window's fill reads the columns within the cap plus one column of it.
-  const int reach = static_cast<int>(
-      std::ceil((options_.base_cap_m + geometry().resolution_m) / fg.resolution_m)) + 1;
+  const int reach = static_cast<int>(std::ceil((options_.base_cap_m + geometry().resolution_m) /
+                                               fg.resolution_m)) +
+                    1;
   return MergeCellBoxes(std::move(targets), Eigen::Vector3i(reach, reach, 0), field_dims);
 }
 
@@ -331,8 +329,8 @@ void VoxelMapFields::ResetFrom(const OccupancyGrid3& occupied) {
     throw std::invalid_argument("VoxelMapFields::ResetFrom: the grid's geometry is not the map's");
   }
   for (std::size_t i = 0; i < states_.size(); ++i) {
-    states_[i] = static_cast<std::uint8_t>(occupied.cells()[i] ? VoxelState::kOccupied
-                                                               : VoxelState::kFree);
+    states_[i] =
+        static_cast<std::uint8_t>(occupied.cells()[i] ? VoxelState::kOccupied : VoxelState::kFree);
   }
   RebuildAll();
 }
@@ -346,8 +344,8 @@ VoxelChange VoxelMapFields::ChangeAt(const Eigen::Vector3d& p_W, VoxelState stat
                                 ", " + std::to_string(p_W.y()) + ", " + std::to_string(p_W.z()) +
                                 ") outside the map's volume");
   }
-  const Eigen::Vector3i voxel = geometry().CellOf(p_W).cwiseMax(0).cwiseMin(
-      geometry().dims - Eigen::Vector3i::Ones());
+  const Eigen::Vector3i voxel =
+      geometry().CellOf(p_W).cwiseMax(0).cwiseMin(geometry().dims - Eigen::Vector3i::Ones());
   return {voxel, state};
 }
 

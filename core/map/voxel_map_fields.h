@@ -96,15 +96,15 @@ VoxelMapFieldsOptions VoxelMapFieldsOptionsFrom(const SceneDistanceFieldsOptions
 
 /// What one ApplyChanges did: counts and wall-clock timings (steady clock, s).
 struct VoxelMapUpdateSummary {
-  int num_changes = 0;               ///< Changes given.
-  int num_voxels_changed = 0;        ///< Voxels whose state changed.
-  int num_voxels_changed_3d = 0;     ///< ... whose occupancy for the 3D field changed.
-  int num_columns_changed = 0;       ///< Base (and upper) band columns that changed.
-  int num_windows_3d = 0;            ///< Windows of the 3D field recomputed.
-  std::int64_t num_cells_3d = 0;     ///< 3D cells recomputed (target windows).
-  int num_windows_2d = 0;            ///< Windows of the 2D field(s) recomputed (all bands).
-  std::int64_t num_cells_2d = 0;     ///< 2D cells recomputed (all bands).
-  double apply_s = 0.0;              ///< Validating and applying the changes to the voxels.
+  int num_changes = 0;            ///< Changes given.
+  int num_voxels_changed = 0;     ///< Voxels whose state changed.
+  int num_voxels_changed_3d = 0;  ///< ... whose occupancy for the 3D field changed.
+  int num_columns_changed = 0;    ///< Base (and upper) band columns that changed.
+  int num_windows_3d = 0;         ///< Windows of the 3D field recomputed.
+  std::int64_t num_cells_3d = 0;  ///< 3D cells recomputed (target windows).
+  int num_windows_2d = 0;         ///< Windows of the 2D field(s) recomputed (all bands).
+  std::int64_t num_cells_2d = 0;  ///< 2D cells recomputed (all bands).
+  double apply_s = 0.0;           ///< Validating and applying the changes to the voxels.
   double field_3d_s = 0.0;
   double field_2d_s = 0.0;
   double total_s = 0.0;

@@ -142,7 +142,8 @@ void BM_BoxAppears(benchmark::State& state) {
     std::vector<VoxelChange> changes;
     if (placed.empty()) {
       const double robot_x = rng.Uniform(-8.0, 8.0), robot_y = rng.Uniform(-8.0, 8.0);
-      const double range = rng.Uniform(0.8, 2.0), bearing = rng.Uniform(-std::numbers::pi, std::numbers::pi);
+      const double range = rng.Uniform(0.8, 2.0),
+                   bearing = rng.Uniform(-std::numbers::pi, std::numbers::pi);
       OrientedBox box;
       box.center_W_m = Eigen::Vector3d(robot_x + range * std::cos(bearing),
                                        robot_y + range * std::sin(bearing), 0.5 * size.z());
@@ -176,10 +177,10 @@ void BM_BoxAppears(benchmark::State& state) {
   state.counters["cells_2d"] = cells_2d / n;
 }
 BENCHMARK(BM_BoxAppears)
-    ->Args({30, 30, 60, 100})    // ~600 voxels: a small box or a bag
-    ->Args({50, 50, 100, 100})   // ~2,400 voxels: a box, a person's legs and trunk
-    ->Args({100, 60, 80, 100})   // ~4,300 voxels: a cart or a small table
-    ->Args({30, 30, 60, 50})     // the same with the 3D field capped at 0.5 m
+    ->Args({30, 30, 60, 100})   // ~600 voxels: a small box or a bag
+    ->Args({50, 50, 100, 100})  // ~2,400 voxels: a box, a person's legs and trunk
+    ->Args({100, 60, 80, 100})  // ~4,300 voxels: a cart or a small table
+    ->Args({30, 30, 60, 50})    // the same with the 3D field capped at 0.5 m
     ->Args({50, 50, 100, 50})
     ->Args({100, 60, 80, 50})
     ->Unit(benchmark::kMillisecond);
@@ -201,9 +202,10 @@ void BM_ScatteredVoxels(benchmark::State& state) {
     if (placed.empty()) {
       const Eigen::Vector2d robot(rng.Uniform(-6.0, 6.0), rng.Uniform(-6.0, 6.0));
       for (int i = 0; i < count; ++i) {
-        const Eigen::Vector3d p(robot.x() + rng.Uniform(-4.0, 4.0), robot.y() + rng.Uniform(-4.0, 4.0),
-                                rng.Uniform(0.0, 1.6));
-        const Eigen::Vector3i v = g.CellOf(p).cwiseMax(0).cwiseMin(g.dims - Eigen::Vector3i::Ones());
+        const Eigen::Vector3d p(robot.x() + rng.Uniform(-4.0, 4.0),
+                                robot.y() + rng.Uniform(-4.0, 4.0), rng.Uniform(0.0, 1.6));
+        const Eigen::Vector3i v =
+            g.CellOf(p).cwiseMax(0).cwiseMin(g.dims - Eigen::Vector3i::Ones());
         if (map.state(v.x(), v.y(), v.z()) == VoxelState::kOccupied) continue;
         placed.push_back({v, VoxelState::kOccupied});
       }

@@ -24,8 +24,8 @@ TEST(CellBoxTest, SizesDilationUnionAndContainment) {
 }
 
 TEST(CellBoxTest, TileBoundsGroupCellsByTile) {
-  const std::vector<Eigen::Vector3i> cells = {{0, 0, 0}, {3, 2, 0}, {9, 1, 0}, {12, 7, 0},
-                                              {1, 1, 0}};
+  const std::vector<Eigen::Vector3i> cells = {
+      {0, 0, 0}, {3, 2, 0}, {9, 1, 0}, {12, 7, 0}, {1, 1, 0}};
   const std::vector<CellBox> boxes = TileBoundsOfCells(cells, {8, 8, 1});
   ASSERT_EQ(boxes.size(), 2u);
   EXPECT_EQ(boxes[0].begin, Eigen::Vector3i(0, 0, 0));
@@ -37,13 +37,13 @@ TEST(CellBoxTest, TileBoundsGroupCellsByTile) {
 TEST(CellBoxTest, MergeJoinsBoxesOnlyWhenThatSavesWorkAndCoversEveryCell) {
   const Eigen::Vector3i dims(200, 200, 1);
   // Two neighbours (their sources overlap almost wholly) merge; a far box stays apart.
-  std::vector<CellBox> boxes = {{{10, 10, 0}, {12, 12, 1}},
-                                {{12, 10, 0}, {14, 12, 1}},
-                                {{150, 150, 0}, {152, 152, 1}}};
+  std::vector<CellBox> boxes = {
+      {{10, 10, 0}, {12, 12, 1}}, {{12, 10, 0}, {14, 12, 1}}, {{150, 150, 0}, {152, 152, 1}}};
   const std::vector<CellBox> merged = MergeCellBoxes(boxes, {10, 10, 0}, dims);
   ASSERT_EQ(merged.size(), 2u);
   for (const CellBox& box : boxes) {
-    for (const Eigen::Vector3i& corner : {box.begin, Eigen::Vector3i(box.end - Eigen::Vector3i::Ones())}) {
+    for (const Eigen::Vector3i& corner :
+         {box.begin, Eigen::Vector3i(box.end - Eigen::Vector3i::Ones())}) {
       bool covered = false;
       for (const CellBox& m : merged) covered = covered || m.Contains(corner);
       EXPECT_TRUE(covered);

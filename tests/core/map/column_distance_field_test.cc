@@ -35,14 +35,11 @@ OccupancyGrid2 RandomColumns(const GridGeometry2& g, std::uint64_t seed) {
 }
 
 // Distance from u to the interval [lo, hi] (0 inside).
-double IntervalDistance(double u, double lo, double hi) {
-  return std::max({lo - u, u - hi, 0.0});
-}
+double IntervalDistance(double u, double lo, double hi) { return std::max({lo - u, u - hi, 0.0}); }
 
 // The field by brute force: per field cell, every square of the other phase (and, for an
 // occupied point, the outside of the grid), in double, then capped and signed.
-std::vector<float> BruteForce(const OccupancyGrid2& columns, const GridGeometry2& fg,
-                              double cap) {
+std::vector<float> BruteForce(const OccupancyGrid2& columns, const GridGeometry2& fg, double cap) {
   const GridGeometry2& cg = columns.geometry();
   const double r = cg.resolution_m;
   std::vector<float> values(fg.NumCells());
@@ -85,8 +82,8 @@ TEST(ColumnDistanceFieldTest, EqualsBruteForceOnFinerAndEqualGrids) {
         const std::vector<float> expected = BruteForce(columns, fg, cap);
         double max_difference = 0.0;
         for (std::size_t i = 0; i < expected.size(); ++i) {
-          max_difference = std::max(max_difference,
-                                    std::abs(double{field.values()[i]} - double{expected[i]}));
+          max_difference =
+              std::max(max_difference, std::abs(double{field.values()[i]} - double{expected[i]}));
         }
         EXPECT_EQ(max_difference, 0.0) << "res " << field_res << " seed " << seed << " cap " << cap;
         EXPECT_DOUBLE_EQ(field.exactness_margin_m(), field_res / std::sqrt(2.0));
@@ -98,8 +95,8 @@ TEST(ColumnDistanceFieldTest, EqualsBruteForceOnFinerAndEqualGrids) {
 
 TEST(ColumnDistanceFieldTest, WindowsEqualTheWholeFillBitwise) {
   const GridGeometry2 cg{{0.0, 0.0}, 0.05, {40, 30}};
-  const GridGeometry2 fg =
-      GridGeometry2::FromBounds(Eigen::AlignedBox2d(Eigen::Vector2d(0, 0), Eigen::Vector2d(2, 1.5)), 0.01);
+  const GridGeometry2 fg = GridGeometry2::FromBounds(
+      Eigen::AlignedBox2d(Eigen::Vector2d(0, 0), Eigen::Vector2d(2, 1.5)), 0.01);
   const double cap = 0.25;
   Rng rng(3);
   ColumnDistanceWorkspace ws;
@@ -132,8 +129,8 @@ TEST(ColumnDistanceFieldTest, WindowsEqualTheWholeFillBitwise) {
 
 TEST(ColumnDistanceFieldTest, ExactnessMarginHoldsAtRandomPoints) {
   const GridGeometry2 cg{{0.0, 0.0}, 0.05, {30, 30}};
-  const GridGeometry2 fg =
-      GridGeometry2::FromBounds(Eigen::AlignedBox2d(Eigen::Vector2d(0, 0), Eigen::Vector2d(1.5, 1.5)), 0.02);
+  const GridGeometry2 fg = GridGeometry2::FromBounds(
+      Eigen::AlignedBox2d(Eigen::Vector2d(0, 0), Eigen::Vector2d(1.5, 1.5)), 0.02);
   const OccupancyGrid2 columns = RandomColumns(cg, 5);
   const double cap = 0.5;
   const SignedDistanceField2 field = BuildColumnDistanceField(columns, fg, cap);
@@ -162,8 +159,8 @@ TEST(ColumnDistanceFieldTest, ExactnessMarginHoldsAtRandomPoints) {
 TEST(ColumnDistanceFieldTest, WithinOneColumnDiagonalBelowTheExactFootprintField) {
   // Boxes rasterised into columns (AddFootprint: conservative) against their exact footprints.
   const GridGeometry2 cg{{-1.0, -1.0}, 0.05, {40, 40}};
-  const GridGeometry2 fg =
-      GridGeometry2::FromBounds(Eigen::AlignedBox2d(Eigen::Vector2d(-1, -1), Eigen::Vector2d(1, 1)), 0.01);
+  const GridGeometry2 fg = GridGeometry2::FromBounds(
+      Eigen::AlignedBox2d(Eigen::Vector2d(-1, -1), Eigen::Vector2d(1, 1)), 0.01);
   const std::vector<OrientedBox> boxes = {MakeBox({0.2, 0.1, 0.05}, {0.3, 0.12, 0.1}, 0.4),
                                           MakeBox({-0.5, -0.4, 0.05}, {0.05, 0.05, 0.1}),
                                           MakeBox({-0.3, 0.6, 0.05}, {0.5, 0.2, 0.1}, -1.0)};
@@ -193,9 +190,9 @@ TEST(ColumnDistanceFieldTest, NoColumnsGivesTheCapAndBadInputThrows) {
   for (float v : field.values()) EXPECT_EQ(v, 0.3f);
   std::vector<float> values(25);
   ColumnDistanceWorkspace ws;
-  EXPECT_THROW(FillColumnDistanceWindow(columns, cg, CellBox{{0, 0, 0}, {6, 5, 1}}, 0.3, &ws,
-                                        values.data()),
-               std::invalid_argument);
+  EXPECT_THROW(
+      FillColumnDistanceWindow(columns, cg, CellBox{{0, 0, 0}, {6, 5, 1}}, 0.3, &ws, values.data()),
+      std::invalid_argument);
   EXPECT_THROW(FillColumnDistanceWindow(columns, cg, CellBox{{0, 0, 0}, {5, 5, 1}}, std::nan(""),
                                         &ws, values.data()),
                std::invalid_argument);

@@ -22,9 +22,9 @@ std::vector<std::uint8_t> RandomCells(const Eigen::Vector3i& dims, std::uint64_t
   for (int b = 0; b < 6; ++b) {
     const Eigen::Vector3i lo(rng.UniformInt(0, dims.x() - 1), rng.UniformInt(0, dims.y() - 1),
                              rng.UniformInt(0, dims.z() - 1));
-    const Eigen::Vector3i hi = (lo + Eigen::Vector3i(rng.UniformInt(1, 6), rng.UniformInt(1, 6),
-                                                     rng.UniformInt(1, 5)))
-                                   .cwiseMin(dims);
+    const Eigen::Vector3i hi =
+        (lo + Eigen::Vector3i(rng.UniformInt(1, 6), rng.UniformInt(1, 6), rng.UniformInt(1, 5)))
+            .cwiseMin(dims);
     for (int z = lo.z(); z < hi.z(); ++z)
       for (int y = lo.y(); y < hi.y(); ++y)
         for (int x = lo.x(); x < hi.x(); ++x) cells[index(x, y, z)] = 1;
@@ -65,10 +65,11 @@ std::vector<float> BruteForce(const std::vector<std::uint8_t>& cells, const Eige
                                  : std::sqrt(static_cast<float>(best));
           v = std::min((root + (static_cast<float>(inset) - 0.5f)) * r, c);
         } else {
-          const int border = std::min({x + 1, dims.x() - x, y + 1, dims.y() - y, z + 1,
-                                       dims.z() - z});
+          const int border =
+              std::min({x + 1, dims.x() - x, y + 1, dims.y() - y, z + 1, dims.z() - z});
           best = std::min<std::int64_t>(best, std::int64_t{border} * border);
-          v = -std::min((std::sqrt(static_cast<float>(best)) + (-0.5f - static_cast<float>(inset))) * r, c);
+          v = -std::min(
+              (std::sqrt(static_cast<float>(best)) + (-0.5f - static_cast<float>(inset))) * r, c);
         }
       }
   return values;

@@ -20,8 +20,8 @@ namespace {
 // A small map with both bands and small caps, so that windows are real parts of the grid.
 VoxelMapFieldsOptions SmallOptions() {
   VoxelMapFieldsOptions options;
-  options.bounds_W_m = Eigen::AlignedBox3d(Eigen::Vector3d(-1.0, -0.8, 0.0),
-                                           Eigen::Vector3d(1.4, 1.0, 0.8));
+  options.bounds_W_m =
+      Eigen::AlignedBox3d(Eigen::Vector3d(-1.0, -0.8, 0.0), Eigen::Vector3d(1.4, 1.0, 0.8));
   options.resolution_m = 0.05;
   options.field_3d_cap_m = 0.3;
   options.base_resolution_m = 0.02;
@@ -87,16 +87,17 @@ TEST(VoxelMapFieldsTest, IncrementalEqualsFullRebuildOnRandomAddsAndClears) {
     const int kind = static_cast<int>(rng.UniformInt(0, 3));
     if (kind == 0) {
       // A box appears or goes away (low boxes touch both bands, tall ones the 3D field only).
-      const OrientedBox box = MakeBox({rng.Uniform(-1.1, 1.5), rng.Uniform(-0.9, 1.1),
-                                       rng.Uniform(0.0, 0.8)},
-                                      {rng.Uniform(0.05, 0.5), rng.Uniform(0.05, 0.5),
-                                       rng.Uniform(0.05, 0.5)},
-                                      rng.Uniform(-3.0, 3.0));
-      changes = BoxChanges(g, box, rng.Uniform01() < 0.6 ? VoxelState::kOccupied : VoxelState::kFree);
+      const OrientedBox box =
+          MakeBox({rng.Uniform(-1.1, 1.5), rng.Uniform(-0.9, 1.1), rng.Uniform(0.0, 0.8)},
+                  {rng.Uniform(0.05, 0.5), rng.Uniform(0.05, 0.5), rng.Uniform(0.05, 0.5)},
+                  rng.Uniform(-3.0, 3.0));
+      changes =
+          BoxChanges(g, box, rng.Uniform01() < 0.6 ? VoxelState::kOccupied : VoxelState::kFree);
     } else if (kind == 1) {
       // Scattered voxels set and cleared (noise), with duplicates.
       for (int i = 0; i < 60; ++i) {
-        const Eigen::Vector3i v(rng.UniformInt(0, g.dims.x() - 1), rng.UniformInt(0, g.dims.y() - 1),
+        const Eigen::Vector3i v(rng.UniformInt(0, g.dims.x() - 1),
+                                rng.UniformInt(0, g.dims.y() - 1),
                                 rng.UniformInt(0, g.dims.z() - 1));
         changes.push_back({v, rng.Uniform01() < 0.5 ? VoxelState::kOccupied : VoxelState::kFree});
         if (i % 10 == 0) changes.push_back({v, VoxelState::kFree});
@@ -159,7 +160,8 @@ TEST(VoxelMapFieldsTest, BandsAndPrimaryBand) {
   const GridGeometry3& g = map.geometry();
   // A slab in the upper band only (z 0.3-0.4): lowers the 2D field by the offset's measure,
   // but the primary band (base band alone) does not see it.
-  map.ApplyChanges(BoxChanges(g, MakeBox({0.0, 0.0, 0.35}, {0.3, 0.3, 0.1}), VoxelState::kOccupied));
+  map.ApplyChanges(
+      BoxChanges(g, MakeBox({0.0, 0.0, 0.35}, {0.3, 0.3, 0.1}), VoxelState::kOccupied));
   const SignedDistanceField2& field = map.base_field_2d();
   ASSERT_NE(field.primary_band(), nullptr);
   ASSERT_TRUE(field.offset_band().has_value());
@@ -223,8 +225,8 @@ TEST(VoxelMapFieldsTest, UnknownSpacePolicies) {
 TEST(VoxelMapFieldsTest, BadInputGivesClearErrorsAndLeavesTheMapAsItWas) {
   VoxelMapFields map(SmallOptions());
   const std::vector<float> before = map.field_3d().values();
-  const std::vector<VoxelChange> outside = {{{1, 1, 1}, VoxelState::kOccupied},
-                                            {{map.geometry().dims.x(), 0, 0}, VoxelState::kOccupied}};
+  const std::vector<VoxelChange> outside = {
+      {{1, 1, 1}, VoxelState::kOccupied}, {{map.geometry().dims.x(), 0, 0}, VoxelState::kOccupied}};
   try {
     map.ApplyChanges(outside);
     ADD_FAILURE() << "no throw";
@@ -242,7 +244,8 @@ TEST(VoxelMapFieldsTest, BadInputGivesClearErrorsAndLeavesTheMapAsItWas) {
                std::invalid_argument);
   EXPECT_THROW(map.ChangeAt(Eigen::Vector3d(5, 0, 0.1), VoxelState::kOccupied),
                std::invalid_argument);
-  const VoxelChange change = map.ChangeAt(Eigen::Vector3d(-0.97, -0.78, 0.01), VoxelState::kOccupied);
+  const VoxelChange change =
+      map.ChangeAt(Eigen::Vector3d(-0.97, -0.78, 0.01), VoxelState::kOccupied);
   EXPECT_EQ(change.voxel, Eigen::Vector3i(0, 0, 0));
   for (auto mutate : std::vector<void (*)(VoxelMapFieldsOptions*)>{
            [](VoxelMapFieldsOptions* o) { o->resolution_m = std::nan(""); },
@@ -250,11 +253,11 @@ TEST(VoxelMapFieldsTest, BadInputGivesClearErrorsAndLeavesTheMapAsItWas) {
            [](VoxelMapFieldsOptions* o) { o->base_cap_m = -1.0; },
            [](VoxelMapFieldsOptions* o) { o->base_resolution_m = std::nan(""); },
            [](VoxelMapFieldsOptions* o) { o->base_upper_band_offset_m = std::nan(""); },
-           [](VoxelMapFieldsOptions* o) { o->base_band = HeightBand{0.2, 0.1}; },
-           [](VoxelMapFieldsOptions* o) { o->tile_voxels = 0; },
            [](VoxelMapFieldsOptions* o) {
-             o->bounds_W_m.max().x() = std::nan("");
-           }}) {
+             o->base_band = HeightBand{0.2, 0.1};
+           },
+           [](VoxelMapFieldsOptions* o) { o->tile_voxels = 0; },
+           [](VoxelMapFieldsOptions* o) { o->bounds_W_m.max().x() = std::nan(""); }}) {
     VoxelMapFieldsOptions options = SmallOptions();
     mutate(&options);
     EXPECT_THROW(VoxelMapFields{options}, std::invalid_argument);
@@ -286,8 +289,8 @@ TEST(VoxelMapFieldsTest, TablesSceneAgreesWithTheBoxFieldsWithinTheMargins) {
   ASSERT_EQ(boxes.field_3d.values().size(), map.field_3d().values().size());
   int differences_3d = 0;
   for (std::size_t i = 0; i < boxes.field_3d.values().size(); ++i) {
-    const float expected = std::clamp(boxes.field_3d.values()[i], static_cast<float>(-cap3),
-                                      static_cast<float>(cap3));
+    const float expected =
+        std::clamp(boxes.field_3d.values()[i], static_cast<float>(-cap3), static_cast<float>(cap3));
     differences_3d += map.field_3d().values()[i] != expected;
   }
   EXPECT_EQ(differences_3d, 0);
@@ -297,8 +300,8 @@ TEST(VoxelMapFieldsTest, TablesSceneAgreesWithTheBoxFieldsWithinTheMargins) {
   // the exact field of the bands widened to whole voxel layers.
   const GridGeometry3& g = map.geometry();
   auto widened = [&g](const HeightBand& band) {
-    const CellRange layers = CellsOverlapping(band.z_min_m, band.z_max_m, g.origin_W_m.z(),
-                                              g.resolution_m, g.dims.z());
+    const CellRange layers =
+        CellsOverlapping(band.z_min_m, band.z_max_m, g.origin_W_m.z(), g.resolution_m, g.dims.z());
     return HeightBand{g.origin_W_m.z() + layers.begin * g.resolution_m,
                       g.origin_W_m.z() + layers.end * g.resolution_m};
   };
@@ -314,12 +317,14 @@ TEST(VoxelMapFieldsTest, TablesSceneAgreesWithTheBoxFieldsWithinTheMargins) {
   int above = 0, too_low = 0, primary_above = 0, primary_too_low = 0, free_cells = 0;
   for (std::size_t i = 0; i < v.values().size(); ++i) {
     const double lowered = v.values()[i], primary = v.primary_band()->values()[i];
-    const double b_primary = std::max<double>(boxes.base_field_2d.primary_band()->values()[i], -1.0);
+    const double b_primary =
+        std::max<double>(boxes.base_field_2d.primary_band()->values()[i], -1.0);
     const double b_lowered = std::max<double>(boxes.base_field_2d.values()[i], -1.0);
     above += lowered > b_lowered + 1e-6;
     primary_above += primary > b_primary + 1e-6;
     if (primary > 0.0) {
-      primary_too_low += primary < widened_boxes.base_field_2d.primary_band()->values()[i] - diagonal - 1e-6;
+      primary_too_low +=
+          primary < widened_boxes.base_field_2d.primary_band()->values()[i] - diagonal - 1e-6;
     }
     if (lowered > offset) {
       ++free_cells;
