@@ -125,7 +125,7 @@ void FillColumnDistanceWindow(const OccupancyGrid2& columns, const GridGeometry2
 
   // Step 2: per target row, the minimum over the source rows of ey^2 + the row's term, for
   // both phases at once. ey depends on the rows only, so the inner loops run along the
-  // target's columns over contiguous terms (vectorised); rows with ey^2 beyond the start
+  // target's columns over contiguous terms; rows with ey^2 beyond the start
   // bound cannot lower a value below the cap and are skipped.
   const double grid_y_min = oc.y(), grid_y_max = oc.y() + ncy * rc;
   const double start_bound = (cap_m + rc) * (cap_m + rc);  // beyond it the value is the cap
