@@ -91,19 +91,20 @@ void StridedBlockPass(float* data, const std::uint8_t* cells, std::int64_t first
   }
 }
 
-// Transforms every line along axis `axis` (1: y, 2: z) of the x-fastest array.
+// Transforms the lines along axis `axis` (1: y, 2: z) of the x-fastest array that start at
+// x in [x_begin, x_end) and, on the remaining axis (z for y lines, y for z lines), in
+// [outer_begin, outer_end).
 void StridedPass(float* data, const std::uint8_t* cells, const Eigen::Vector3i& dims, int axis,
-                 EdtWorkspace* ws) {
+                 int x_begin, int x_end, int outer_begin, int outer_end, EdtWorkspace* ws) {
   const int nx = dims.x();
   const std::int64_t nxy = std::int64_t{nx} * dims.y();
   const int length = dims(axis);
   const std::int64_t stride = axis == 1 ? nx : nxy;
   // Lines start at every cell with coordinate 0 on `axis`: (x, z) for y lines, (x, y) for z.
-  const int outer_count = axis == 1 ? dims.z() : dims.y();
   const std::int64_t outer_stride = axis == 1 ? nxy : nx;
-  for (int outer = 0; outer < outer_count; ++outer) {
-    for (int x = 0; x < nx; x += kLanes) {
-      StridedBlockPass(data, cells, outer * outer_stride + x, std::min(kLanes, nx - x), length,
+  for (int outer = outer_begin; outer < outer_end; ++outer) {
+    for (int x = x_begin; x < x_end; x += kLanes) {
+      StridedBlockPass(data, cells, outer * outer_stride + x, std::min(kLanes, x_end - x), length,
                        stride, ws);
     }
   }
@@ -152,6 +153,13 @@ void SquaredDistance1d(const std::int32_t* f, int n, std::int32_t* d, std::int32
 
 void SquaredDistanceToOtherPhase(const std::uint8_t* cells, const Eigen::Vector3i& dims,
                                  float* out, EdtWorkspace* workspace) {
+  SquaredDistanceToOtherPhaseAt(cells, dims, Eigen::Vector3i::Zero(), dims, out, workspace);
+}
+
+void SquaredDistanceToOtherPhaseAt(const std::uint8_t* cells, const Eigen::Vector3i& dims,
+                                   const Eigen::Vector3i& needed_begin,
+                                   const Eigen::Vector3i& needed_end, float* out,
+                                   EdtWorkspace* workspace) {
   const int longest = dims.maxCoeff();
   workspace->lines.resize(static_cast<std::size_t>(kLanes) * longest);
   workspace->occupied.resize(static_cast<std::size_t>(kLanes) * longest);
@@ -161,11 +169,18 @@ void SquaredDistanceToOtherPhase(const std::uint8_t* cells, const Eigen::Vector3
   workspace->bound_numerators.resize(longest + 2);
   workspace->bound_denominators.resize(longest + 2);
 
+  // Each pass reads, per line, only the previous pass's values on that line: the z pass needs
+  // the y pass on the needed (x, y) columns at every z, which needs the row pass on every row.
   const int nx = dims.x();
   const std::int64_t rows = std::int64_t{dims.y()} * dims.z();
   for (std::int64_t r = 0; r < rows; ++r) RowPass(cells + r * nx, nx, out + r * nx);
-  if (dims.y() > 1) StridedPass(out, cells, dims, 1, workspace);
-  if (dims.z() > 1) StridedPass(out, cells, dims, 2, workspace);
+  if (dims.y() > 1) {
+    StridedPass(out, cells, dims, 1, needed_begin.x(), needed_end.x(), 0, dims.z(), workspace);
+  }
+  if (dims.z() > 1) {
+    StridedPass(out, cells, dims, 2, needed_begin.x(), needed_end.x(), needed_begin.y(),
+                needed_end.y(), workspace);
+  }
 }
 
 }  // namespace topay

@@ -54,4 +54,15 @@ void SquaredDistance1d(const std::int32_t* f, int n, std::int32_t* d, std::int32
 void SquaredDistanceToOtherPhase(const std::uint8_t* cells, const Eigen::Vector3i& dims,
                                  float* out, EdtWorkspace* workspace);
 
+/// SquaredDistanceToOtherPhase computed only as far as the cells in [needed_begin,
+/// needed_end) (cell indices per axis) need it: the row pass on every row, the y pass on the
+/// lines through the needed x range (every z), the z pass on the lines through the needed x
+/// and y ranges. `out` then holds the same values as the full transform in the needed cells
+/// (each line is transformed alone, the same way), partial values elsewhere. For windowed
+/// recomputation (core/map/signed_distance_window.h).
+void SquaredDistanceToOtherPhaseAt(const std::uint8_t* cells, const Eigen::Vector3i& dims,
+                                   const Eigen::Vector3i& needed_begin,
+                                   const Eigen::Vector3i& needed_end, float* out,
+                                   EdtWorkspace* workspace);
+
 }  // namespace topay

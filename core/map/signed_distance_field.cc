@@ -75,12 +75,24 @@ void SignedDistanceField<Dim>::LowerTo(const SignedDistanceField& other, double 
   if (!std::isfinite(offset_m)) {
     throw std::invalid_argument(Name<Dim>("LowerTo") + ": offset_m must be finite");
   }
-  if (!primary_band_) primary_band_ = std::make_shared<const SignedDistanceField>(*this);
+  if (!primary_band_) primary_band_ = std::make_shared<SignedDistanceField>(*this);
   for (std::size_t i = 0; i < values_.size(); ++i) {
     values_[i] = std::min(values_[i], static_cast<float>(other.values_[i] + offset_m));
   }
   max_distance_m_ = std::max(max_distance_m_, other.max_distance_m_ + offset_m);
   exactness_margin_m_ = std::max(exactness_margin_m_, other.exactness_margin_m_);
+}
+
+template <int Dim>
+std::vector<float>* SignedDistanceField<Dim>::mutable_primary_band_values() {
+  if (!primary_band_) return nullptr;
+  // Copy on write: a copy of this field (use count > 1) keeps the band it was copied with.
+  if (primary_band_.use_count() > 1) {
+    primary_band_ = std::make_shared<SignedDistanceField>(*primary_band_);
+  }
+  // The band is ours alone now, and it is a non-const object (made by make_shared of the
+  // non-const type, here and in LowerTo), so writing through const_cast is defined.
+  return &const_cast<SignedDistanceField*>(primary_band_.get())->values_;
 }
 
 template class SignedDistanceField<2>;

@@ -116,6 +116,14 @@ class SignedDistanceField {
   }
   const std::vector<float>& values() const { return values_; }
 
+  /// For incremental builders (core/map/voxel_map_fields.h), which overwrite the values of the
+  /// cells a map change affects: this field's cell values, and those of its primary_band()
+  /// (null if it has none; copied first if a copy of this field shares it, so copies never
+  /// change). The caller keeps what the class documents true of the values (exactness margin,
+  /// max_distance_m(), the lowered field never above the primary band).
+  std::vector<float>* mutable_values() { return &values_; }
+  std::vector<float>* mutable_primary_band_values();
+
   /// Interpolated signed distance (m) at p_W, see the class comment.
   double Distance(const Point& p_W) const { return Interpolate(p_W, nullptr); }
 

@@ -27,23 +27,37 @@ void SignedValuesFromSquaredDistances(const std::uint8_t* cells, const Eigen::Ve
                                       double max_distance_m,
                                       const SignedDistanceFieldOptions& options,
                                       float* squared_to_signed) {
+  SignedValuesFromSquaredDistancesInWindow(cells, dims, Eigen::Vector3i::Zero(), dims, num_axes,
+                                           resolution_m, max_distance_m, options,
+                                           squared_to_signed);
+}
+
+void SignedValuesFromSquaredDistancesInWindow(const std::uint8_t* cells,
+                                              const Eigen::Vector3i& window_dims,
+                                              const Eigen::Vector3i& window_origin,
+                                              const Eigen::Vector3i& grid_dims, int num_axes,
+                                              double resolution_m, double max_distance_m,
+                                              const SignedDistanceFieldOptions& options,
+                                              float* squared_to_signed) {
   const float res = static_cast<float>(resolution_m);
   const float cap = static_cast<float>(max_distance_m);
   const float outside_offset = static_cast<float>(options.zero_level_inset_cells) - 0.5f;
   const float inside_offset = -0.5f - static_cast<float>(options.zero_level_inset_cells);
   const int no_border = std::numeric_limits<int>::max() / 2;
+  const Eigen::Vector3i& o = window_origin;
   std::size_t i = 0;
-  for (int iz = 0; iz < dims.z(); ++iz) {
-    const int border_z = num_axes == 3 ? CellsToBorder(iz, dims.z()) : no_border;
-    for (int iy = 0; iy < dims.y(); ++iy) {
-      const int border_yz = std::min(border_z, CellsToBorder(iy, dims.y()));
-      for (int ix = 0; ix < dims.x(); ++ix, ++i) {
+  for (int iz = 0; iz < window_dims.z(); ++iz) {
+    const int border_z =
+        num_axes == 3 ? CellsToBorder(o.z() + iz, grid_dims.z()) : no_border;
+    for (int iy = 0; iy < window_dims.y(); ++iy) {
+      const int border_yz = std::min(border_z, CellsToBorder(o.y() + iy, grid_dims.y()));
+      for (int ix = 0; ix < window_dims.x(); ++ix, ++i) {
         if (cells[i] == 0) {
           // sqrt(inf) = inf, clipped to the cap.
           const float root = std::sqrt(squared_to_signed[i]);
           squared_to_signed[i] = std::min((root + outside_offset) * res, cap);
         } else {
-          const int border = std::min(border_yz, CellsToBorder(ix, dims.x()));
+          const int border = std::min(border_yz, CellsToBorder(o.x() + ix, grid_dims.x()));
           const float squared =
               std::min(squared_to_signed[i], static_cast<float>(border * border));
           squared_to_signed[i] = -std::min((std::sqrt(squared) + inside_offset) * res, cap);

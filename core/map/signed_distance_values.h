@@ -41,6 +41,19 @@ void SignedValuesFromSquaredDistances(const std::uint8_t* cells, const Eigen::Ve
                                       const SignedDistanceFieldOptions& options,
                                       float* squared_to_signed);
 
+/// SignedValuesFromSquaredDistances over a window of a larger grid (the same code: the whole
+/// grid is the window at the origin): `cells` and `squared_to_signed` hold the window's
+/// window_dims cells (x fastest), whose first cell is window_origin in the grid of grid_dims;
+/// the virtual free cells beyond the grid are placed by the grid, not the window. Used by the
+/// incremental fields (core/map/voxel_map_fields.h), whose values must equal a full build's.
+void SignedValuesFromSquaredDistancesInWindow(const std::uint8_t* cells,
+                                              const Eigen::Vector3i& window_dims,
+                                              const Eigen::Vector3i& window_origin,
+                                              const Eigen::Vector3i& grid_dims, int num_axes,
+                                              double resolution_m, double max_distance_m,
+                                              const SignedDistanceFieldOptions& options,
+                                              float* squared_to_signed);
+
 /// The whole signed-field build shared by SignedDistanceField2 and SignedDistanceField3:
 /// validates `options`, sizes `values` to the grid, runs the distance transform (scratch from
 /// `workspace`, or a local one if null) and converts to signed distances (m).
