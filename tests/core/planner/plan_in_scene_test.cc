@@ -89,7 +89,9 @@ TEST_F(PlanInSceneTest, AHugeSceneWithAShortLimitEndsByTheLimit) {
       << result.failure_reason;
   EXPECT_FALSE(result.trajectory.has_value());
   EXPECT_LT(cpu_s, 10.0) << result.Report();
-  if (result.stopped_stage == PlanStage::kMapBuilding) EXPECT_FALSE(plan.fields.has_value());
+  if (result.stopped_stage == PlanStage::kMapBuilding) {
+    EXPECT_FALSE(plan.fields.has_value());
+  }
 }
 
 // A start in collision is found exactly and at once: no field is built.

@@ -144,7 +144,9 @@ TEST_P(ExactZonesTest, FrontEndPlansOutOfATightStart) {
   // search starts from an escape position.
   const bool base_trapped = !validity_of(fields).IsBaseValidOnField({0.0, 0.0});
   EXPECT_EQ(base_trapped, GetParam() == TightSpot::kBaseUnderLowTableTop);
-  if (base_trapped) EXPECT_TRUE(result.stats.start_base_escape);
+  if (base_trapped) {
+    EXPECT_TRUE(result.stats.start_base_escape);
+  }
   for (const FrontEndPath& path : result.paths) {
     EXPECT_GT(path.exact_prefix_states, 0);
     EXPECT_EQ(path.exact_suffix_states, 0);

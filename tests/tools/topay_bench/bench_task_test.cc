@@ -87,7 +87,9 @@ TEST(BenchTaskTest, ATightTaskCarriesItsEndsAndAFailureCategory) {
   EXPECT_EQ(r.tight_info->goal.box, expected.task.tight->goal.box);
   EXPECT_EQ(r.start.ToVector(), expected.task.start.ToVector());
   EXPECT_EQ(r.success, r.failure == FailureCategory::kNone) << r.failure_reason;
-  if (!r.success) EXPECT_FALSE(r.failure_reason.empty());
+  if (!r.success) {
+    EXPECT_FALSE(r.failure_reason.empty());
+  }
 }
 
 }  // namespace
