@@ -6,6 +6,8 @@
 #include <set>
 #include <stdexcept>
 
+#include "core/robot/unicycle_motion.h"
+
 namespace topay::kinsim {
 namespace {
 
@@ -72,18 +74,9 @@ bool KinematicModel::Apply(const control_command_t& cmd) {
   }
   if (last_utime_ >= 0 && cmd.utime > last_utime_) {
     const double dt = std::min(static_cast<double>(cmd.utime - last_utime_) * 1e-6, max_step_s_);
-    WholeBodyState& s = state_.state;
-    // Exact unicycle motion under constant v, omega (arc, or straight line for omega ~ 0).
-    const double v = state_.v_mps, w = state_.omega_radps;
-    if (std::abs(w) < 1e-9) {
-      s.x_m += v * dt * std::cos(s.yaw_rad);
-      s.y_m += v * dt * std::sin(s.yaw_rad);
-    } else {
-      s.x_m += v / w * (std::sin(s.yaw_rad + w * dt) - std::sin(s.yaw_rad));
-      s.y_m -= v / w * (std::cos(s.yaw_rad + w * dt) - std::cos(s.yaw_rad));
-    }
-    s.yaw_rad = std::remainder(s.yaw_rad + w * dt, 2.0 * M_PI);
-    s.q_rad += dt * state_.qdot_radps;
+    // Exact unicycle motion under constant v, omega.
+    AdvanceUnicycle(state_.v_mps, state_.omega_radps, dt, &state_.state);
+    state_.state.q_rad += dt * state_.qdot_radps;
   }
   if (last_utime_ < 0 || cmd.utime > last_utime_) last_utime_ = cmd.utime;
   state_.utime = last_utime_;

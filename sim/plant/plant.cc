@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "core/robot/unicycle_motion.h"
+
 namespace topay::sim {
 namespace {
 
@@ -103,16 +105,8 @@ void Plant::StepBase() {
   state_.v_mps = v;
   state_.omega_radps = w;
 
-  // Exact unicycle motion under constant v, omega over the step (arc, or a line for omega ~ 0).
-  WholeBodyState& s = state_.state;
-  if (std::abs(w) < 1e-9) {
-    s.x_m += v * dt * std::cos(s.yaw_rad);
-    s.y_m += v * dt * std::sin(s.yaw_rad);
-  } else {
-    s.x_m += v / w * (std::sin(s.yaw_rad + w * dt) - std::sin(s.yaw_rad));
-    s.y_m -= v / w * (std::cos(s.yaw_rad + w * dt) - std::cos(s.yaw_rad));
-  }
-  s.yaw_rad = std::remainder(s.yaw_rad + w * dt, 2.0 * M_PI);
+  // Exact unicycle motion under constant v, omega over the step.
+  AdvanceUnicycle(v, w, dt, &state_.state);
 
   const double half_track = 0.5 * options_.wheels.track_m;
   wheel_left_rad_ += (drive_v_mps_ - drive_omega_radps_ * half_track) / options_.wheels.radius_m * dt;
