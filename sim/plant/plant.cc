@@ -89,8 +89,16 @@ void Plant::StepBase() {
     drive_v_mps_ = LimitChange(drive_v_mps_, 0.0, max_dv);
     drive_omega_radps_ = LimitChange(drive_omega_radps_, 0.0, max_dw);
   } else {
-    const double u_v = std::clamp(base_target_.v_mps, -limits.v_max_mps, limits.v_max_mps);
-    const double u_w = std::clamp(base_target_.omega_radps, -limits.omega_max_radps, limits.omega_max_radps);
+    double u_v = std::clamp(base_target_.v_mps, -limits.v_max_mps, limits.v_max_mps);
+    double u_w = std::clamp(base_target_.omega_radps, -limits.omega_max_radps, limits.omega_max_radps);
+    // The coupled bound of a differential drive (the paper's eq. (9)): |v| / v_max +
+    // |omega| / omega_max <= 1; beyond it both are scaled down together, keeping the
+    // commanded curvature, as a drive that saturates its wheel speeds does.
+    const double load = std::abs(u_v) / limits.v_max_mps + std::abs(u_w) / limits.omega_max_radps;
+    if (load > 1.0) {
+      u_v /= load;
+      u_w /= load;
+    }
     drive_v_mps_ = LimitChange(drive_v_mps_, v_lag_.Next(drive_v_mps_, u_v), max_dv);
     drive_omega_radps_ = LimitChange(drive_omega_radps_, omega_lag_.Next(drive_omega_radps_, u_w), max_dw);
   }

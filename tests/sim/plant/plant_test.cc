@@ -7,6 +7,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 
 #include "plant_test_robot.h"
@@ -97,17 +98,47 @@ TEST(Plant, SaturatesAtTheRobotsSpeedAndAccelerationLimits) {
   const JointLimits& j = TopayRobot().joint_limits;
   double previous_v = 0.0, max_accel = 0.0, max_qdot = 0.0;
   for (int k = 0; k < 2000; ++k) {
-    if (k % 10 == 0) plant.Command(Cmd(5.0, 5.0, 50.0));
+    if (k % 10 == 0) plant.Command(Cmd(5.0, 0.0, 50.0));
     plant.Step();
     max_accel = std::max(max_accel, (plant.measured().v_mps - previous_v) / o.step_s);
     previous_v = plant.measured().v_mps;
     max_qdot = std::max(max_qdot, std::abs(plant.state().qdot_radps[0]));
   }
   EXPECT_NEAR(plant.measured().v_mps, b.v_max_mps, 1e-12);
-  EXPECT_NEAR(plant.measured().omega_radps, b.omega_max_radps, 1e-12);
+  EXPECT_NEAR(plant.measured().omega_radps, 0.0, 1e-12);
   EXPECT_LE(max_accel, b.a_max_mps2 + 1e-9);
   EXPECT_GT(max_accel, 0.99 * b.a_max_mps2);  // the ramp runs at the limit
   EXPECT_LE(max_qdot, j.qd_max_radps[0] + 1e-12);
+  // Turning in place saturates at omega_max.
+  Drive(&plant, Cmd(0.0, -5.0), 3000);
+  EXPECT_NEAR(plant.measured().v_mps, 0.0, 1e-12);
+  EXPECT_NEAR(plant.measured().omega_radps, -b.omega_max_radps, 1e-12);
+}
+
+// Speed and yaw rate together stay inside the coupled bound |v| / v_max + |omega| /
+// omega_max <= 1 (eq. (9)), scaled down together so that the curvature is the commanded one.
+TEST(Plant, KeepsSpeedAndYawRateInsideTheCoupledBound) {
+  PlantOptions o;
+  o.base.v_tau_s = 0.0;
+  o.base.omega_tau_s = 0.0;
+  Plant plant(TopayRobot(), o, 1);
+  const BaseLimits& b = TopayRobot().base_limits;
+  const double v_cmd = 0.9 * b.v_max_mps, w_cmd = 0.8 * b.omega_max_radps;  // load 1.7
+  double max_load = 0.0;
+  for (int k = 0; k < 3000; ++k) {
+    if (k % 10 == 0) plant.Command(Cmd(v_cmd, w_cmd));
+    plant.Step();
+    max_load = std::max(max_load, std::abs(plant.measured().v_mps) / b.v_max_mps +
+                                      std::abs(plant.measured().omega_radps) / b.omega_max_radps);
+  }
+  EXPECT_LE(max_load, 1.0 + 1e-12);
+  EXPECT_NEAR(plant.measured().v_mps, v_cmd / 1.7, 1e-9);
+  EXPECT_NEAR(plant.measured().omega_radps, w_cmd / 1.7, 1e-9);
+  EXPECT_NEAR(plant.measured().omega_radps / plant.measured().v_mps, w_cmd / v_cmd, 1e-9);
+  // Inside the bound a command is followed as it is.
+  Drive(&plant, Cmd(0.5 * b.v_max_mps, 0.3 * b.omega_max_radps), 3000);
+  EXPECT_NEAR(plant.measured().v_mps, 0.5 * b.v_max_mps, 1e-9);
+  EXPECT_NEAR(plant.measured().omega_radps, 0.3 * b.omega_max_radps, 1e-9);
 }
 
 TEST(Plant, JointsStopAtTheirPositionLimits) {
@@ -130,7 +161,7 @@ TEST(Plant, JointsStopAtTheirPositionLimits) {
 TEST(Plant, BrakesToAStopWithinTheDecelerationLimitsWhenCommandsStop) {
   PlantOptions o;
   Plant plant(TopayRobot(), o, 1);
-  Drive(&plant, Cmd(0.8, 0.5, 1.0), 2500);  // 5 s: at speed
+  Drive(&plant, Cmd(0.8, 0.1, 1.0), 2500);  // 5 s: at speed (inside the coupled bound)
   ASSERT_NEAR(plant.measured().v_mps, 0.8, 1e-6);
   EXPECT_FALSE(plant.braking());
   const BaseLimits& b = TopayRobot().base_limits;
@@ -196,7 +227,7 @@ TEST(Plant, GripperTakesItsStrokeTime) {
 
 TEST(Plant, CommandedCircleCloses) {
   Plant plant(TopayRobot(), {}, 1);
-  const double v = 0.5, w = 0.5;  // radius 1 m, period 4 pi s
+  const double v = 0.4, w = 0.4;  // radius 1 m, period 5 pi s, inside the coupled bound
   Drive(&plant, Cmd(v, w), 2000);   // 4 s: steady
   const WholeBodyState start = plant.state().state;
   const int period_steps = static_cast<int>(std::lround(2.0 * M_PI / w / plant.step_s()));
