@@ -59,6 +59,33 @@ std::string Part(const char* which, const ClearanceDeficit& deficit, const char*
   return buffer;
 }
 
+// ComputeClearanceDeficit with the caller's kinematics cache (one for a stretch of states).
+ClearanceDeficit DeficitWithCache(const SamplePenalties& penalties, const WholeBodyState& state,
+                                  double slack_m, KinematicsCache* cache) {
+  const Kinematics& kinematics = penalties.kinematics();
+  Require(state.num_joints() == kinematics.num_joints() && state.IsFinite(),
+          "endpoint state must be finite with " + std::to_string(kinematics.num_joints()) +
+              " joints");
+  ClearanceDeficit deficit;
+  // Eq. (13) as SamplePenalties evaluates it: the base on the 2D field, the arm spheres it
+  // checks on the 3D field.
+  const Eigen::Vector2d p_WB(state.x_m, state.y_m);
+  deficit.base_m =
+      Deficit(penalties.base_threshold_m(), penalties.base_field().Distance(p_WB), slack_m);
+  const SignedDistanceField2* primary = penalties.base_field().primary_band();
+  deficit.base_primary_m =
+      primary ? Deficit(penalties.base_threshold_m(), primary->Distance(p_WB), slack_m)
+              : deficit.base_m;
+  const Eigen::VectorXd& thresholds = penalties.sphere_thresholds_m();
+  deficit.spheres_m.setZero(thresholds.size());
+  kinematics.Update(state, cache);
+  for (const int s : penalties.arm_field_spheres()) {
+    deficit.spheres_m(s) =
+        Deficit(thresholds(s), penalties.arm_field().Distance(cache->p_WS[s]), slack_m);
+  }
+  return deficit;
+}
+
 // Part by part: deficit <- max(deficit, other).
 void RaiseTo(const ClearanceDeficit& other, ClearanceDeficit* deficit) {
   deficit->base_m = std::max(deficit->base_m, other.base_m);
@@ -71,10 +98,11 @@ void RaiseTo(const ClearanceDeficit& other, ClearanceDeficit* deficit) {
 void RaiseToEdge(const SamplePenalties& penalties, const WholeBodyState& a,
                  const WholeBodyState& b, double slack_m, ClearanceDeficit* deficit) {
   const int steps = WholeBodyValidity::EdgeInterpolationSteps(a, b, 0.02, 0.05);
+  KinematicsCache cache = penalties.kinematics().MakeCache();
   WholeBodyState between;
   for (int i = 1; i <= steps; ++i) {
     WholeBodyValidity::Interpolate(a, b, static_cast<double>(i) / steps, &between);
-    RaiseTo(ComputeClearanceDeficit(penalties, between, slack_m), deficit);
+    RaiseTo(DeficitWithCache(penalties, between, slack_m, &cache), deficit);
   }
 }
 
@@ -95,29 +123,8 @@ void CheckEndpointReliefOptions(const EndpointReliefOptions& options) {
 
 ClearanceDeficit ComputeClearanceDeficit(const SamplePenalties& penalties,
                                          const WholeBodyState& state, double slack_m) {
-  const Kinematics& kinematics = penalties.kinematics();
-  Require(state.num_joints() == kinematics.num_joints() && state.IsFinite(),
-          "endpoint state must be finite with " + std::to_string(kinematics.num_joints()) +
-              " joints");
-  ClearanceDeficit deficit;
-  // Eq. (13) as SamplePenalties evaluates it: the base on the 2D field, the arm spheres it
-  // checks on the 3D field.
-  const Eigen::Vector2d p_WB(state.x_m, state.y_m);
-  deficit.base_m =
-      Deficit(penalties.base_threshold_m(), penalties.base_field().Distance(p_WB), slack_m);
-  const SignedDistanceField2* primary = penalties.base_field().primary_band();
-  deficit.base_primary_m =
-      primary ? Deficit(penalties.base_threshold_m(), primary->Distance(p_WB), slack_m)
-              : deficit.base_m;
-  const Eigen::VectorXd& thresholds = penalties.sphere_thresholds_m();
-  deficit.spheres_m.setZero(thresholds.size());
-  KinematicsCache cache = kinematics.MakeCache();
-  kinematics.Update(state, &cache);
-  for (const int s : penalties.arm_field_spheres()) {
-    deficit.spheres_m(s) =
-        Deficit(thresholds(s), penalties.arm_field().Distance(cache.p_WS[s]), slack_m);
-  }
-  return deficit;
+  KinematicsCache cache = penalties.kinematics().MakeCache();
+  return DeficitWithCache(penalties, state, slack_m, &cache);
 }
 
 double ReliefRampWeight(double d, double f, double p) {

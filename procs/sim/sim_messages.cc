@@ -2,6 +2,8 @@
 
 #include <cmath>
 
+#include "procs/msgs/convert_robot_state.h"
+
 namespace topay::simproc {
 
 std::int64_t SimUtime(std::int64_t start_utime, double t_s) { return start_utime + std::llround(t_s * 1e6); }
@@ -17,34 +19,22 @@ sim::ActuatorCommand ToActuatorCommand(const control_command_t& msg) {
   return c;
 }
 
-base_pose_t ToBasePose(const StateSample& sample, std::int64_t start_utime) {
-  base_pose_t m;
-  m.utime = SimUtime(start_utime, sample.t_s);
-  m.x_m = sample.pose.x_m;
-  m.y_m = sample.pose.y_m;
-  m.yaw_rad = sample.pose.yaw_rad;
-  return m;
-}
-
 robot_state_t ToRobotState(const StateSample& sample, std::int64_t start_utime,
                            const std::vector<std::string>& joint_names) {
-  robot_state_t m;
-  m.utime = SimUtime(start_utime, sample.t_s);
-  m.pose = ToBasePose(sample, start_utime);
-  m.velocity.utime = m.utime;
-  m.velocity.v_mps = sample.measured.v_mps;
-  m.velocity.omega_radps = sample.measured.omega_radps;
-  const int n = static_cast<int>(sample.measured.q_rad.size());
-  m.joints.utime = m.utime;
-  m.joints.num_joints = n;
-  for (int i = 0; i < n; ++i) {
-    m.joints.names.push_back(i < static_cast<int>(joint_names.size()) ? joint_names[i] : "joint" + std::to_string(i + 1));
-    m.joints.position_rad.push_back(sample.measured.q_rad[i]);
-    m.joints.velocity_radps.push_back(sample.measured.qdot_radps[i]);
-    m.joints.effort_Nm.push_back(std::nan(""));
-  }
-  m.gripper = sample.measured.gripper;
-  return m;
+  // The localisation's pose with the measured joints and wheel-odometry velocity, encoded by
+  // the graph's one robot-state conversion (procs/msgs).
+  msgs::RobotStateEstimate estimate;
+  estimate.utime = SimUtime(start_utime, sample.t_s);
+  estimate.state.x_m = sample.pose.x_m;
+  estimate.state.y_m = sample.pose.y_m;
+  estimate.state.yaw_rad = sample.pose.yaw_rad;
+  estimate.state.q_rad = sample.measured.q_rad;
+  estimate.v_mps = sample.measured.v_mps;
+  estimate.omega_radps = sample.measured.omega_radps;
+  estimate.qdot_radps = sample.measured.qdot_radps;
+  estimate.joint_names = joint_names;
+  estimate.gripper = sample.measured.gripper;
+  return msgs::ToMessage(estimate);
 }
 
 point_cloud_t ToPointCloud(const ScanResult& scan, std::int64_t start_utime, const std::string& frame) {

@@ -10,7 +10,6 @@
 #include <vector>
 
 #include "procs/sim/sim_core.h"
-#include "topay/base_pose_t.hpp"
 #include "topay/control_command_t.hpp"
 #include "topay/point_cloud_t.hpp"
 #include "topay/robot_state_t.hpp"
@@ -27,10 +26,9 @@ std::int64_t SimUtime(std::int64_t start_utime, double t_s);
 sim::ActuatorCommand ToActuatorCommand(const control_command_t& msg);
 
 /// ROBOT_STATE: the localisation's pose, the wheels' odometry (v, omega), the measured joints
-/// and gripper; every nested utime is the sample's.
+/// and gripper; every nested utime is the sample's (BASE_POSE is its pose).
 robot_state_t ToRobotState(const StateSample& sample, std::int64_t start_utime,
                            const std::vector<std::string>& joint_names);
-base_pose_t ToBasePose(const StateSample& sample, std::int64_t start_utime);
 point_cloud_t ToPointCloud(const ScanResult& scan, std::int64_t start_utime, const std::string& frame);
 sim_contact_t ToContactMessage(const ContactResult& contact, int box_id, std::int64_t start_utime);
 
