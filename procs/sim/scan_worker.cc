@@ -1,12 +1,9 @@
 #include "procs/sim/scan_worker.h"
 
-#include <sys/resource.h>
-#include <sys/syscall.h>
-#include <unistd.h>
-
 #include <algorithm>
-#include <cerrno>
 #include <optional>
+
+#include "procs/runtime/thread_priority.h"
 
 namespace topay::simproc {
 namespace {
@@ -61,13 +58,10 @@ int ScanWorker::backlog() const {
 }
 
 void ScanWorker::Run() {
-  // Lower this thread's priority (nice + kNiceIncrement, allowed to any user): on a busy
-  // machine the scheduler then lets the plant thread run as soon as it wakes instead of at the
-  // end of the scan's time slice. The scans keep their 10 Hz (one takes ~5 % of a core).
-  const int tid = static_cast<int>(syscall(SYS_gettid));
-  errno = 0;
-  const int nice = getpriority(PRIO_PROCESS, tid);
-  if (errno == 0) setpriority(PRIO_PROCESS, tid, std::min(19, nice + kNiceIncrement));
+  // A lower priority (nice + kNiceIncrement): on a busy machine the scheduler then lets the
+  // plant thread run as soon as it wakes instead of at the end of the scan's time slice. The
+  // scans keep their 10 Hz (one takes ~5 % of a core).
+  procs::LowerThisThreadPriority(kNiceIncrement);
   std::unique_lock lock(mutex_);
   while (true) {
     wake_.wait(lock, [this] { return stop_ || !jobs_.empty(); });

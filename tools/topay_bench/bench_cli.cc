@@ -48,6 +48,17 @@ void AddFileFlags(const std::string& config_dir, CLI::App* app, BenchOptions* o)
   app->add_option("--robot", o->robot_urdf, "Robot URDF")->capture_default_str();
   app->add_option("--robot-config", o->robot_yaml, "Robot YAML")->capture_default_str();
   app->add_option("--out", o->out_dir, "Output folder (created)")->required();
+  o->mapper_config = config_dir + "/mapper/mapper.yaml";
+  o->lidar_config = config_dir + "/sim/lidar.yaml";
+  app->add_option("--sensed-map", o->sensed_map,
+                  "Also plan on each task's scene as the simulated LiDAR maps it from a tour: "
+                  "line (start to goal) | tour (line + a grid over the room); methods <m>@sensed");
+  app->add_option("--sensed-unknown", o->sensed_unknown,
+                  "Never-seen voxels of sensed maps: free | occupied")->capture_default_str();
+  app->add_option("--mapper-config", o->mapper_config, "Mapper YAML (scan filter, map), for sensed maps")
+      ->capture_default_str();
+  app->add_option("--lidar-config", o->lidar_config, "LiDAR YAML (the simulator's), for sensed maps")
+      ->capture_default_str();
   app->add_flag("--dump-trajectories", o->dump_trajectories,
                 "Also write each task's scene, task and trajectory JSON");
 }

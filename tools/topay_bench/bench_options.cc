@@ -1,5 +1,7 @@
 #include "tools/topay_bench/bench_options.h"
 
+#include "tools/topay_bench/sensing_tour.h"
+
 #include <algorithm>
 #include <cmath>
 #include <sstream>
@@ -81,6 +83,16 @@ void CheckBenchOptions(const BenchOptions& o) {
     throw UsageError("--base-limits: unknown choice '" + o.base_limits +
                      "' (benchmark, robot or config)");
   }
+  if (!o.sensed_map.empty()) {
+    if (!ParseSensingTourKind(o.sensed_map)) {
+      throw UsageError("--sensed-map: unknown tour '" + o.sensed_map + "' (line or tour)");
+    }
+    if (o.sensed_unknown != "free" && o.sensed_unknown != "occupied") {
+      throw UsageError("--sensed-unknown: '" + o.sensed_unknown + "' (free or occupied)");
+    }
+    RequireGiven(o.mapper_config, "--mapper-config");
+    RequireGiven(o.lidar_config, "--lidar-config");
+  }
   RequireGiven(o.out_dir, "--out");
   RequireGiven(o.planner_config, "--config");
   RequireGiven(o.robot_urdf, "--robot");
@@ -91,6 +103,13 @@ std::vector<BenchMethod> MethodsOf(const BenchOptions& options) {
   std::vector<BenchMethod> methods;
   for (const std::string& name : options.methods) methods.push_back(*ParseBenchMethod(name));
   return methods;
+}
+
+std::vector<std::string> RunMethodNames(const BenchOptions& options) {
+  std::vector<std::string> names = options.methods;
+  if (options.sensed_map.empty()) return names;
+  for (const std::string& name : options.methods) names.push_back(name + "@sensed");
+  return names;
 }
 
 }  // namespace topay::bench

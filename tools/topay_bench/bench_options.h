@@ -51,6 +51,17 @@ struct BenchOptions {
   /// Give the task's generating goal state to the planner as its hint [true].
   bool use_hint = true;
 
+  /// Sensed maps [""]: "line" or "tour" (SensingTourKind): every method also plans on the
+  /// task's scene as the simulated LiDAR maps it from that tour, as "<method>@sensed"
+  /// (tools/topay_bench/sensed_map.h), beside its runs on the exact scene.
+  std::string sensed_map;
+  /// How never-seen voxels count on a sensed map: "free" [default] or "occupied".
+  std::string sensed_unknown = "free";
+  /// The mapper's options (scan filter, map) and the LiDAR's, for sensed maps; required with
+  /// sensed_map.
+  std::string mapper_config;
+  std::string lidar_config;
+
   std::string out_dir;  ///< Output folder (created); required.
   /// Also write, per task, the scene and task JSON and per method the trajectory JSON (and
   /// the flatness baseline's pieces) [false].
@@ -68,5 +79,9 @@ void CheckBenchOptions(const BenchOptions& options);
 
 /// The methods of checked options, parsed.
 std::vector<BenchMethod> MethodsOf(const BenchOptions& options);
+
+/// The names the run's records carry: the methods, then (sensed_map set) "<method>@sensed"
+/// for each.
+std::vector<std::string> RunMethodNames(const BenchOptions& options);
 
 }  // namespace topay::bench

@@ -10,6 +10,7 @@
 #include "core/robot/whole_body_state.h"
 #include "sim/scenes/task_tightness.h"
 #include "tools/topay_bench/failure_category.h"
+#include "tools/topay_bench/sensed_map_figures.h"
 #include "tools/topay_plan/trajectory_record.h"
 
 namespace topay::bench {
@@ -60,6 +61,9 @@ struct BenchRecord {
   // Figures.
   PlanTimings timings;  ///< ms; total_ms is T.P.
   double map_ms = 0.0;  ///< Distance fields of the task (shared by its methods; not in T.P.).
+  /// A run on a sensed map (method "<name>@sensed"): how it was made (map_ms is then the
+  /// mapping plus the fields). Unset for a run on the exact scene.
+  std::optional<SensedMapFigures> sensed;
   /// Trajectory duration T.D. (s); NaN without a trajectory.
   double duration_s = std::numeric_limits<double>::quiet_NaN();
   int num_candidates = 0;  ///< Paths given to the back end.

@@ -59,6 +59,24 @@ Json OptimizerJson(const std::optional<OptimizerWork>& work) {
               {"penalty_escalations", work->penalty_escalations}};
 }
 
+Json SensedJson(const std::optional<SensedMapFigures>& f) {
+  if (!f) return Json(nullptr);
+  Json json;
+  json["scans"] = f->scans;
+  json["points"] = f->points;
+  json["points_mapped"] = f->points_mapped;
+  json["self_points"] = f->self_points;
+  json["voxels_occupied"] = f->voxels.occupied;
+  json["voxels_free"] = f->voxels.free;
+  json["voxels_unknown"] = f->voxels.unknown;
+  json["voxel_boxes"] = f->voxel_boxes;
+  json["lidar_ms"] = f->lidar_ms;
+  json["mapping_ms"] = f->mapping_ms;
+  json["fields_ms"] = f->fields_ms;
+  json["boxes_ms"] = f->boxes_ms;
+  return json;
+}
+
 }  // namespace
 
 nlohmann::ordered_json RecordToJson(const BenchRecord& r) {
@@ -84,6 +102,7 @@ nlohmann::ordered_json RecordToJson(const BenchRecord& r) {
   json["failure_category"] = std::string(FailureCategoryName(r.failure));
   json["timings_ms"] = TimingsJson(r.timings);
   json["map_ms"] = r.map_ms;
+  json["sensed_map"] = SensedJson(r.sensed);
   json["duration_s"] = Number(r.duration_s);
   json["num_candidates"] = r.num_candidates;
   json["num_paths"] = r.num_paths;

@@ -11,6 +11,8 @@
 #include "core/robot/kinematics.h"
 #include "tools/topay_bench/bench_record_json.h"
 #include "tools/topay_bench/bench_task.h"
+#include "procs/mapper/mapper_options.h"
+#include "sim/lidar/lidar_options.h"
 #include "tools/topay_plan/planner_overrides.h"
 
 namespace topay::bench {
@@ -63,7 +65,21 @@ BenchRunInfo RunInfo(const BenchOptions& o, const BenchTaskContext& c) {
   info.use_hint = o.use_hint;
   info.base_limits = std::string(plan::BaseLimitChoiceName(c.limit_choice));
   info.planner_config = o.planner_config;
+  info.sensed_map = o.sensed_map;
+  info.sensed_unknown = o.sensed_unknown;
   return info;
+}
+
+// The sensed maps' settings: the mapper's and the LiDAR's files (ConfigError on a bad one).
+SensedMapSettings SensedSettingsOf(const BenchOptions& o) {
+  SensedMapSettings s;
+  s.tour.kind = *ParseSensingTourKind(o.sensed_map);
+  const mapper::MapperOptions mapper = mapper::LoadMapperOptions(o.mapper_config);
+  s.filter = mapper.filter;
+  s.map = mapper.map;
+  s.lidar = sim::LoadLidarOptionsFile(o.lidar_config);
+  s.unknown = o.sensed_unknown == "occupied" ? UnknownVoxelPolicy::kOccupied : UnknownVoxelPolicy::kFree;
+  return s;
 }
 
 }  // namespace
@@ -88,6 +104,11 @@ BenchReport RunBench(const BenchOptions& options, const BenchProgress& progress)
   context.methods = MethodsOf(options);
   context.use_hint = options.use_hint;
   if (options.dump_trajectories) context.dump_dir = options.out_dir;
+  std::optional<SensedMapSettings> sensed;
+  if (!options.sensed_map.empty()) {
+    sensed = SensedSettingsOf(options);
+    context.sensed = &*sensed;
+  }
 
   BenchReport report;
   report.info = RunInfo(options, context);
@@ -104,7 +125,7 @@ BenchReport RunBench(const BenchOptions& options, const BenchProgress& progress)
     if (!lines) throw std::runtime_error("cannot write '" + report.tasks_jsonl + "'");
     if (progress) progress(i + 1, options.num_tasks);
   }
-  report.summaries = SummarizeMethods(report.records, options.methods);
+  report.summaries = SummarizeMethods(report.records, RunMethodNames(options));
   WriteText(report.summary_json, SummaryJson(report.summaries, report.info).dump(2) + "\n");
   return report;
 }

@@ -8,6 +8,7 @@
 #include "core/map/scene_distance_fields.h"
 #include "core/planner/whole_body_planner.h"
 #include "core/planning/planner_fields.h"
+#include "core/validate/trajectory_validator.h"
 #include "tools/topay_bench/flatness_data_json.h"
 #include "tools/topay_bench/plan_trajectory_file.h"
 #include "tools/topay_plan/plan_query.h"
@@ -44,12 +45,15 @@ BenchRecord TaskRecord(const BenchTaskContext& c, int index, const PlanningTask&
 std::vector<BenchRecord> GenerationFailed(const BenchTaskContext& c, int index,
                                           std::uint64_t task_seed, const std::string& what) {
   std::vector<BenchRecord> records;
-  for (std::size_t k = 0; k < c.methods.size(); ++k) {
+  const std::size_t m = c.methods.size();
+  const std::size_t runs = c.sensed != nullptr ? 2 * m : m;
+  for (std::size_t k = 0; k < runs; ++k) {
     PlanningTask task;
     task.seed = task_seed;
     BenchRecord r = TaskRecord(c, index, task, 0);
     r.used_hint = false;
-    r.method = std::string(BenchMethodName(c.methods[(index + k) % c.methods.size()]));
+    const BenchMethod method = c.methods[(index + k) % m];
+    r.method = k < m ? std::string(BenchMethodName(method)) : SensedMethodName(method);
     r.order = static_cast<int>(k);
     r.status = "generation_failed";
     r.failure = FailureCategory::kGenerationFailed;
@@ -97,6 +101,22 @@ void DumpPlan(const BenchTaskContext& c, int index, const std::string& method,
   }
 }
 
+// The exact scene's verdict on a plan made on a sensed map: a success stays one only if the
+// independent validator accepts the trajectory against the exact boxes.
+void ValidateOnExactScene(const Kinematics& kinematics, const Scene& exact,
+                          const WholeBodyPlanner& planner, const plan::PlanQuery& query,
+                          const WholeBodyPlanResult& plan, BenchRecord* r) {
+  if (!r->success || !plan.sampled) return;
+  const TrajectoryValidator validator(kinematics, exact, planner.base_limits(),
+                                     planner.options().validator);
+  const ValidationReport report = validator.Validate(*plan.sampled, query.start, query.X_WE_goal);
+  if (report.ok) return;
+  r->success = false;
+  r->status = "exact_scene_rejected";
+  r->failure = FailureCategory::kValidatorRejected;
+  r->failure_reason = "exact scene: " + report.first_failure.message;
+}
+
 double MillisecondsSince(std::chrono::steady_clock::time_point start) {
   return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
       .count();
@@ -109,6 +129,43 @@ std::string TaskFilePath(const std::string& dir, int index, const std::string& s
   std::snprintf(name, sizeof(name), "task_%04d_", index);
   return dir + "/" + name + suffix;
 }
+
+std::string SensedMethodName(BenchMethod method) {
+  return std::string(BenchMethodName(method)) + "@sensed";
+}
+
+namespace {
+
+// Every method on the task's sensed map, in the task's rotation, after the exact runs.
+void RunOnSensedMap(const BenchTaskContext& c, int index, const BenchmarkCase& bench_case,
+                    const plan::PlanQuery& query, bool base_unreachable,
+                    std::vector<BenchRecord>* records) {
+  const std::uint64_t task_seed = bench_case.task.seed;
+  const SensedMap sensed = BuildSensedMap(query.scene, bench_case.task, *c.kinematics, *c.sensed,
+                                          PlannerFieldOptions(*c.kinematics), task_seed);
+  const std::size_t m = c.methods.size();
+  for (std::size_t k = 0; k < m; ++k) {
+    const BenchMethod method = c.methods[(static_cast<std::size_t>(index) + k) % m];
+    const WholeBodyPlannerOptions options =
+        BenchPlannerOptions(*c.loaded_options, method, c.settings, task_seed);
+    const WholeBodyPlanner planner(*c.kinematics, sensed.fields->base_field_2d(),
+                                   sensed.fields->field_3d(), sensed.scene, options);
+    const WholeBodyPlanResult plan =
+        planner.Plan(query.start, query.X_WE_goal, c.use_hint ? query.goal_state : std::nullopt);
+    BenchRecord r = TaskRecord(c, index, bench_case.task, query.scene.seed);
+    r.method = SensedMethodName(method);
+    r.order = static_cast<int>(m + k);
+    r.map_ms = sensed.figures.mapping_ms + sensed.figures.fields_ms + sensed.figures.boxes_ms;
+    r.sensed = sensed.figures;
+    r.base_unreachable = base_unreachable;
+    FillOutcome(plan, c.settings.time_limit_ms, &r);
+    ValidateOnExactScene(*c.kinematics, query.scene, planner, query, plan, &r);
+    records->push_back(r);
+    if (!c.dump_dir.empty()) DumpPlan(c, index, r.method, query, r.map_ms, options, plan);
+  }
+}
+
+}  // namespace
 
 std::vector<BenchRecord> RunBenchTask(const BenchTaskContext& c, int index) {
   const std::uint64_t task_seed = DeriveSeed(c.seed, static_cast<std::uint64_t>(index));
@@ -152,6 +209,7 @@ std::vector<BenchRecord> RunBenchTask(const BenchTaskContext& c, int index) {
     records.push_back(r);
     if (!c.dump_dir.empty()) DumpPlan(c, index, r.method, query, map_ms, options, plan);
   }
+  if (c.sensed != nullptr) RunOnSensedMap(c, index, bench_case, query, base_unreachable, &records);
   return records;
 }
 

@@ -9,6 +9,7 @@
 #include "tools/topay_bench/bench_method.h"
 #include "tools/topay_bench/bench_planner_options.h"
 #include "tools/topay_bench/bench_record.h"
+#include "tools/topay_bench/sensed_map.h"
 #include "tools/topay_plan/base_limit_choice.h"
 #include "sim/scenes/distance_range.h"
 #include "sim/scenes/scene_kind.h"
@@ -29,6 +30,9 @@ struct BenchTaskContext {
   std::uint64_t seed = 1;            ///< Base seed S.
   std::vector<BenchMethod> methods;  ///< At least one.
   bool use_hint = true;
+  /// Set: every method also runs on a sensed map of the task's scene (BuildSensedMap), as
+  /// method "<name>@sensed" (SensedMethodName), after the exact runs.
+  const SensedMapSettings* sensed = nullptr;
   /// Non-empty: write the task's scene and task JSON and each method's trajectory JSON here
   /// (TaskFilePath names).
   std::string dump_dir;
@@ -44,8 +48,14 @@ std::string TaskFilePath(const std::string& dir, int index, const std::string& s
 /// (BenchPlannerOptions) and the task's goal state as hint when use_hint. One record per
 /// method, in run order; a tight task's records carry its PlanningTask::tight. A task the
 /// generator cannot make gives records with status "generation_failed" (category
-/// kGenerationFailed) and the generator's message. Throws ConfigError if a dump cannot be
+/// kGenerationFailed) and the generator's message. With context.sensed, each method then also
+/// plans on the task's sensed map (its fields and its blocked voxels as the planner's scene);
+/// a plan the planner validated on the map counts only if the validator also accepts it on the
+/// exact scene (else kValidatorRejected, "exact scene: ..."). Throws ConfigError if a dump cannot be
 /// written.
+/// "<method>@sensed": a method's runs on sensed maps.
+std::string SensedMethodName(BenchMethod method);
+
 std::vector<BenchRecord> RunBenchTask(const BenchTaskContext& context, int index);
 
 }  // namespace topay::bench

@@ -4,7 +4,7 @@
 #include <map>
 #include <set>
 
-#include "tools/topay_bench/bench_statistics.h"
+#include "core/common/sample_statistics.h"
 
 namespace topay::bench {
 namespace {

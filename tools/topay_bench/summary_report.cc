@@ -55,6 +55,8 @@ Json MethodJson(const MethodSummary& s, const BenchRunInfo& info) {
               {"use_hint", info.use_hint},
               {"base_limits", info.base_limits},
               {"planner_config", info.planner_config},
+              {"sensed_map", info.sensed_map.empty() ? Json(nullptr) : Json(info.sensed_map)},
+              {"sensed_unknown", info.sensed_map.empty() ? Json(nullptr) : Json(info.sensed_unknown)},
               {"tp_statistics",
                "tp_ms_* and td_s_mean over successful tasks; tp_ms_median_all over all tasks; "
                "common_* over the tasks every method solved"}};
@@ -101,6 +103,12 @@ std::string SummaryMarkdown(const std::vector<MethodSummary>& summaries, const B
       << " task(s) every method solved. Unreachable: tasks certified unsolvable (no motion "
          "of the rigid lower body brings the target within the arm's reach, a planner-"
          "independent test); S.R. reachable excludes them.\n";
+  if (!info.sensed_map.empty()) {
+    out << "Methods <m>@sensed planned on the task's scene as the simulated LiDAR mapped it from the "
+        << info.sensed_map << " tour (unknown voxels " << info.sensed_unknown
+        << "), and count only if the validator also accepts the trajectory on the exact scene; "
+           "their map_ms is the mapping plus the fields.\n";
+  }
   return out.str();
 }
 

@@ -5,13 +5,10 @@
 #include <sstream>
 #include <string>
 
-#include "tools/topay_bench/bench_statistics.h"
+#include "core/common/sample_statistics.h"
 
 namespace topay::frontend_bench {
 namespace {
-
-using bench::Mean;
-using bench::NearestRankQuantile;
 
 std::string Fmt(double v, int digits = 1) {
   std::ostringstream out;

@@ -143,7 +143,35 @@ TEST(BenchRecordJsonTest, TimingsAreUnderOneKeyAndFiguresAreThere) {
   // No other key holds a wall-clock figure: the top-level keys are exactly these.
   std::vector<std::string> keys;
   for (auto it = j.begin(); it != j.end(); ++it) keys.push_back(it.key());
-  EXPECT_EQ(keys.size(), 29u);
+  EXPECT_EQ(keys.size(), 30u);
+  EXPECT_TRUE(j["sensed_map"].is_null());  // a run on the exact scene
+}
+
+TEST(BenchRecordJsonTest, ASensedMapRunCarriesItsMapFigures) {
+  BenchRecord r = HandRecord();
+  SensedMapFigures f;
+  f.scans = 6;
+  f.points = 120000;
+  f.points_mapped = 40000;
+  f.self_points = 900;
+  f.voxels = {.occupied = 5000, .free = 200000, .unknown = 4915000};
+  f.voxel_boxes = 700;
+  f.lidar_ms = 25.0;
+  f.mapping_ms = 60.0;
+  f.fields_ms = 300.0;
+  f.boxes_ms = 12.0;
+  r.sensed = f;
+  const nlohmann::json s = nlohmann::json::parse(RecordJsonLine(r))["sensed_map"];
+  EXPECT_EQ(s["scans"], 6);
+  EXPECT_EQ(s["points"], 120000);
+  EXPECT_EQ(s["points_mapped"], 40000);
+  EXPECT_EQ(s["self_points"], 900);
+  EXPECT_EQ(s["voxels_occupied"], 5000);
+  EXPECT_EQ(s["voxels_free"], 200000);
+  EXPECT_EQ(s["voxels_unknown"], 4915000);
+  EXPECT_EQ(s["voxel_boxes"], 700);
+  EXPECT_EQ(s["mapping_ms"], 60.0);
+  EXPECT_EQ(s["fields_ms"], 300.0);
 }
 
 TEST(BenchRecordJsonTest, AFailureHasNullDurationAndValidation) {

@@ -72,7 +72,7 @@ void ExpectLineKeys(const Json& line) {
         "start",     "goal_hint",      "used_hint",  "target", "base_distance_m", "success",
         "status",    "failure_reason", "timings_ms", "map_ms", "duration_s",      "num_candidates",
         "num_paths", "num_classes",    "validation", "base_unreachable", "optimizer",
-        "cell",      "tight",          "failure_category"}) {
+        "cell",      "tight",          "failure_category", "sensed_map"}) {
     EXPECT_TRUE(line.contains(key)) << key << " in " << line.dump();
   }
   // A task certified unsolvable is never solved (the certificate and the validator agree).
@@ -155,7 +155,7 @@ int CheckDumpsAndRevalidate(const std::string& dir, const std::vector<Json>& lin
         plan::ReadTrajectoryJson(bench::TaskFilePath(dir, task, method + "_trajectory.json"));
     EXPECT_EQ(file.metadata.task_seed, l["task_seed"].get<std::uint64_t>());
     EXPECT_EQ(file.metadata.base_limits.omega_max_radps, benchmark.omega_max_radps);
-    if (l["status"] != "time_limit") {
+    if (l["status"] != "time_limit" && l["status"] != "exact_scene_rejected") {
       EXPECT_EQ(file.metadata.status, l["status"]);
     }
     if (!l["success"].get<bool>()) continue;
@@ -274,6 +274,43 @@ TEST_F(TopayBenchTest, TightRunMarksTheCellAndCountsFailuresByReason) {
   EXPECT_EQ(total, 2 - summary[0]["successes"].get<int>());
   // --help names the flag.
   EXPECT_NE(Run("--help").out.find("--tight"), std::string::npos);
+}
+
+TEST_F(TopayBenchTest, SmokeSensedMapRunsBesideTheExactOnesAndEverySuccessIsExactlyValid) {
+  const RunResult run = Run("--scene tables --range small --tasks 2 --seed 5 --sensed-map line "
+                            "--method topay --threads 2 --time-limit-ms 10000 --dump-trajectories --out '" +
+                            Path("sensed") + "'");
+  ASSERT_EQ(run.exit_code, 0) << run.out << run.err;
+  EXPECT_NE(run.out.find("| topay@sensed |"), std::string::npos) << run.out;
+  EXPECT_NE(run.out.find("from the line tour"), std::string::npos) << run.out;
+  const std::vector<Json> lines = ReadLines(Path("sensed") + "/tasks.jsonl");
+  ASSERT_EQ(lines.size(), 4u);
+  int sensed_runs = 0;
+  for (const Json& l : lines) {
+    ExpectLineKeys(l);
+    if (l["method"] != "topay@sensed") {
+      EXPECT_TRUE(l["sensed_map"].is_null());
+      continue;
+    }
+    ++sensed_runs;
+    ASSERT_TRUE(l["sensed_map"].is_object()) << l.dump();
+    const Json& f = l["sensed_map"];
+    EXPECT_GE(f["scans"].get<int>(), 2);
+    EXPECT_GT(f["voxels_occupied"].get<std::int64_t>(), 100);
+    EXPECT_GT(f["voxel_boxes"].get<int>(), 0);
+    EXPECT_LT(f["points_mapped"].get<std::int64_t>(), f["points"].get<std::int64_t>());
+    EXPECT_EQ(l["success"].get<bool>(), l["failure_category"].get<std::string>().empty()) << l.dump();
+  }
+  EXPECT_EQ(sensed_runs, 2);
+  // Every success, on the exact scene or a sensed map, passes the validator on the exact scene
+  // again, from the dumped files alone.
+  CheckDumpsAndRevalidate(Path("sensed"), lines);
+  const Json summary = Json::parse(ReadText(Path("sensed") + "/summary.json"));
+  ASSERT_EQ(summary.size(), 2u);
+  EXPECT_EQ(summary[1]["method"], "topay@sensed");
+  EXPECT_EQ(summary[1]["sensed_map"], "line");
+  EXPECT_EQ(summary[1]["sensed_unknown"], "free");
+  EXPECT_EQ(Run("--sensed-map spiral --out '" + Path("bad") + "'").exit_code, 2);
 }
 
 // ---- Plots (topay-bench-plot) ----------------------------------------------------------------

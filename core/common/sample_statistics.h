@@ -2,7 +2,7 @@
 
 #include <vector>
 
-namespace topay::bench {
+namespace topay {
 
 /// Statistics of a sample; every function returns NaN for an empty sample.
 
@@ -16,4 +16,4 @@ double Median(std::vector<double> values);
 /// the sample is <= v (the value of rank ceil(q n) in ascending order). p95 is q = 0.95.
 double NearestRankQuantile(std::vector<double> values, double q);
 
-}  // namespace topay::bench
+}  // namespace topay

@@ -1,25 +1,25 @@
-#include "tools/topay_bench/bench_statistics.h"
+#include "core/common/sample_statistics.h"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 
-namespace topay::bench {
+namespace topay {
 namespace {
 
-TEST(BenchStatisticsTest, MeanOfHandValues) {
+TEST(SampleStatisticsTest, MeanOfHandValues) {
   EXPECT_DOUBLE_EQ(Mean({1.0, 2.0, 6.0}), 3.0);
   EXPECT_TRUE(std::isnan(Mean({})));
 }
 
-TEST(BenchStatisticsTest, MedianOfOddAndEvenCounts) {
+TEST(SampleStatisticsTest, MedianOfOddAndEvenCounts) {
   EXPECT_DOUBLE_EQ(Median({5.0, 1.0, 3.0}), 3.0);
   EXPECT_DOUBLE_EQ(Median({4.0, 1.0, 3.0, 10.0}), 3.5);  // (3 + 4) / 2
   EXPECT_DOUBLE_EQ(Median({7.0}), 7.0);
   EXPECT_TRUE(std::isnan(Median({})));
 }
 
-TEST(BenchStatisticsTest, NearestRankP95) {
+TEST(SampleStatisticsTest, NearestRankP95) {
   // 1..20: rank ceil(0.95 * 20) = 19 -> 19 (not 20: 19 of 20 = 95 % are <= 19).
   std::vector<double> v;
   for (int i = 20; i >= 1; --i) v.push_back(i);
@@ -34,4 +34,4 @@ TEST(BenchStatisticsTest, NearestRankP95) {
 }
 
 }  // namespace
-}  // namespace topay::bench
+}  // namespace topay

@@ -1,11 +1,11 @@
-#include "tools/topay_bench/bench_statistics.h"
+#include "core/common/sample_statistics.h"
 
 #include <algorithm>
 #include <cmath>
 #include <limits>
 #include <numeric>
 
-namespace topay::bench {
+namespace topay {
 namespace {
 
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
@@ -33,4 +33,4 @@ double NearestRankQuantile(std::vector<double> values, double q) {
   return values[std::clamp<std::size_t>(rank, 1, values.size()) - 1];
 }
 
-}  // namespace topay::bench
+}  // namespace topay

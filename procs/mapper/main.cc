@@ -1,0 +1,133 @@
+// topay-mapper: the LiDAR mapper of the graph (docs/mapper.md). POINT_CLOUD and ROBOT_STATE in;
+// MAP_UPDATE out after every scan (a compressed delta, a snapshot every few seconds). Scans are
+// filtered with PCL (range, floor, the robot's own body at the scan's time, voxel grid,
+// outliers) and inserted into a dense occupancy grid with free-space ray casting; an OctoMap
+// is kept beside it at a lower rate (--save writes it as a .bt at exit; --prior starts from
+// one). Exit codes: 0, 1 config or file error, 2 usage error.
+
+#include <CLI/CLI.hpp>
+#include <spdlog/spdlog.h>
+
+#include <cstdio>
+#include <cstdlib>
+#include <memory>
+#include <optional>
+
+#include "core/common/error.h"
+#include "core/io/robot_loader.h"
+#include "procs/mapper/mapper_node.h"
+#include "procs/mapper/mapper_options.h"
+#include "procs/mapper/octree_dense_states.h"
+#include "procs/runtime/process_loop.h"
+
+using namespace topay;
+using namespace topay::mapper;
+
+namespace {
+
+struct Flags {
+  std::string save, prior, robot_urdf, robot_yaml;
+};
+
+MapperOptions ResolveOptions(const procs::ProcessOptions& process, const Flags& f) {
+  MapperOptions o = process.config_path.empty() ? MapperOptions{} : LoadMapperOptions(process.config_path);
+  const char* env = std::getenv("TOPAY_CONFIG_DIR");
+  const std::string config_dir = env != nullptr && *env != '\0' ? env : TOPAY_CONFIG_DIR;
+  if (o.robot_urdf.empty()) o.robot_urdf = config_dir + "/robot/topay_mm.urdf";
+  if (o.robot_yaml.empty()) o.robot_yaml = config_dir + "/robot/topay_mm.yaml";
+  if (!f.robot_urdf.empty()) o.robot_urdf = f.robot_urdf;
+  if (!f.robot_yaml.empty()) o.robot_yaml = f.robot_yaml;
+  if (!f.save.empty()) o.save_path = f.save;
+  if (!f.prior.empty()) o.prior_path = f.prior;
+  return o;
+}
+
+// The prior map's voxels into the dense map (occupied and free at the clamping bounds, as an
+// OctoMap .bt stores them: maximum likelihood only). Returns the number of voxels seeded.
+std::int64_t SeedFromPrior(const octomap::OcTree& tree, OccupancyMap* map) {
+  const std::vector<VoxelState> states = DenseStatesFromOcTree(tree, map->geometry());
+  const GridGeometry3& g = map->geometry();
+  std::int64_t seeded = 0;
+  for (int iz = 0; iz < g.dims.z(); ++iz) {
+    for (int iy = 0; iy < g.dims.y(); ++iy) {
+      for (int ix = 0; ix < g.dims.x(); ++ix) {
+        const VoxelState s = states[g.Index(ix, iy, iz)];
+        if (s == VoxelState::kUnknown) continue;
+        map->SetVoxel({ix, iy, iz}, s == VoxelState::kOccupied ? map->options().log_odds_max : map->options().log_odds_min,
+                      nullptr);
+        ++seeded;
+      }
+    }
+  }
+  return seeded;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  CLI::App app{"topay-mapper: LiDAR scans to the occupancy map (MAP_UPDATE), PCL filters, OctoMap beside"};
+  procs::ProcessOptions process;
+  procs::AddCommonFlags(&app, "topay-mapper", &process);
+  Flags flags;
+  app.add_option("--save", flags.save, "write the OctoMap (.bt, octovis opens it) here at exit (SIGINT/SIGTERM)");
+  app.add_option("--prior", flags.prior, "start from this OctoMap .bt");
+  app.add_option("--robot", flags.robot_urdf, "robot URDF (default: the config's, else the shipped TopAY robot)");
+  app.add_option("--robot-yaml", flags.robot_yaml, "robot YAML (collision model)");
+  if (const std::optional<int> code = procs::ParseFlags(&app, argc, argv)) return *code;
+
+  MapperOptions options;
+  std::unique_ptr<RobotModel> model;
+  std::unique_ptr<Kinematics> kinematics;
+  std::unique_ptr<ScanMapper> mapper;
+  std::optional<OctomapMirror> mirror;
+  try {
+    options = ResolveOptions(process, flags);
+    model = std::make_unique<RobotModel>(LoadRobotModel(options.robot_urdf, options.robot_yaml));
+    kinematics = std::make_unique<Kinematics>(*model);
+    mapper = std::make_unique<ScanMapper>(options.filter, options.map, *kinematics);
+    const OctomapMirrorOptions mirror_options = MirrorOptionsOf(options);
+    if (!options.prior_path.empty()) {
+      mirror.emplace(OctomapMirror::LoadPrior(options.prior_path, mirror_options));
+      const std::int64_t seeded = SeedFromPrior(mirror->tree(), &mapper->mutable_map());
+      spdlog::info("prior {}: {} voxels known", options.prior_path, seeded);
+    } else if (options.octomap.enabled) {
+      mirror.emplace(mirror_options);
+    }
+  } catch (const ConfigError& e) {
+    spdlog::error("{}", e.what());
+    return procs::kExitConfigError;
+  } catch (const std::exception& e) {  // robot files, the prior's .bt
+    spdlog::error("{}", e.what());
+    return procs::kExitConfigError;
+  }
+  procs::ProcessLoop loop(process);
+  if (!loop.ok()) {
+    spdlog::error("{}", loop.error());
+    return procs::kExitConfigError;
+  }
+  std::unique_ptr<OctomapWorker> octomap;
+  if (mirror && options.octomap.enabled) octomap = std::make_unique<OctomapWorker>(std::move(*mirror));
+  const GridGeometry3& g = mapper->map().geometry();
+  spdlog::info("{}: map {} x {} x {} voxels of {} m, OctoMap {}, robot {}", process.name, g.dims.x(), g.dims.y(), g.dims.z(),
+               g.resolution_m, octomap ? fmt::format("every {} scans", options.octomap.every_n_scans) : "off",
+               model->name);
+  MapperNode node(&loop, mapper.get(), octomap.get(), options);
+  node.Publish(procs::NowUtime(), /*force_snapshot=*/true);  // the prior (or nothing) at once
+  const int code = loop.Run();
+  std::printf("%s", node.stats().Report().c_str());
+  std::fflush(stdout);
+  if (!options.save_path.empty()) {
+    try {
+      if (octomap) {
+        octomap->SaveWhenIdle(options.save_path);
+      } else {
+        WriteOcTreeFile(*OcTreeFromDenseStates(mapper->map().states(), g, MirrorOptionsOf(options)), options.save_path);
+      }
+      spdlog::info("saved the OctoMap to {}", options.save_path);
+    } catch (const std::exception& e) {
+      spdlog::error("{}", e.what());
+      return procs::kExitConfigError;
+    }
+  }
+  return code;
+}

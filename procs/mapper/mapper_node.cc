@@ -1,0 +1,114 @@
+#include "procs/mapper/mapper_node.h"
+
+#include <spdlog/spdlog.h>
+
+#include "procs/msgs/convert_robot_state.h"
+#include "topay/heartbeat_t.hpp"
+#include "topay_msgs/channels.h"
+
+namespace topay::mapper {
+namespace {
+
+constexpr double kHealthPeriodS = 1.0;
+// Scans stopped: no cloud for this long (s) turns the health to WARN.
+constexpr double kStaleScansS = 1.0;
+
+double MsSince(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+}
+
+}  // namespace
+
+MapperNode::MapperNode(procs::ProcessLoop* loop, ScanMapper* mapper, OctomapWorker* octomap,
+                       const MapperOptions& options)
+    : loop_(loop),
+      mapper_(mapper),
+      octomap_(octomap),
+      options_(options),
+      history_(options.robot_state),
+      schedule_(options.publish.snapshot_period_s) {
+  loop_->Subscribe<point_cloud_t>(std::string(channels::POINT_CLOUD),
+                                  [this](const point_cloud_t& m) { OnCloud(m); });
+  loop_->Subscribe<robot_state_t>(std::string(channels::ROBOT_STATE),
+                                  [this](const robot_state_t& m) { OnRobotState(m); });
+  // The silence timer: an update at least every max_silence_s, scans or not.
+  loop_->AddTimer(options_.publish.max_silence_s / 2.0, [this] {
+    if (NowS() - last_publish_s_ >= options_.publish.max_silence_s) Publish(procs::NowUtime());
+  });
+  loop_->AddTimer(kHealthPeriodS, [this] { OnHealthTimer(); });
+  loop_->SetHealth(heartbeat_t::OK, "waiting for POINT_CLOUD");
+}
+
+double MapperNode::NowS() const {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
+}
+
+void MapperNode::OnRobotState(const robot_state_t& msg) {
+  std::string error;
+  const std::optional<msgs::RobotStateEstimate> estimate = msgs::FromMessage(msg, &error);
+  if (!estimate || !history_.Add(estimate->utime, estimate->state)) {
+    ++stats_.states_rejected;
+    stats_.last_error = "ROBOT_STATE: " + (error.empty() ? std::string("not finite or wrong joint count") : error);
+    return;
+  }
+}
+
+void MapperNode::OnCloud(const point_cloud_t& msg) {
+  const auto start = std::chrono::steady_clock::now();
+  ++stats_.clouds;
+  if (const std::optional<CloudError> error = CheckCloud(msg, options_.filter.input, &cloud_)) {
+    ++stats_.clouds_rejected;
+    stats_.last_error = error->ToString();
+    spdlog::warn("POINT_CLOUD utime {} skipped: {}", msg.utime, stats_.last_error);
+    return;
+  }
+  const ScanMapperSummary summary = mapper_->Integrate(cloud_, history_.At(cloud_.utime), &pending_);
+  stats_.AddScan(summary);
+  last_data_utime_ = std::max(last_data_utime_, cloud_.utime);
+  if (octomap_ != nullptr && scans_++ % options_.octomap.every_n_scans == 0) {
+    octomap_->Submit(cloud_.X_WS.translation(), mapper_->last_points());
+  }
+  Publish(last_data_utime_);
+  stats_.scan_to_update_ms.push_back(MsSince(start));
+}
+
+void MapperNode::Publish(std::int64_t utime, bool force_snapshot) {
+  const auto start = std::chrono::steady_clock::now();
+  const double now_s = NowS();
+  const bool full = force_snapshot || schedule_.SnapshotDue(now_s);
+  const OccupancyMap& map = mapper_->map();
+  const map_update_t msg =
+      full ? msgs::EncodeFullMap(map.geometry(), map.states(), utime, ++map_seq_, options_.publish.codec)
+           : msgs::EncodeMapDelta(map.geometry(), pending_, utime, ++map_seq_, options_.publish.codec);
+  const double encode_ms = MsSince(start);
+  pending_.clear();
+  loop_->lcm().publish(std::string(channels::MAP_UPDATE), &msg);
+  schedule_.Published(full, now_s);
+  last_publish_s_ = now_s;
+  ++stats_.updates;
+  const double bytes = static_cast<double>(msg.getEncodedSize());
+  if (full) {
+    ++stats_.snapshots;
+    stats_.snapshot_bytes.push_back(bytes);
+    stats_.snapshot_encode_ms.push_back(encode_ms);
+  } else {
+    stats_.delta_bytes.push_back(bytes);
+    stats_.encode_ms.push_back(encode_ms);
+  }
+}
+
+void MapperNode::OnHealthTimer() {
+  const bool rejecting = stats_.clouds_rejected > rejected_at_last_health_;
+  const bool no_state = stats_.scans_without_state > without_state_at_last_health_;
+  const bool stale = stats_.clouds == clouds_at_last_health_ && NowS() > kStaleScansS;
+  rejected_at_last_health_ = stats_.clouds_rejected;
+  without_state_at_last_health_ = stats_.scans_without_state;
+  clouds_at_last_health_ = stats_.clouds;
+  std::string status = stats_.StatusLine(mapper_->map().CountStates());
+  if (rejecting) status += "; rejecting clouds: " + stats_.last_error;
+  if (no_state) status += "; no ROBOT_STATE at scan time: own points not removed";
+  if (stale) status += "; no POINT_CLOUD";
+  loop_->SetHealth(rejecting || no_state || stale ? heartbeat_t::WARN : heartbeat_t::OK, status);
+}
+
+}  // namespace topay::mapper
