@@ -218,6 +218,13 @@ struct MessageSample<map_update_t> {
       const int8_t states[3] = {map_update_t::UNKNOWN, map_update_t::FREE, map_update_t::OCCUPIED};
       m.values.push_back(states[k % 3]);
     }
+    // Every field set, though a real message fills either indices/values or the payload
+    // (procs/msgs/map_codec.h writes and checks the payload).
+    m.compression = map_update_t::COMPRESSION_ZLIB;
+    m.num_payload_voxels = 9;
+    m.payload_raw_bytes = 11;
+    m.num_payload_bytes = 6;
+    m.payload = {0x78, 0x01, 0x00, 0xff, 0x80, 0x7f};
     return m;
   }
   static void ExpectSame(const map_update_t& a, const map_update_t& b) {
@@ -231,6 +238,11 @@ struct MessageSample<map_update_t> {
     EXPECT_EQ(a.indices, b.indices);
     EXPECT_EQ(a.num_values, b.num_values);
     EXPECT_EQ(a.values, b.values);
+    EXPECT_EQ(a.compression, b.compression);
+    EXPECT_EQ(a.num_payload_voxels, b.num_payload_voxels);
+    EXPECT_EQ(a.payload_raw_bytes, b.payload_raw_bytes);
+    EXPECT_EQ(a.num_payload_bytes, b.num_payload_bytes);
+    EXPECT_EQ(a.payload, b.payload);
   }
 };
 
