@@ -11,6 +11,7 @@ packages=(
   liburdfdom-dev libyaml-cpp-dev nlohmann-json3-dev
   libcli11-dev libspdlog-dev libcairo2-dev libtbb-dev libceres-dev
   googletest libgtest-dev libbenchmark-dev
+  libpcl-dev liboctomap-dev
 )
 
 missing=()
