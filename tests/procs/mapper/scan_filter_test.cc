@@ -22,7 +22,7 @@ using testing::CloudOf;
 ScanFilterOptions AllOff() {
   ScanFilterOptions o;
   o.range_min_m = 0.0;
-  o.range_max_m = 1000.0;
+  o.range_max_m = 20.0;  // the default: wide enough, and voxel leaves of 5 cm fit
   o.ground_max_z_m = -1000.0;
   o.self_margin_m = 0.0;
   o.voxel_leaf_m = 0.0;
@@ -158,7 +158,7 @@ TEST_F(ScanFilterTest, WithoutAStateTheSelfFilterIsSkippedWithAWarning) {
   const ScanFilterSummary nan = Run(o, cloud, bad);
   EXPECT_TRUE(nan.self_filter_skipped);
   EXPECT_NE(nan.warning.find("not finite"), std::string::npos) << nan.warning;
-  bad.q_rad.resize(2);
+  bad.q_rad = Eigen::VectorXd::Zero(2);  // the wrong joint count
   EXPECT_TRUE(Run(o, cloud, bad).self_filter_skipped);
   const ScanFilterSummary good = Run(o, cloud, state);
   EXPECT_FALSE(good.self_filter_skipped);
