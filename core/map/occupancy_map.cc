@@ -26,6 +26,12 @@ bool IsFinite(const Eigen::Vector3f& p) {
   return std::isfinite(p.x()) && std::isfinite(p.y()) && std::isfinite(p.z());
 }
 
+// Log-odds in fixed point (units of kOccupancyLogOddsUnit).
+int ToFixed(float log_odds) { return static_cast<int>(std::lround(log_odds * 1000.0f)); }
+
+// Fixed-point log-odds must stay clear of the int16 range (and its unknown sentinel).
+bool InFixedRange(float log_odds) { return std::isfinite(log_odds) && std::abs(log_odds) <= 30.0f; }
+
 }  // namespace
 
 void ValidateOccupancyMapOptions(const OccupancyMapOptions& o) {
@@ -33,15 +39,18 @@ void ValidateOccupancyMapOptions(const OccupancyMapOptions& o) {
               (o.bounds_W_m.min().array() < o.bounds_W_m.max().array()).all(),
           "bounds_W_m", "finite and not empty");
   Require(std::isfinite(o.resolution_m) && o.resolution_m > 0.0, "resolution_m", "finite and > 0");
-  Require(std::isfinite(o.log_odds_hit) && o.log_odds_hit > 0.0f, "log_odds_hit",
-          "finite and > 0");
-  Require(std::isfinite(o.log_odds_miss) && o.log_odds_miss < 0.0f, "log_odds_miss",
-          "finite and < 0");
-  Require(std::isfinite(o.occupied_threshold_log_odds), "occupied_threshold_log_odds", "finite");
-  Require(std::isfinite(o.log_odds_min) && o.log_odds_min < o.occupied_threshold_log_odds,
-          "log_odds_min", "finite and < occupied_threshold_log_odds");
-  Require(std::isfinite(o.log_odds_max) && o.log_odds_max > o.occupied_threshold_log_odds,
-          "log_odds_max", "finite and > occupied_threshold_log_odds");
+  Require(InFixedRange(o.log_odds_hit) && ToFixed(o.log_odds_hit) > 0, "log_odds_hit",
+          "in (0, 30]");
+  Require(InFixedRange(o.log_odds_miss) && ToFixed(o.log_odds_miss) < 0, "log_odds_miss",
+          "in [-30, 0)");
+  Require(InFixedRange(o.occupied_threshold_log_odds), "occupied_threshold_log_odds",
+          "in [-30, 30]");
+  Require(InFixedRange(o.log_odds_min) &&
+              ToFixed(o.log_odds_min) < ToFixed(o.occupied_threshold_log_odds),
+          "log_odds_min", "in [-30, 30] and < occupied_threshold_log_odds");
+  Require(InFixedRange(o.log_odds_max) &&
+              ToFixed(o.log_odds_max) > ToFixed(o.occupied_threshold_log_odds),
+          "log_odds_max", "in [-30, 30] and > occupied_threshold_log_odds");
   Require(std::isfinite(o.max_free_ray_length_m) && o.max_free_ray_length_m > 0.0,
           "max_free_ray_length_m", "finite and > 0");
 }
@@ -49,33 +58,51 @@ void ValidateOccupancyMapOptions(const OccupancyMapOptions& o) {
 OccupancyMap::OccupancyMap(const OccupancyMapOptions& options) : options_(options) {
   ValidateOccupancyMapOptions(options_);
   geometry_ = GridGeometry3::FromBounds(options_.bounds_W_m, options_.resolution_m);
+  hit_ = ToFixed(options_.log_odds_hit);
+  miss_ = ToFixed(options_.log_odds_miss);
+  min_ = ToFixed(options_.log_odds_min);
+  max_ = ToFixed(options_.log_odds_max);
+  threshold_ = ToFixed(options_.occupied_threshold_log_odds);
   const auto n = static_cast<std::size_t>(geometry_.NumCells());
-  log_odds_.assign(n, 0.0f);
+  cells_.assign(n, Cell{});
   states_.assign(n, kUnknown);
-  marks_.assign(n, 0);
 }
 
-std::uint8_t OccupancyMap::ObservedState(float log_odds) const {
-  return log_odds > options_.occupied_threshold_log_odds ? kOccupied : kFree;
+float OccupancyMap::log_odds(int ix, int iy, int iz) const {
+  const std::int16_t fixed = cells_[geometry_.Index(ix, iy, iz)].log_odds;
+  return fixed == kUnknownLogOdds ? 0.0f : static_cast<float>(fixed) / 1000.0f;
 }
 
-void OccupancyMap::Update(std::int64_t i, float delta, std::vector<VoxelChange>* changes,
-                          const Eigen::Vector3i& voxel, int* num_changes) {
-  // L <- clamp(L + delta, L_min, L_max): the clamped log-odds update (OctoMap's).
-  float& log_odds = log_odds_[i];
-  log_odds = std::clamp(log_odds + delta, options_.log_odds_min, options_.log_odds_max);
-  const std::uint8_t state = ObservedState(log_odds);
-  if (state == states_[i]) return;
-  states_[i] = state;
+std::uint8_t OccupancyMap::StateOf(int log_odds) const {
+  if (log_odds == kUnknownLogOdds) return kUnknown;
+  return log_odds > threshold_ ? kOccupied : kFree;
+}
+
+void OccupancyMap::Set(std::int64_t i, int log_odds, const Eigen::Vector3i& voxel,
+                       std::vector<VoxelChange>* changes, int* num_changes) {
+  Cell& cell = cells_[i];
+  const std::uint8_t before = StateOf(cell.log_odds);
+  cell.log_odds = static_cast<std::int16_t>(log_odds);
+  const std::uint8_t after = StateOf(log_odds);
+  if (after == before) return;
+  states_[i] = after;
   ++*num_changes;
-  if (changes != nullptr) changes->push_back({voxel, static_cast<VoxelState>(state)});
+  if (changes != nullptr) changes->push_back({voxel, static_cast<VoxelState>(after)});
+}
+
+void OccupancyMap::Update(std::int64_t i, int delta, const Eigen::Vector3i& voxel,
+                          std::vector<VoxelChange>* changes, int* num_changes) {
+  const int log_odds = cells_[i].log_odds == kUnknownLogOdds ? 0 : cells_[i].log_odds;
+  // L <- clamp(L + delta, L_min, L_max): the clamped log-odds update (OctoMap's), unknown
+  // voxels starting from L = 0 (p = 0.5).
+  Set(i, std::clamp(log_odds + delta, min_, max_), voxel, changes, num_changes);
 }
 
 void OccupancyMap::NextGeneration() {
   // Two marks per scan (hit, missed); before the counter would pass 0xFFFF, start again from
-  // a cleared array so that no stale mark equals a new one.
+  // cleared marks so that no stale mark equals a new one.
   if (hit_mark_ > 0xFFFF - 3) {
-    std::fill(marks_.begin(), marks_.end(), std::uint16_t{0});
+    for (Cell& cell : cells_) cell.mark = 0;
     hit_mark_ = 0;
   }
   hit_mark_ += 2;
@@ -120,10 +147,10 @@ void OccupancyMap::InsertHits(const Eigen::Vector3d& p_WS, std::span<const Eigen
     }
     const Eigen::Vector3i voxel = geometry_.CellOf(p_WP_d);
     const std::int64_t i = geometry_.Index(voxel.x(), voxel.y(), voxel.z());
-    if (marks_[i] == hit_mark_) continue;  // already hit in this scan
-    marks_[i] = hit_mark_;
+    if (cells_[i].mark == hit_mark_) continue;  // already hit in this scan
+    cells_[i].mark = hit_mark_;
     ++summary->num_voxels_hit;
-    Update(i, options_.log_odds_hit, changes, voxel, &summary->num_changes);
+    Update(i, hit_, voxel, changes, &summary->num_changes);
   }
 }
 
@@ -137,10 +164,10 @@ void OccupancyMap::InsertMisses(const Eigen::Vector3d& p_WS,
     ++steps;
     // Marks below hit_mark_ are from earlier scans; hit_mark_ (hit) and miss_mark (already
     // missed) are this scan's: each voxel is updated once per scan and a hit wins.
-    if (marks_[i] >= hit_mark_) return;
-    marks_[i] = miss_mark;
+    if (cells_[i].mark >= hit_mark_) return;
+    cells_[i].mark = miss_mark;
     ++summary->num_voxels_missed;
-    Update(i, options_.log_odds_miss, changes, voxel, &summary->num_changes);
+    Update(i, miss_, voxel, changes, &summary->num_changes);
   };
   for (const Eigen::Vector3f& point : p_WP) {
     if (!IsFinite(point)) continue;
@@ -163,13 +190,10 @@ void OccupancyMap::SetVoxel(const Eigen::Vector3i& voxel, float log_odds,
     throw std::invalid_argument("OccupancyMap::SetVoxel: log_odds is NaN");
   }
   const std::int64_t i = geometry_.Index(voxel.x(), voxel.y(), voxel.z());
-  // Setting L to the clamped prior is an update by (clamped prior - L).
-  const float target = std::clamp(log_odds, options_.log_odds_min, options_.log_odds_max);
-  log_odds_[i] = target;
-  const std::uint8_t state = ObservedState(target);
-  if (state == states_[i]) return;
-  states_[i] = state;
-  if (changes != nullptr) changes->push_back({voxel, static_cast<VoxelState>(state)});
+  int num_changes = 0;
+  // The prior, clamped (an infinite prior is a certain one) and in fixed point.
+  const int fixed = ToFixed(std::clamp(log_odds, -30.0f, 30.0f));
+  Set(i, std::clamp(fixed, min_, max_), voxel, changes, &num_changes);
 }
 
 void OccupancyMap::Reset(std::vector<VoxelChange>* changes) {
@@ -178,11 +202,11 @@ void OccupancyMap::Reset(std::vector<VoxelChange>* changes) {
   for (int iz = 0; iz < n.z(); ++iz)
     for (int iy = 0; iy < n.y(); ++iy)
       for (int ix = 0; ix < n.x(); ++ix, ++i) {
+        cells_[i].log_odds = kUnknownLogOdds;
         if (states_[i] == kUnknown) continue;
         states_[i] = kUnknown;
         if (changes != nullptr) changes->push_back({{ix, iy, iz}, VoxelState::kUnknown});
       }
-  std::fill(log_odds_.begin(), log_odds_.end(), 0.0f);
 }
 
 VoxelStateCounts OccupancyMap::CountStates() const {
