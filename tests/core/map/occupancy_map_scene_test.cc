@@ -75,7 +75,7 @@ TEST_F(OccupancyMapSceneTest, VoxelsWithReturnsAreOccupied) {
     ++hit;
     occupied += map_->state(v.x(), v.y(), v.z()) == VoxelState::kOccupied;
   }
-  ASSERT_GT(hit, 5000);
+  ASSERT_GT(hit, 2000);
   // A voxel grazed by many rays of earlier scans from elsewhere (the 5 cm voxel reaches past
   // the surface) may hold a return and still be free after a single hit: few do.
   EXPECT_GT(static_cast<double>(occupied) / hit, 0.97) << occupied << " of " << hit;
@@ -101,6 +101,7 @@ TEST_F(OccupancyMapSceneTest, VoxelsAlongRaysFarFromBoxesAreFree) {
     }
   }
   EXPECT_GT(checked, 20000);
+  std::cout << "voxels far from boxes checked along rays: " << checked << "\n";
 }
 
 TEST_F(OccupancyMapSceneTest, OccupiedVoxelsLieOnBoxSurfaces) {

@@ -85,7 +85,7 @@ TEST(VoxelBoxesTest, WorldBoxesRasteriseBackToTheSameVoxels) {
   EXPECT_LT(static_cast<std::int64_t>(boxes.size()), grid.CountOccupied() / 4);
 }
 
-TEST(VoxelBoxesTest, AScannedRoomNeedsFarFewerBoxesThanVoxels) {
+TEST(VoxelBoxesTest, AScannedRoomNeedsFewerBoxesThanVoxels) {
   const testing::ScannedRoom room = testing::ScanRoom(SceneKind::kTables, 2, 4, 0.02);
   OccupancyMapOptions options;
   options.bounds_W_m = room.scene.bounds_W_m;
@@ -101,14 +101,30 @@ TEST(VoxelBoxesTest, AScannedRoomNeedsFarFewerBoxesThanVoxels) {
   ASSERT_EQ(boxes.size(), voxel_boxes.size());
   const std::int64_t occupied = map.CountStates().occupied;
   ASSERT_GT(occupied, 10000);
-  std::cout << "occupied voxels " << occupied << " -> boxes " << boxes.size() << "\n";
-  EXPECT_LT(static_cast<std::int64_t>(boxes.size()), occupied / 3);
+  std::cout << "scanned room: occupied voxels " << occupied << " -> boxes " << boxes.size()
+            << "\n";
+  // Surfaces sensed with 2 cm noise are ragged shells 1-2 voxels thick: about two voxels a
+  // box (11,907 boxes for 20,281 voxels here; a greedy box growing along x, y, z in turn gave
+  // 11,203, no better).
+  EXPECT_LT(static_cast<std::int64_t>(boxes.size()), occupied * 2 / 3);
   // A box and its voxels: the world box spans them exactly.
   const OrientedBox& b = boxes.front();
   const CellBox& v = voxel_boxes.front();
   EXPECT_NEAR(b.size_m.x(), g.resolution_m * (v.end.x() - v.begin.x()), 1e-9);
   EXPECT_NEAR(b.center_W_m.z(), g.origin_W_m.z() + 0.5 * g.resolution_m * (v.begin.z() + v.end.z()),
               1e-9);
+}
+
+TEST(VoxelBoxesTest, ARasterisedRoomNeedsFarFewerBoxesThanVoxels) {
+  const Scene scene = GenerateBenchmarkScene(SceneKind::kTables, 2).scene;
+  OccupancyGrid3 grid(GridGeometry3::FromBounds(scene.bounds_W_m, 0.05));
+  for (const OrientedBox& box : scene.boxes) grid.AddBox(box);
+  const std::vector<CellBox> boxes =
+      MergeVoxelsIntoBoxes(grid.geometry().dims, grid.cells(), 1);
+  ExpectExactDisjointCover(grid.geometry().dims, grid.cells(), 1, boxes);
+  std::cout << "rasterised room: " << scene.boxes.size() << " boxes, occupied voxels "
+            << grid.CountOccupied() << " -> boxes " << boxes.size() << "\n";
+  EXPECT_LT(static_cast<std::int64_t>(boxes.size()), grid.CountOccupied() / 20);
 }
 
 }  // namespace
