@@ -17,15 +17,9 @@
 #include "core/map/signed_distance_field2.h"
 #include "core/map/signed_distance_field3.h"
 #include "core/map/signed_distance_window.h"
+#include "core/map/voxel_state.h"
 
 namespace topay {
-
-/// What the map knows of one voxel (one byte each).
-enum class VoxelState : std::uint8_t {
-  kFree = 0,      ///< Seen free (a ray passed through it).
-  kOccupied = 1,  ///< Seen occupied (a return in it).
-  kUnknown = 2,   ///< Never observed (or forgotten).
-};
 
 /// How the planner's fields count voxels never observed (VoxelState::kUnknown).
 enum class UnknownVoxelPolicy {
@@ -39,12 +33,6 @@ enum class UnknownVoxelPolicy {
   /// As occupied in the 2D base field's bands only, free for the 3D arm field: the base never
   /// drives into unseen space, the arm may reach through it (it moves slowly over seen floor).
   kOccupiedInBaseBands,
-};
-
-/// One voxel's new state, by index (ix, iy, iz) into VoxelMapFields::geometry().
-struct VoxelChange {
-  Eigen::Vector3i voxel = Eigen::Vector3i::Zero();
-  VoxelState state = VoxelState::kOccupied;
 };
 
 /// The map volume, the fields built over it and how unknown voxels count.
