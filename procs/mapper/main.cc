@@ -8,6 +8,7 @@
 #include <CLI/CLI.hpp>
 #include <spdlog/spdlog.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <cstdlib>
 #include <memory>
@@ -121,7 +122,10 @@ int main(int argc, char** argv) {
       if (octomap) {
         octomap->SaveWhenIdle(options.save_path);
       } else {
-        WriteOcTreeFile(*OcTreeFromDenseStates(mapper->map().states(), g, MirrorOptionsOf(options)), options.save_path);
+        const std::span<const std::uint8_t> bytes = mapper->map().states();
+        std::vector<VoxelState> states(bytes.size());
+        std::transform(bytes.begin(), bytes.end(), states.begin(), [](std::uint8_t b) { return static_cast<VoxelState>(b); });
+        WriteOcTreeFile(*OcTreeFromDenseStates(states, g, MirrorOptionsOf(options)), options.save_path);
       }
       spdlog::info("saved the OctoMap to {}", options.save_path);
     } catch (const std::exception& e) {

@@ -12,6 +12,8 @@ namespace {
 constexpr double kHealthPeriodS = 1.0;
 // Scans stopped: no cloud for this long (s) turns the health to WARN.
 constexpr double kStaleScansS = 1.0;
+// A rejected cloud or a scan without a robot state keeps the health at WARN this long (s).
+constexpr double kWarnHoldS = 10.0;
 
 double MsSince(std::chrono::steady_clock::time_point start) {
   return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
@@ -26,7 +28,7 @@ MapperNode::MapperNode(procs::ProcessLoop* loop, ScanMapper* mapper, OctomapWork
       octomap_(octomap),
       options_(options),
       history_(options.robot_state),
-      schedule_(options.publish.snapshot_period_s) {
+      schedule_({.snapshot_period_s = options.publish.snapshot_period_s}) {
   loop_->Subscribe<point_cloud_t>(std::string(channels::POINT_CLOUD),
                                   [this](const point_cloud_t& m) { OnCloud(m); });
   loop_->Subscribe<robot_state_t>(std::string(channels::ROBOT_STATE),
@@ -75,15 +77,16 @@ void MapperNode::OnCloud(const point_cloud_t& msg) {
 void MapperNode::Publish(std::int64_t utime, bool force_snapshot) {
   const auto start = std::chrono::steady_clock::now();
   const double now_s = NowS();
-  const bool full = force_snapshot || schedule_.SnapshotDue(now_s);
+  if (force_snapshot) schedule_.RequestSnapshot();
+  const msgs::MapPublishStep step = schedule_.Next(now_s);
+  const bool full = step.is_full;
   const OccupancyMap& map = mapper_->map();
   const map_update_t msg =
-      full ? msgs::EncodeFullMap(map.geometry(), map.states(), utime, ++map_seq_, options_.publish.codec)
-           : msgs::EncodeMapDelta(map.geometry(), pending_, utime, ++map_seq_, options_.publish.codec);
+      full ? msgs::EncodeFullMap(map.geometry(), map.states(), utime, step.map_seq, options_.publish.codec)
+           : msgs::EncodeMapDelta(map.geometry(), pending_, utime, step.map_seq, options_.publish.codec);
   const double encode_ms = MsSince(start);
   pending_.clear();
   loop_->lcm().publish(std::string(channels::MAP_UPDATE), &msg);
-  schedule_.Published(full, now_s);
   last_publish_s_ = now_s;
   ++stats_.updates;
   const double bytes = static_cast<double>(msg.getEncodedSize());
@@ -98,12 +101,18 @@ void MapperNode::Publish(std::int64_t utime, bool force_snapshot) {
 }
 
 void MapperNode::OnHealthTimer() {
-  const bool rejecting = stats_.clouds_rejected > rejected_at_last_health_;
-  const bool no_state = stats_.scans_without_state > without_state_at_last_health_;
-  const bool stale = stats_.clouds == clouds_at_last_health_ && NowS() > kStaleScansS;
+  const double now_s = NowS();
+  if (stats_.clouds_rejected > rejected_at_last_health_) last_rejection_s_ = now_s;
+  if (stats_.scans_without_state > without_state_at_last_health_) last_without_state_s_ = now_s;
+  if (stats_.clouds > clouds_at_last_health_) last_cloud_s_ = now_s;
   rejected_at_last_health_ = stats_.clouds_rejected;
   without_state_at_last_health_ = stats_.scans_without_state;
   clouds_at_last_health_ = stats_.clouds;
+  // A problem keeps the health at WARN for kWarnHoldS after it was last seen, so that a
+  // supervisor polling the heartbeat does not miss it.
+  const bool rejecting = now_s - last_rejection_s_ < kWarnHoldS;
+  const bool no_state = now_s - last_without_state_s_ < kWarnHoldS;
+  const bool stale = now_s - last_cloud_s_ > kStaleScansS;
   std::string status = stats_.StatusLine(mapper_->map().CountStates());
   if (rejecting) status += "; rejecting clouds: " + stats_.last_error;
   if (no_state) status += "; no ROBOT_STATE at scan time: own points not removed";

@@ -52,11 +52,11 @@ class MapperNode {
   msgs::MapPublishSchedule schedule_;
   CheckedCloud cloud_;
   std::vector<VoxelChange> pending_;
-  std::int64_t map_seq_ = 0;
   std::int64_t last_data_utime_ = 0;
   std::int64_t scans_ = 0;
   std::int64_t rejected_at_last_health_ = 0, without_state_at_last_health_ = 0;
   std::int64_t clouds_at_last_health_ = 0;
+  double last_rejection_s_ = -1e9, last_without_state_s_ = -1e9, last_cloud_s_ = 0.0;
   std::chrono::steady_clock::time_point start_ = std::chrono::steady_clock::now();
   double last_publish_s_ = -1e9;
   MapperStats stats_;

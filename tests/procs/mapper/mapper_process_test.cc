@@ -28,12 +28,14 @@ constexpr const char* kLcmUrl = "udpm://239.255.76.67:7667?ttl=0&recv_buf_size=8
 std::string Bin(const std::string& name) { return BinDir() + "/" + name; }
 std::string ConfigFile(const std::string& rel) { return std::string(TOPAY_SOURCE_DIR) + "/config/" + rel; }
 
-// The test room: the robot at the origin facing +x; a wall ahead, a crate on the left, a pillar
-// behind (ids 0, 1, 2 in file order).
+// The test room: the robot at the origin facing +x; a wall ahead, a crate on the left with a
+// wall behind it (rays through the crate's place return from there once it is gone: free space
+// is only known along rays that return), a pillar behind (ids 0 .. 3 in file order).
 constexpr const char* kRoom = R"({"boxes": [
   {"center": [3.0, 0.0, 0.6], "size": [0.4, 3.0, 1.2], "yaw": 0},
   {"center": [0.0, 2.5, 0.4], "size": [1.0, 1.0, 0.8], "yaw": 0},
-  {"center": [-2.5, 0.0, 0.75], "size": [0.6, 0.6, 1.5], "yaw": 0}]})";
+  {"center": [-2.5, 0.0, 0.75], "size": [0.6, 0.6, 1.5], "yaw": 0},
+  {"center": [0.0, 4.2, 0.8], "size": [4.0, 0.4, 1.6], "yaw": 0}]})";
 
 struct MapListener {
   msgs::MapReceiver receiver;
@@ -149,9 +151,12 @@ TEST_F(MapperProcess, MapsTheBoxesInViewAndTheFreeSpaceButNeverTheRobot) {
   // pillar at x = -2.2.
   EXPECT_GE(map_.FaceXOccupied(2.8, -1.4, 1.4, 0.05, 1.15), 0.95);
   EXPECT_GE(map_.FaceYOccupied(2.0, -0.45, 0.45, 0.05, 0.75), 0.95);
-  EXPECT_GE(map_.FaceXOccupied(-2.2, -0.25, 0.25, 0.05, 1.45), 0.95);
-  // Between the robot and the wall: seen free, nothing occupied.
-  EXPECT_GE(map_.Fraction({1.0, -1.0, 0.3}, {2.6, 1.0, 1.0}, VoxelState::kFree), 0.95);
+  // (The pillar behind: the robot's base top and its stowed arm hide its lower part from the
+  // sensor.)
+  EXPECT_GE(map_.FaceXOccupied(-2.2, -0.25, 0.25, 0.85, 1.45), 0.95);
+  // Between the robot and the wall, below the rays to the wall's top edge (rays above it return
+  // nothing and clear nothing): seen free. Nothing occupied anywhere in front of the wall.
+  EXPECT_GE(map_.Fraction({1.5, -1.0, 0.3}, {2.6, 1.0, 0.65}, VoxelState::kFree), 0.9);
   EXPECT_EQ(map_.Fraction({1.0, -1.0, 0.05}, {2.6, 1.0, 1.55}, VoxelState::kOccupied), 0.0);
   // The robot itself (base and arm, which the LiDAR sees): never in the map.
   EXPECT_EQ(map_.Fraction({-0.6, -0.6, 0.0}, {0.9, 0.6, 1.55}, VoxelState::kOccupied), 0.0);
@@ -197,10 +202,12 @@ TEST_F(MapperProcess, ARemovedBoxIsClearedAndAnAddedOneAppears) {
   ASSERT_TRUE(map_.receiver.has_map());
   ASSERT_GE(map_.FaceYOccupied(2.0, -0.45, 0.45, 0.05, 0.75), 0.95);
   // The crate goes; a new box appears at (1.5, -1.5).
-  SendEvent(sim_event_t::DISAPPEAR, 1, {}, {});
+  SendEvent(sim_event_t::DISAPPEAR, 1, Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero());
   SendEvent(sim_event_t::APPEAR, 7, {1.5, -1.75, 0.5}, {0.5, 0.5, 1.0});
   watcher_->Spin(3.0);
-  EXPECT_LE(map_.FaceYOccupied(2.0, -0.45, 0.45, 0.05, 0.75), 0.05);
+  // Cleared where rays now return from the wall behind (above 0.15 m: lower rays to the wall
+  // meet the floor first, which returns nothing in this simulation).
+  EXPECT_LE(map_.FaceYOccupied(2.0, -0.45, 0.45, 0.15, 0.75), 0.05);
   EXPECT_GE(map_.FaceYOccupied(-1.5, 1.3, 1.7, 0.05, 0.95), 0.95);
 }
 
@@ -231,7 +238,7 @@ TEST_F(MapperProcess, BadCloudsAreCountedAndSkipped) {
   const std::string out = ReadText(dir_ + "/mapper.txt");
   EXPECT_NE(out.find("3 clouds (2 rejected, 1 NaN points dropped"), std::string::npos) << out;
   EXPECT_NE(out.find("p_WS"), std::string::npos) << out;         // the NaN pose's field named
-  EXPECT_NE(out.find("num_coords"), std::string::npos) << out;   // the huge cloud's
+  EXPECT_NE(out.find("max_points"), std::string::npos) << out;   // the huge cloud's
 }
 
 TEST(MapperProcessErrors, ExitCodesForBadFilesAndFlags) {
