@@ -5,8 +5,9 @@
 //    inside the boxes and beyond, 0.5 % of the seen voxels left unknown at random);
 //  - deltas of 500, 5,000 and 50,000 changes clustered as a scan's: rays from the sensor to
 //    box surfaces, the hit voxel occupied and the 4 voxels before it free.
-// Each message is timed on its own (wall clock); counters: median and p95 (nearest rank) in
-// ms, and the message's LCM size in bytes. Encode and decode are timed separately; decode
+// Each message is timed on its own (wall clock, and thread CPU time: *_cpu_ms, less disturbed
+// on a shared machine); counters: median and p95 (nearest rank) in ms, and the message's LCM
+// size in bytes. Encode and decode are timed separately; decode
 // includes every check. Run (Release build):
 //   build/bin/map_codec_bench
 // Arguments: zlib level (0: COMPRESSION_NONE), then the change count for deltas.
@@ -24,6 +25,12 @@
 
 namespace topay::msgs {
 namespace {
+
+double ThreadCpuSeconds() {
+  timespec t{};
+  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
+  return t.tv_sec + 1e-9 * t.tv_nsec;
+}
 
 double WallSeconds() {
   timespec t{};
@@ -144,20 +151,24 @@ void BM_FullSnapshot(benchmark::State& state) {
       state.range(1) != 0 ? MappedRoom(g, boxes)
                           : std::vector<std::uint8_t>(g.NumCells(), 2);
   const MapCodecOptions options = OptionsOf(static_cast<int>(state.range(0)));
-  std::vector<double> encode, decode;
+  std::vector<double> encode, decode, encode_cpu, decode_cpu;
   map_update_t msg;
   for (auto _ : state) {
-    double t = WallSeconds();
+    double t = WallSeconds(), c = ThreadCpuSeconds();
     msg = EncodeFullMap(g, states, 0, 1, options);
+    encode_cpu.push_back(ThreadCpuSeconds() - c);
     encode.push_back(WallSeconds() - t);
     std::string error;
-    t = WallSeconds();
+    t = WallSeconds(), c = ThreadCpuSeconds();
     const auto map = DecodeFullMap(msg, options, &error);
+    decode_cpu.push_back(ThreadCpuSeconds() - c);
     decode.push_back(WallSeconds() - t);
     if (!map || map->states != states) state.SkipWithError("round trip failed");
   }
   ReportPercentiles(state, encode, "encode_ms");
   ReportPercentiles(state, decode, "decode_ms");
+  ReportPercentiles(state, encode_cpu, "encode_cpu_ms");
+  ReportPercentiles(state, decode_cpu, "decode_cpu_ms");
   state.counters["bus_bytes"] = msg.getEncodedSize();
   state.counters["raw_bytes"] = msg.payload_raw_bytes;
 }
@@ -173,7 +184,7 @@ void BM_ScanDelta(benchmark::State& state) {
   const std::vector<VoxelBox> boxes = TableBoxes(g, &rng);
   const MapCodecOptions options = OptionsOf(static_cast<int>(state.range(0)));
   const int n = static_cast<int>(state.range(1));
-  std::vector<double> encode, decode;
+  std::vector<double> encode, decode, encode_cpu, decode_cpu;
   double bytes = 0.0;
   std::uint64_t seed = 100;
   std::vector<std::vector<VoxelChange>> scans;
@@ -181,18 +192,22 @@ void BM_ScanDelta(benchmark::State& state) {
   std::size_t next = 0;
   for (auto _ : state) {
     const std::vector<VoxelChange>& changes = scans[next++ % scans.size()];
-    double t = WallSeconds();
+    double t = WallSeconds(), c = ThreadCpuSeconds();
     const map_update_t msg = EncodeMapDelta(g, changes, 0, 2, options);
+    encode_cpu.push_back(ThreadCpuSeconds() - c);
     encode.push_back(WallSeconds() - t);
     std::string error;
-    t = WallSeconds();
+    t = WallSeconds(), c = ThreadCpuSeconds();
     const auto delta = DecodeMapDelta(msg, options, &error);
+    decode_cpu.push_back(ThreadCpuSeconds() - c);
     decode.push_back(WallSeconds() - t);
     if (!delta) state.SkipWithError(error.c_str());
     bytes += msg.getEncodedSize();
   }
   ReportPercentiles(state, encode, "encode_ms");
   ReportPercentiles(state, decode, "decode_ms");
+  ReportPercentiles(state, encode_cpu, "encode_cpu_ms");
+  ReportPercentiles(state, decode_cpu, "decode_cpu_ms");
   state.counters["bus_bytes"] = bytes / static_cast<double>(encode.size());
 }
 BENCHMARK(BM_ScanDelta)
