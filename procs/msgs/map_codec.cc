@@ -125,12 +125,28 @@ struct IndexedChange {
   std::uint8_t state;
 };
 
+// Sorts by index, keeping the list order among equal indices (least significant digit radix
+// sort, 12 bits per pass: two passes for grids below 2^24 voxels).
+void StableSortByIndex(std::vector<IndexedChange>* changes) {
+  constexpr int kBits = 12;
+  constexpr std::uint32_t kMask = (1u << kBits) - 1;
+  std::uint32_t max_index = 0;
+  for (const IndexedChange& c : *changes) max_index = std::max<std::uint32_t>(max_index, c.index);
+  std::vector<IndexedChange> sorted(changes->size());
+  std::vector<std::uint32_t> start(kMask + 2);
+  for (int shift = 0; shift < 32 && (max_index >> shift) != 0; shift += kBits) {
+    std::fill(start.begin(), start.end(), 0u);
+    for (const IndexedChange& c : *changes) ++start[((c.index >> shift) & kMask) + 1];
+    for (std::size_t d = 1; d < start.size(); ++d) start[d] += start[d - 1];
+    for (const IndexedChange& c : *changes) sorted[start[(c.index >> shift) & kMask]++] = c;
+    changes->swap(sorted);
+  }
+}
+
 // Each voxel of `changes` once, with its last state, by increasing index.
 std::vector<IndexedChange> SortedUniqueChanges(const GridGeometry3& geometry,
                                                std::span<const VoxelChange> changes) {
-  // Key: index in the high 32 bits, list position in the low ones, so that sorting groups a
-  // voxel's changes in list order and the last of each group wins.
-  std::vector<std::uint64_t> keys(changes.size());
+  std::vector<IndexedChange> indexed(changes.size());
   for (std::size_t k = 0; k < changes.size(); ++k) {
     const VoxelChange& change = changes[k];
     const Eigen::Vector3i& v = change.voxel;
@@ -139,18 +155,18 @@ std::vector<IndexedChange> SortedUniqueChanges(const GridGeometry3& geometry,
       throw std::invalid_argument("EncodeMapDelta: changes[" + std::to_string(k) +
                                   "] is outside the grid or not a VoxelState");
     }
-    keys[k] = (static_cast<std::uint64_t>(geometry.Index(v.x(), v.y(), v.z())) << 32) | k;
+    indexed[k] = {static_cast<std::int32_t>(geometry.Index(v.x(), v.y(), v.z())),
+                  static_cast<std::uint8_t>(change.state)};
   }
-  std::sort(keys.begin(), keys.end());
-  std::vector<IndexedChange> unique;
-  unique.reserve(keys.size());
-  for (std::size_t j = 0; j < keys.size(); ++j) {
-    const std::uint64_t index = keys[j] >> 32;
-    if (j + 1 < keys.size() && (keys[j + 1] >> 32) == index) continue;
-    const auto state = static_cast<std::uint8_t>(changes[keys[j] & 0xffffffffu].state);
-    unique.push_back({static_cast<std::int32_t>(index), state});
+  StableSortByIndex(&indexed);
+  // The last of each run of equal indices wins.
+  std::size_t kept = 0;
+  for (std::size_t j = 0; j < indexed.size(); ++j) {
+    if (j + 1 < indexed.size() && indexed[j + 1].index == indexed[j].index) continue;
+    indexed[kept++] = indexed[j];
   }
-  return unique;
+  indexed.resize(kept);
+  return indexed;
 }
 
 std::vector<std::uint8_t> GapVarints(std::span<const IndexedChange> changes) {

@@ -22,8 +22,9 @@ struct MapCodecOptions {
   /// values, one byte per voxel plus four per delta index).
   bool compress = true;
   /// Encoding: the zlib level, 0 (stored) to 9 (smallest). 1 (default): the varint stream is
-  /// already run-length or gap coded, so higher levels save few bytes for several times the
-  /// time (tests/bench/map_codec_bench.cc).
+  /// already run-length or gap coded, so higher levels save few bytes for much more time
+  /// (tests/bench/map_codec_bench.cc, a mapped 400 x 400 x 32 room: level 6 makes the
+  /// snapshot 16 % smaller, 53 kB instead of 64 kB, and its encoding 2.5 x slower).
   int zlib_level = 1;
   /// Decoding: the largest grid accepted, in voxels. 2^26 (default, 67 M voxels: 13 x the
   /// 20 x 20 x 1.6 m planning volume at 0.05 m) bounds what a hostile or corrupted message can

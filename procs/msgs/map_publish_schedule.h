@@ -9,9 +9,9 @@ namespace topay::msgs {
 struct MapPublishScheduleOptions {
   /// A full snapshot at least this often, seconds (finite, > 0). 5 s (default): a subscriber
   /// that joins late or misses a delta has the map again within 5 s, while snapshots, the
-  /// costlier messages (a 400 x 400 x 32 map: tens of kB and several ms to encode against
-  /// about 1 kB and well under 1 ms for a scan's delta, tests/bench/map_codec_bench.cc), stay
-  /// a few percent of the updates at 10 Hz.
+  /// costlier messages (a mapped 400 x 400 x 32 room: about 64 kB and 5 to 10 ms to encode,
+  /// against about 5 kB and under 1 ms for a scan's delta of 5,000 changes,
+  /// tests/bench/map_codec_bench.cc), stay 2 % of the updates at 10 Hz.
   double snapshot_period_s = 5.0;
   /// map_seq of the first update; each update increments it by 1.
   std::int64_t first_map_seq = 1;
