@@ -36,8 +36,10 @@ struct ScanFilterOptions {
   /// The robot's own body (base cylinder and arm spheres at the scan's state) is inflated by
   /// this much (m) before its points are removed. 0.08 m = 4 sigma of the Mid-360's 2 cm range
   /// noise: the noise moves a point along its ray, so a point on the body ends up at most
-  /// |noise| from it, and the chance that one escapes is 3e-5 per body point (a few hundred
-  /// per scan); the collision spheres already cover the links' surfaces. It does not cover
+  /// |noise| from it, and the chance that one escapes is below 3e-5 per body point (up to
+  /// ~2,000 per scan with the arm in view); the collision spheres already cover the links'
+  /// surfaces. Measured on 12 simulated scans (22,755 body points, tests/procs/mapper/
+  /// scan_filter_test.cc): none escapes at 0.08 m, 35 at 0.05 m, half of them at 0. It does not cover
   /// the arm's motion during a scan (~0.1 s; a real sensor's points are not all taken at the
   /// pose of the state given). Real obstacles within the margin of the body are removed too:
   /// they are in contact range, which the planner's clearance keeps it out of anyway.
