@@ -39,10 +39,10 @@ struct ScanFilterOptions {
   /// |noise| from it, and the chance that one escapes is below 3e-5 per body point (up to
   /// ~2,000 per scan with the arm in view); the collision spheres already cover the links'
   /// surfaces. Measured on 12 simulated scans (22,755 body points, tests/procs/mapper/
-  /// scan_filter_test.cc): none escapes at 0.08 m, 35 at 0.05 m, half of them at 0. It does not cover
-  /// the arm's motion during a scan (~0.1 s; a real sensor's points are not all taken at the
-  /// pose of the state given). Real obstacles within the margin of the body are removed too:
-  /// they are in contact range, which the planner's clearance keeps it out of anyway.
+  /// scan_filter_test.cc): none escapes at 0.08 m, 35 at 0.05 m, half of them at 0.
+  /// It does not cover the arm's motion during a scan (~0.1 s; a real sensor's points are
+  /// not all taken at the pose of the state given). Real obstacles within the margin of the
+  /// body are removed too: they are in contact range, which the planner keeps out of anyway.
   double self_margin_m = 0.08;
   /// Voxel-grid leaf (m): one point (the centroid) per occupied leaf. The map resolution,
   /// 0.05 m: finer points mark no more voxels. 0 turns the stage off.
@@ -77,8 +77,9 @@ ScanFilterOptions LoadScanFilterOptions(const YAML::Node& node, const std::strin
 /// Throws ConfigError (naming options.source and the key) unless: 0 <= range_min_m <
 /// range_max_m; ground_max_z_m finite; self_margin_m >= 0; voxel_leaf_m 0 or large enough that
 /// a cube of side 2 range_max_m has fewer than 2^31 leaves (PCL's VoxelGrid indexes leaves
-/// with 32-bit integers and skips the stage otherwise: >= 0.032 m at range_max_m = 20 m); outlier radius > 0, min neighbours >= 1,
-/// mean_k >= 1, stddev_mul > 0; input.max_points >= 1; input tolerance in (0, 1).
+/// with 32-bit integers and skips the stage otherwise: >= 0.032 m at range_max_m = 20 m);
+/// outlier radius > 0, min neighbours >= 1, mean_k >= 1, stddev_mul > 0;
+/// input.max_points >= 1; input tolerance in (0, 1).
 void CheckScanFilterOptions(const ScanFilterOptions& options);
 
 }  // namespace topay::mapper

@@ -54,7 +54,8 @@ std::vector<WholeBodyState> ClearStates(const Kinematics& kinematics, const Scen
     state.yaw_rad = rng.Uniform(-3.14159, 3.14159);
     state.q_rad.resize(model.num_joints());
     for (int i = 0; i < model.num_joints(); ++i) {
-      state.q_rad(i) = rng.Uniform(model.joint_limits.q_min_rad(i), model.joint_limits.q_max_rad(i));
+      const JointLimits& limits = model.joint_limits;
+      state.q_rad(i) = rng.Uniform(limits.q_min_rad(i), limits.q_max_rad(i));
     }
     if (checker.BaseClearance({state.x_m, state.y_m}, 1.0) > 0.05 &&
         checker.Compute(state).obstacle_m() > 0.05) {
