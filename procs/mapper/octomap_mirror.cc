@@ -17,11 +17,11 @@ void Require(bool ok, const std::string& field, const std::string& what) {
 
 bool InOpenUnit(double p) { return std::isfinite(p) && p > 0.0 && p < 1.0; }
 
-octomap::point3d ToPoint(const Eigen::Vector3d& p) {
+}  // namespace
+
+octomap::point3d ToOctomapPoint(const Eigen::Vector3d& p) {
   return {static_cast<float>(p.x()), static_cast<float>(p.y()), static_cast<float>(p.z())};
 }
-
-}  // namespace
 
 void CheckOctomapMirrorOptions(const OctomapMirrorOptions& o) {
   Require(std::isfinite(o.resolution_m) && o.resolution_m > 0.0, "resolution_m",
@@ -57,8 +57,9 @@ OctomapMirror::OctomapMirror(const OctomapMirrorOptions& options,
   if (!tree_) tree_ = std::make_unique<octomap::OcTree>(options_.resolution_m);
   ApplySensorModel(options_, tree_.get());
   const Eigen::Vector3d half_voxel = Eigen::Vector3d::Constant(0.5 * options_.resolution_m);
-  if (!tree_->coordToKeyChecked(ToPoint(options_.bounds_W_m.min() + half_voxel), key_min_) ||
-      !tree_->coordToKeyChecked(ToPoint(options_.bounds_W_m.max() - half_voxel), key_max_)) {
+  const Eigen::AlignedBox3d& bounds = options_.bounds_W_m;
+  if (!tree_->coordToKeyChecked(ToOctomapPoint(bounds.min() + half_voxel), key_min_) ||
+      !tree_->coordToKeyChecked(ToOctomapPoint(bounds.max() - half_voxel), key_max_)) {
     throw std::invalid_argument("OctomapMirrorOptions.bounds_W_m: outside the OcTree's range");
   }
 }
@@ -101,7 +102,7 @@ OctomapInsertSummary OctomapMirror::Insert(const Eigen::Vector3d& p_WS,
   summary.num_points = static_cast<int>(p_WP.size());
   free_.clear();
   occupied_.clear();
-  const octomap::point3d origin = ToPoint(p_WS);
+  const octomap::point3d origin = ToOctomapPoint(p_WS);
   const float max_range = static_cast<float>(options_.max_range_m);
   for (const Eigen::Vector3f& p : p_WP) {
     if (!p.allFinite()) continue;

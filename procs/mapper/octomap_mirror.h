@@ -91,6 +91,9 @@ class OctomapMirror {
   octomap::KeySet free_, occupied_;
 };
 
+/// p (m, double) as OctoMap's float point.
+octomap::point3d ToOctomapPoint(const Eigen::Vector3d& p);
+
 /// Reads a .bt file into a tree; throws std::runtime_error naming the path for a missing,
 /// unreadable or malformed file.
 std::unique_ptr<octomap::OcTree> ReadOcTreeFile(const std::string& path);

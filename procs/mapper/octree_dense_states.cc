@@ -34,10 +34,6 @@ void FillLeaf(const GridGeometry3& grid, const octomap::point3d& center, double 
   }
 }
 
-octomap::point3d ToPoint(const Eigen::Vector3d& p) {
-  return {static_cast<float>(p.x()), static_cast<float>(p.y()), static_cast<float>(p.z())};
-}
-
 }  // namespace
 
 std::vector<VoxelState> DenseStatesFromOcTree(const octomap::OcTree& tree,
@@ -47,8 +43,9 @@ std::vector<VoxelState> DenseStatesFromOcTree(const octomap::OcTree& tree,
   // Leaves touching the grid's box (its outer voxel centres, so no neighbour key is asked).
   const Eigen::Vector3d inset = Eigen::Vector3d::Constant(0.5 * grid.resolution_m);
   const Eigen::AlignedBox3d bounds = grid.Bounds();
-  for (auto it = tree.begin_leafs_bbx(ToPoint(bounds.min() + inset), ToPoint(bounds.max() - inset));
-       it != tree.end_leafs_bbx(); ++it) {
+  const octomap::point3d min = ToOctomapPoint(bounds.min() + inset);
+  const octomap::point3d max = ToOctomapPoint(bounds.max() - inset);
+  for (auto it = tree.begin_leafs_bbx(min, max); it != tree.end_leafs_bbx(); ++it) {
     const VoxelState state = tree.isNodeOccupied(*it) ? VoxelState::kOccupied : VoxelState::kFree;
     FillLeaf(grid, it.getCoordinate(), it.getSize(), state, &states);
   }
@@ -72,7 +69,7 @@ std::unique_ptr<octomap::OcTree> OcTreeFromDenseStates(std::span<const VoxelStat
       for (int ix = 0; ix < grid.dims.x(); ++ix) {
         const VoxelState state = states[grid.Index(ix, iy, iz)];
         if (state == VoxelState::kUnknown) continue;
-        const octomap::point3d center = ToPoint(grid.CellCenter(ix, iy, iz));
+        const octomap::point3d center = ToOctomapPoint(grid.CellCenter(ix, iy, iz));
         // lazy_eval: inner nodes are updated once, below.
         tree->setNodeValue(center, state == VoxelState::kOccupied ? occupied : free, true);
       }

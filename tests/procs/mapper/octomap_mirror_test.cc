@@ -82,8 +82,8 @@ TEST(OctomapMirrorTest, ReturnsOutsideTheBoundsClearTheirRaysInsideOnly) {
   options.bounds_W_m = Eigen::AlignedBox3d(Eigen::Vector3d(-2, -2, 0), Eigen::Vector3d(2, 2, 1));
   OctomapMirror mirror(options);
   // A return high above the box (z = 3) and one beyond its x side.
-  const OctomapInsertSummary s = mirror.Insert(kOrigin, std::vector<Eigen::Vector3f>{
-                                                            {1.0f, 0.0f, 3.0f}, {5.0f, 0.0f, 0.5f}});
+  const std::vector<Eigen::Vector3f> outside = {{1.0f, 0.0f, 3.0f}, {5.0f, 0.0f, 0.5f}};
+  const OctomapInsertSummary s = mirror.Insert(kOrigin, outside);
   EXPECT_EQ(s.num_returns, 0);
   EXPECT_GT(s.num_free_voxels, 40);
   const octomap::OcTree& tree = mirror.tree();

@@ -76,7 +76,8 @@ TEST(OctreeDenseStatesTest, DenseToTreeToDenseIsTheIdentity) {
 
 TEST(OctreeDenseStatesTest, CoarserTreeLeavesFillEveryVoxelTheyCover) {
   octomap::OcTree tree(0.1);
-  tree.updateNode(octomap::point3d(0.05f, 0.05f, 0.55f), true);  // the leaf [0, 0.1) x .. x [0.5, 0.6)
+  // The leaf [0, 0.1) x [0, 0.1) x [0.5, 0.6): 2 x 2 x 2 voxels of the grid.
+  tree.updateNode(octomap::point3d(0.05f, 0.05f, 0.55f), true);
   const std::vector<VoxelState> states = DenseStatesFromOcTree(tree, SmallGrid());
   const GridGeometry3 grid = SmallGrid();
   int occupied = 0;

@@ -1,6 +1,7 @@
 #include "procs/mapper/scan_filter.h"
 
 #include <cmath>
+#include <cstdio>
 #include <limits>
 #include <set>
 #include <tuple>
@@ -117,8 +118,10 @@ TEST_F(ScanFilterTest, NoPointOfTheRobotSurvivesAndFewOthersAreRemoved) {
   const GeneratedScene room = GenerateBenchmarkScene(SceneKind::kTables, 2);
   scanner.SetWorld(room.scene.boxes);
   const ScanFilterOptions o;  // defaults: margin 0.08 m
+  ScanFilterOptions bare = o;
+  bare.self_margin_m = 0.0;
   Rng rng(21);
-  int self_points = 0, scans_with_arm_in_view = 0;
+  int self_points = 0, scans_with_arm_in_view = 0, escaped_without_margin = 0;
   for (int trial = 0; trial < 12; ++trial) {
     // Random arm states (the arm in front of, beside or behind the sensor), upright, stowed.
     Eigen::VectorXd q;
@@ -126,10 +129,12 @@ TEST_F(ScanFilterTest, NoPointOfTheRobotSurvivesAndFewOthersAreRemoved) {
     if (trial == 1) q = model_.stow_q_rad;
     const WholeBodyState state = testing::ClearState(kinematics_, room.scene, 0.3, &rng, q);
     const sim::LidarScan scan = scanner.Scan(state, 0.1 * trial);
-    const ScanFilterSummary self =
-        Run(o, CloudOf(scan, [](int target) { return target == sim::kTargetSelf; }), state);
+    const CheckedCloud self_cloud =
+        CloudOf(scan, [](int target) { return target == sim::kTargetSelf; });
+    const ScanFilterSummary self = Run(o, self_cloud, state);
     EXPECT_EQ(self.num_output, 0) << "trial " << trial << ": " << self.Report();
     self_points += self.num_input;
+    escaped_without_margin += Run(bare, self_cloud, state).num_after_self;
     if (self.num_input > 100) ++scans_with_arm_in_view;
     const ScanFilterSummary others =
         Run(o, CloudOf(scan, [](int target) { return target != sim::kTargetSelf; }), state);
@@ -138,6 +143,10 @@ TEST_F(ScanFilterTest, NoPointOfTheRobotSurvivesAndFewOthersAreRemoved) {
   }
   EXPECT_GT(self_points, 2000);
   EXPECT_GE(scans_with_arm_in_view, 4);
+  // The margin does the work: the range noise puts about half the body's points outside it.
+  EXPECT_GT(escaped_without_margin, self_points / 4);
+  std::printf("self points %d, of which %d outside the bare body\n", self_points,
+              escaped_without_margin);
 }
 
 TEST_F(ScanFilterTest, WithoutAStateTheSelfFilterIsSkippedWithAWarning) {
