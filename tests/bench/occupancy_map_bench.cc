@@ -6,7 +6,7 @@
 // map). Argument: 0 = every return; 1 = returns first deduplicated by voxel (one point per
 // 0.05 m voxel, a stand-in for the mapper's PCL voxel-grid filter; its time is reported apart
 // as dedupe_ms and not included in the insertion time). Counters: median and p95 (nearest
-// rank) of the insertion's wall and thread CPU time, points and changes per scan.
+// rank) of the insertion's wall and CPU time, points and changes per scan.
 // Run (Release build):
 //   build/bin/occupancy_map_bench
 // Figures: docs/benchmarks.md (issue 17).
@@ -14,7 +14,6 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
-#include <ctime>
 #include <string>
 #include <vector>
 
@@ -26,12 +25,6 @@
 
 namespace topay {
 namespace {
-
-double ThreadCpuS() {
-  timespec t{};
-  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
-  return t.tv_sec + 1e-9 * t.tv_nsec;
-}
 
 // Nearest-rank quantile q of the values (sorted in place).
 double Quantile(std::vector<double>* values, double q) {
@@ -85,9 +78,9 @@ void BM_InsertScan(benchmark::State& state) {
     dedupe_s.push_back(dedupe_watch.ElapsedS());
     const std::vector<Eigen::Vector3f>& p_WP = dedupe ? kept : scan.p_WP;
     changes.clear();
-    const double cpu0 = ThreadCpuS();
+    const CpuStopwatch cpu;  // the process's CPU time: the benchmark runs one thread
     const ScanInsertSummary s = map.InsertScan(scan.p_WS, p_WP, &changes);
-    cpu_s.push_back(ThreadCpuS() - cpu0);
+    cpu_s.push_back(cpu.ElapsedS());
     wall_s.push_back(s.total_s);
     points.push_back(s.num_points);
     steps.push_back(static_cast<double>(s.num_ray_steps));
