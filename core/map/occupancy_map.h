@@ -57,7 +57,7 @@ struct ScanInsertSummary {
   int num_points = 0;               ///< Points given.
   int num_points_used = 0;          ///< Finite points: each casts its ray.
   int num_points_skipped = 0;       ///< Points with a NaN or infinite coordinate, ignored.
-  int num_points_outside = 0;       ///< Used points outside the bounds: no hit, ray clears.
+  int num_points_outside = 0;       ///< Used points in range outside the bounds: no hit.
   int num_points_beyond_range = 0;  ///< Used points farther than max_free_ray_length_m.
   int num_voxels_hit = 0;           ///< Distinct voxels updated with a hit.
   int num_voxels_missed = 0;        ///< Distinct voxels updated with a miss.
