@@ -13,7 +13,7 @@
 // changes per scan.
 // Run (Release build):
 //   build/bin/occupancy_map_bench
-// Figures: docs/benchmarks.md (issue 17).
+// Figures: reported with issue 17 item 2 (not yet in docs/benchmarks.md).
 
 #include <algorithm>
 #include <cmath>
