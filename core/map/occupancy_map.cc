@@ -171,11 +171,13 @@ void OccupancyMap::InsertMisses(const Eigen::Vector3d& p_WS,
   };
   for (const Eigen::Vector3f& point : p_WP) {
     if (!IsFinite(point)) continue;
-    const Eigen::Vector3d d_W = point.cast<double>() - p_WS;
+    const Eigen::Vector3d p_WP_d = point.cast<double>();
+    const Eigen::Vector3d d_W = p_WP_d - p_WS;
     const double range_m = d_W.norm();
-    // A return beyond the clearing distance clears its ray up to that distance only.
-    const Eigen::Vector3d p_WE = range_m > max_range_m ? p_WS + d_W * (max_range_m / range_m)
-                                                       : Eigen::Vector3d(p_WS + d_W);
+    // A return beyond the clearing distance clears its ray up to that distance only; a ray to
+    // a nearer one ends in the return's own voxel (the hit).
+    const Eigen::Vector3d p_WE =
+        range_m > max_range_m ? Eigen::Vector3d(p_WS + d_W * (max_range_m / range_m)) : p_WP_d;
     TraverseVoxelRay(geometry_, p_WS, p_WE, miss);
   }
   summary->num_ray_steps = steps;

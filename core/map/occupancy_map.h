@@ -23,20 +23,21 @@ struct OccupancyMapOptions {
   /// Voxel size (m): 0.05 m, the planner's 3D field (VoxelMapFieldsOptions::resolution_m).
   /// Finite, > 0.
   double resolution_m = 0.05;
-  /// Added to a voxel holding a return: 0.85 = logit(0.7), OctoMap's prob_hit. Finite, > 0.
+  /// Added to a voxel holding a return: 0.85 = logit(0.7), OctoMap's prob_hit. In (0, 30].
   float log_odds_hit = 0.85f;
   /// Added to a voxel a ray passes through: -0.4 = logit(0.4), OctoMap's prob_miss.
-  /// Finite, < 0.
+  /// In [-30, 0).
   float log_odds_miss = -0.4f;
   /// Clamping bounds: -2.0 = logit(0.12) and 3.5 = logit(0.97), OctoMap's clamping
   /// thresholds. They bound how long a voxel remembers: an occupied voxel at the maximum turns
-  /// free after ceil((max - threshold) / -miss) scans that see through it (9 at the defaults), a free one at the minimum turns occupied
-  /// after floor((threshold - min) / hit) + 1 scans with a return in it (3). Finite,
-  /// min < threshold < max.
+  /// free after ceil((max - threshold) / -miss) scans that see through it (9 at the
+  /// defaults), a free one at the minimum turns occupied after floor((threshold - min) / hit)
+  /// + 1 scans with a return in it (3). In [-30, 30], min < threshold < max.
   float log_odds_min = -2.0f;
   float log_odds_max = 3.5f;
   /// An observed voxel is occupied when its log-odds are above this, free otherwise (0: p > 0.5;
   /// no hysteresis: the clamping bounds already keep a voxel from flickering on one odd scan).
+  /// In [-30, 30].
   float occupied_threshold_log_odds = 0.0f;
   /// Free-space clearing reaches this far from the sensor (m): a return farther away clears
   /// its ray up to this distance and marks no hit (beyond it, a few cm of angular error
@@ -48,7 +49,7 @@ struct OccupancyMapOptions {
 inline constexpr float kOccupancyLogOddsUnit = 0.001f;
 
 /// Throws std::invalid_argument naming the first invalid field (e.g. "OccupancyMapOptions::
-/// log_odds_miss must be finite and < 0").
+/// log_odds_miss must be in [-30, 0)").
 void ValidateOccupancyMapOptions(const OccupancyMapOptions& options);
 
 /// What one InsertScan did: counts and wall-clock times (steady clock, s).
@@ -56,7 +57,7 @@ struct ScanInsertSummary {
   int num_points = 0;               ///< Points given.
   int num_points_used = 0;          ///< Finite points: each casts its ray.
   int num_points_skipped = 0;       ///< Points with a NaN or infinite coordinate, ignored.
-  int num_points_outside = 0;       ///< Used points outside the bounds: no hit, ray clears.
+  int num_points_outside = 0;       ///< Used points in range outside the bounds: no hit.
   int num_points_beyond_range = 0;  ///< Used points farther than max_free_ray_length_m.
   int num_voxels_hit = 0;           ///< Distinct voxels updated with a hit.
   int num_voxels_missed = 0;        ///< Distinct voxels updated with a miss.
@@ -76,7 +77,7 @@ struct VoxelStateCounts {
 
 /// A dense probabilistic occupancy map (as ROG-Map's): per-voxel log-odds updated by the
 /// returns of LiDAR scans and the free space along their rays, with a VoxelState byte per
-/// voxel (kUnknown until observed, then kOccupied or kFree by the log-odds' sign) that
+/// voxel (kUnknown until observed, then kOccupied or kFree by the threshold) that
 /// changes are reported on, to feed VoxelMapFields::ApplyChanges and the MAP_UPDATE deltas.
 ///
 /// Storage: flat arrays in the GridGeometry3 order (x fastest, i = ix + nx (iy + ny iz)): per

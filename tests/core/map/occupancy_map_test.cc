@@ -11,6 +11,7 @@
 #include <gtest/gtest.h>
 
 #include "core/common/random.h"
+#include "tests/core/robot/allocation_counter.h"
 
 namespace topay {
 namespace {
@@ -286,6 +287,23 @@ TEST(OccupancyMapTest, MarksStayCorrectWhenTheirCounterWraps) {
   Insert(&map, sensor, {Centre(8, 10, 5), Centre(3, 10, 5)});
   EXPECT_FLOAT_EQ(map.log_odds(3, 10, 5), 0.85f);
   EXPECT_FLOAT_EQ(map.log_odds(5, 10, 5), -2.0f);
+}
+
+TEST(OccupancyMapTest, InsertingAScanAllocatesNothingAfterWarmUp) {
+  OccupancyMap map(SmallOptions());
+  Rng rng(2);
+  std::vector<Eigen::Vector3f> points;
+  for (int k = 0; k < 500; ++k) {
+    points.emplace_back(rng.Uniform(-0.5, 2.5), rng.Uniform(-0.5, 2.5), rng.Uniform(-0.2, 1.2));
+  }
+  std::vector<VoxelChange> changes;
+  changes.reserve(4000);  // every voxel at most once
+  map.InsertScan(Eigen::Vector3d(1.0, 1.0, 0.5), points, &changes);
+  changes.clear();
+  const testing::AllocationCounter counter;
+  const ScanInsertSummary s = map.InsertScan(Eigen::Vector3d(0.7, 1.2, 0.4), points, &changes);
+  EXPECT_EQ(counter.count(), 0);
+  EXPECT_GT(s.num_changes, 0);
 }
 
 }  // namespace

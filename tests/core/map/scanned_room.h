@@ -32,9 +32,12 @@ struct ScannedRoom {
 };
 
 /// `num_poses` scans of the benchmark room (kind, seed) from seeded poses with the base at
-/// least 0.1 m from every box (arm stowed), with the given range noise (m, 1 sigma).
+/// least 0.1 m from every box (arm stowed), with the given range noise (m, 1 sigma). The
+/// scenes have no ceiling (most up-going rays return nothing); `with_ceiling` adds one to the
+/// scanner's world, a slab at 2.5 m over the whole room (above the map volume: its returns
+/// give no hits, their rays clear), so that nearly every ray returns as indoors.
 inline ScannedRoom ScanRoom(SceneKind kind, std::uint64_t seed, int num_poses,
-                            double range_noise_sigma_m) {
+                            double range_noise_sigma_m, bool with_ceiling = false) {
   const std::string dir = std::string(TOPAY_SOURCE_DIR) + "/config/robot/";
   const RobotModel model = LoadRobotModel(dir + "topay_mm.urdf", dir + "topay_mm.yaml");
   const Kinematics kinematics(model);
@@ -44,7 +47,14 @@ inline ScannedRoom ScanRoom(SceneKind kind, std::uint64_t seed, int num_poses,
   sim::LidarOptions options;
   options.range_noise_sigma_m = range_noise_sigma_m;
   sim::LidarScanner scanner(options, kinematics, seed + 1);
-  scanner.SetWorld(room.scene.boxes);
+  std::vector<OrientedBox> world = room.scene.boxes;
+  if (with_ceiling) {
+    OrientedBox ceiling;
+    ceiling.center_W_m = Eigen::Vector3d(0.0, 0.0, 2.55);
+    ceiling.size_m = Eigen::Vector3d(30.0, 30.0, 0.1);
+    world.push_back(ceiling);
+  }
+  scanner.SetWorld(world);
   Rng rng(seed + 2);
   while (static_cast<int>(room.scans.size()) < num_poses) {
     WholeBodyState state;
