@@ -53,6 +53,8 @@ void ValidateOccupancyMapOptions(const OccupancyMapOptions& o) {
           "log_odds_max", "in [-30, 30] and > occupied_threshold_log_odds");
   Require(std::isfinite(o.max_free_ray_length_m) && o.max_free_ray_length_m > 0.0,
           "max_free_ray_length_m", "finite and > 0");
+  Require(std::isfinite(o.max_hit_range_m) && o.max_hit_range_m > 0.0, "max_hit_range_m",
+          "finite and > 0");
 }
 
 OccupancyMap::OccupancyMap(const OccupancyMapOptions& options) : options_(options) {
@@ -129,7 +131,7 @@ ScanInsertSummary OccupancyMap::InsertScan(const Eigen::Vector3d& p_WS,
 
 void OccupancyMap::InsertHits(const Eigen::Vector3d& p_WS, std::span<const Eigen::Vector3f> p_WP,
                               std::vector<VoxelChange>* changes, ScanInsertSummary* summary) {
-  const double max_range_squared = options_.max_free_ray_length_m * options_.max_free_ray_length_m;
+  const double max_range_squared = options_.max_hit_range_m * options_.max_hit_range_m;
   for (const Eigen::Vector3f& point : p_WP) {
     if (!IsFinite(point)) {
       ++summary->num_points_skipped;

@@ -40,9 +40,14 @@ struct OccupancyMapOptions {
   /// In [-30, 30].
   float occupied_threshold_log_odds = 0.0f;
   /// Free-space clearing reaches this far from the sensor (m): a return farther away clears
-  /// its ray up to this distance and marks no hit (beyond it, a few cm of angular error
-  /// sweep whole voxels). 10 m by default. Finite, > 0.
+  /// its ray up to this distance only. The rays' walk is the insertion's main cost (its
+  /// length in voxels per point), and what lies farther is cleared as the robot comes nearer.
+  /// 10 m by default. Finite, > 0.
   double max_free_ray_length_m = 10.0;
+  /// Returns up to this far from the sensor (m) mark their voxel occupied, even beyond the
+  /// clearing distance (a far obstacle is in the map before the robot gets near it); farther
+  /// ones mark nothing. 20 m by default (the scan filter's range). Finite, > 0.
+  double max_hit_range_m = 20.0;
 };
 
 /// The fixed-point unit of OccupancyMap's log-odds.

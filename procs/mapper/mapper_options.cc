@@ -38,6 +38,7 @@ void ReadMap(YamlSection s, OccupancyMapOptions* o) {
   ReadFloat(&s, "log_odds_max", &o->log_odds_max);
   ReadFloat(&s, "occupied_threshold_log_odds", &o->occupied_threshold_log_odds);
   s.Read("max_free_ray_length_m", &o->max_free_ray_length_m);
+  s.Read("max_hit_range_m", &o->max_hit_range_m);
   s.Finish();
 }
 

@@ -22,21 +22,13 @@
 
 #include "core/common/random.h"
 #include "procs/msgs/map_codec.h"
+#include "tests/bench/bench_clock.h"
 
 namespace topay::msgs {
 namespace {
 
-double ThreadCpuSeconds() {
-  timespec t{};
-  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
-  return t.tv_sec + 1e-9 * t.tv_nsec;
-}
-
-double WallSeconds() {
-  timespec t{};
-  clock_gettime(CLOCK_MONOTONIC, &t);
-  return t.tv_sec + 1e-9 * t.tv_nsec;
-}
+using bench_clock::ThreadCpuSeconds;
+using bench_clock::WallSeconds;
 
 void ReportPercentiles(benchmark::State& state, std::vector<double> times,
                        const std::string& name) {

@@ -55,6 +55,8 @@ void AddFileFlags(const std::string& config_dir, CLI::App* app, BenchOptions* o)
                   "line (start to goal) | tour (line + a grid over the room); methods <m>@sensed");
   app->add_option("--sensed-unknown", o->sensed_unknown,
                   "Never-seen voxels of sensed maps: free | occupied")->capture_default_str();
+  app->add_option("--sensed-margin-m", o->sensed_margin_m,
+                  "The planner's extra obstacle margin on sensed maps (m)")->capture_default_str();
   app->add_option("--mapper-config", o->mapper_config, "Mapper YAML (scan filter, map), for sensed maps")
       ->capture_default_str();
   app->add_option("--lidar-config", o->lidar_config, "LiDAR YAML (the simulator's), for sensed maps")

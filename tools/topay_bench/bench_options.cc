@@ -90,6 +90,7 @@ void CheckBenchOptions(const BenchOptions& o) {
     if (o.sensed_unknown != "free" && o.sensed_unknown != "occupied") {
       throw UsageError("--sensed-unknown: '" + o.sensed_unknown + "' (free or occupied)");
     }
+    RequireIn(o.sensed_margin_m, 0.0, 0.5, "--sensed-margin-m");
     RequireGiven(o.mapper_config, "--mapper-config");
     RequireGiven(o.lidar_config, "--lidar-config");
   }

@@ -57,6 +57,8 @@ struct BenchOptions {
   std::string sensed_map;
   /// How never-seen voxels count on a sensed map: "free" [default] or "occupied".
   std::string sensed_unknown = "free";
+  /// The planner's extra obstacle margin on sensed maps (m) [0] (SensedMapSettings).
+  double sensed_margin_m = 0.0;
   /// The mapper's options (scan filter, map) and the LiDAR's, for sensed maps; required with
   /// sensed_map.
   std::string mapper_config;

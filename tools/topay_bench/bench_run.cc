@@ -67,6 +67,7 @@ BenchRunInfo RunInfo(const BenchOptions& o, const BenchTaskContext& c) {
   info.planner_config = o.planner_config;
   info.sensed_map = o.sensed_map;
   info.sensed_unknown = o.sensed_unknown;
+  info.sensed_margin_m = o.sensed_margin_m;
   return info;
 }
 
@@ -79,6 +80,7 @@ SensedMapSettings SensedSettingsOf(const BenchOptions& o) {
   s.map = mapper.map;
   s.lidar = sim::LoadLidarOptionsFile(o.lidar_config);
   s.unknown = o.sensed_unknown == "occupied" ? UnknownVoxelPolicy::kOccupied : UnknownVoxelPolicy::kFree;
+  s.map_margin_m = o.sensed_margin_m;
   return s;
 }
 

@@ -104,11 +104,11 @@ void DumpPlan(const BenchTaskContext& c, int index, const std::string& method,
 // The exact scene's verdict on a plan made on a sensed map: a success stays one only if the
 // independent validator accepts the trajectory against the exact boxes.
 void ValidateOnExactScene(const Kinematics& kinematics, const Scene& exact,
-                          const WholeBodyPlanner& planner, const plan::PlanQuery& query,
-                          const WholeBodyPlanResult& plan, BenchRecord* r) {
+                          const WholeBodyPlanner& planner, const TrajectoryValidatorOptions& options,
+                          const plan::PlanQuery& query, const WholeBodyPlanResult& plan,
+                          BenchRecord* r) {
   if (!r->success || !plan.sampled) return;
-  const TrajectoryValidator validator(kinematics, exact, planner.base_limits(),
-                                     planner.options().validator);
+  const TrajectoryValidator validator(kinematics, exact, planner.base_limits(), options);
   const ValidationReport report = validator.Validate(*plan.sampled, query.start, query.X_WE_goal);
   if (report.ok) return;
   r->success = false;
@@ -146,8 +146,10 @@ void RunOnSensedMap(const BenchTaskContext& c, int index, const BenchmarkCase& b
   const std::size_t m = c.methods.size();
   for (std::size_t k = 0; k < m; ++k) {
     const BenchMethod method = c.methods[(static_cast<std::size_t>(index) + k) % m];
-    const WholeBodyPlannerOptions options =
+    const WholeBodyPlannerOptions exact_options =
         BenchPlannerOptions(*c.loaded_options, method, c.settings, task_seed);
+    WholeBodyPlannerOptions options = exact_options;
+    options.validator.obstacle_margin_m += c.sensed->map_margin_m;
     const WholeBodyPlanner planner(*c.kinematics, sensed.fields->base_field_2d(),
                                    sensed.fields->field_3d(), sensed.scene, options);
     const WholeBodyPlanResult plan =
@@ -159,7 +161,7 @@ void RunOnSensedMap(const BenchTaskContext& c, int index, const BenchmarkCase& b
     r.sensed = sensed.figures;
     r.base_unreachable = base_unreachable;
     FillOutcome(plan, c.settings.time_limit_ms, &r);
-    ValidateOnExactScene(*c.kinematics, query.scene, planner, query, plan, &r);
+    ValidateOnExactScene(*c.kinematics, query.scene, planner, exact_options.validator, query, plan, &r);
     records->push_back(r);
     if (!c.dump_dir.empty()) DumpPlan(c, index, r.method, query, r.map_ms, options, plan);
   }

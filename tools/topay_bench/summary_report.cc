@@ -57,6 +57,7 @@ Json MethodJson(const MethodSummary& s, const BenchRunInfo& info) {
               {"planner_config", info.planner_config},
               {"sensed_map", info.sensed_map.empty() ? Json(nullptr) : Json(info.sensed_map)},
               {"sensed_unknown", info.sensed_map.empty() ? Json(nullptr) : Json(info.sensed_unknown)},
+              {"sensed_margin_m", info.sensed_map.empty() ? Json(nullptr) : Json(info.sensed_margin_m)},
               {"tp_statistics",
                "tp_ms_* and td_s_mean over successful tasks; tp_ms_median_all over all tasks; "
                "common_* over the tasks every method solved"}};
@@ -105,8 +106,8 @@ std::string SummaryMarkdown(const std::vector<MethodSummary>& summaries, const B
          "independent test); S.R. reachable excludes them.\n";
   if (!info.sensed_map.empty()) {
     out << "Methods <m>@sensed planned on the task's scene as the simulated LiDAR mapped it from the "
-        << info.sensed_map << " tour (unknown voxels " << info.sensed_unknown
-        << "), and count only if the validator also accepts the trajectory on the exact scene; "
+        << info.sensed_map << " tour (unknown voxels " << info.sensed_unknown << ", an extra obstacle margin of "
+        << Cell(100.0 * info.sensed_margin_m, 1) << " cm), and count only if the validator also accepts the trajectory on the exact scene; "
            "their map_ms is the mapping plus the fields.\n";
   }
   return out.str();

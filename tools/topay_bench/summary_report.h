@@ -26,6 +26,7 @@ struct BenchRunInfo {
   /// empty: none.
   std::string sensed_map;
   std::string sensed_unknown;
+  double sensed_margin_m = 0.0;  ///< The planner's extra obstacle margin on sensed maps.
 };
 
 // summary.json: a JSON array, one object per method, in the run's method order:
@@ -36,7 +37,7 @@ struct BenchRunInfo {
 //    "tp_ms_mean", "tp_ms_median", "tp_ms_p95", "tp_ms_median_all", "td_s_mean",
 //    "common_tasks", "common_tp_ms_mean", "common_td_s_mean", "map_ms_mean",
 //    "threads", "time_limit_ms", "use_hint", "base_limits", "planner_config",
-//    "sensed_map" and "sensed_unknown" (null without sensed maps),
+//    "sensed_map", "sensed_unknown" and "sensed_margin_m" (null without sensed maps),
 //    "tp_statistics": "..."}  (see MethodSummary; NaN figures are null).
 
 /// The summary.json array.

@@ -210,14 +210,18 @@ TEST(OccupancyMapTest, ReturnsOutsideTheBoundsClearOnlyTheirRaysInsidePart) {
   EXPECT_EQ(map.CountStates().occupied, 0);
 }
 
-TEST(OccupancyMapTest, ReturnsBeyondTheClearingDistanceClearUpToIt) {
+TEST(OccupancyMapTest, ReturnsBeyondTheClearingDistanceClearUpToItAndHitWithinTheHitRange) {
   OccupancyMapOptions options = SmallOptions();
   options.max_free_ray_length_m = 0.8;
+  options.max_hit_range_m = 1.5;
   OccupancyMap map(options);
   const Eigen::Vector3d sensor(0.05, 1.05, 0.55);
-  const ScanInsertSummary s = Insert(&map, sensor, {Eigen::Vector3f(1.95f, 1.05f, 0.55f)});
+  // One return at 1.9 m (beyond the hit range), one at 1.2 m (within it) in another row.
+  const ScanInsertSummary s = Insert(&map, sensor, {Eigen::Vector3f(1.95f, 1.05f, 0.55f),
+                                                    Eigen::Vector3f(1.25f, 1.05f, 0.65f)});
   EXPECT_EQ(s.num_points_beyond_range, 1);
-  EXPECT_EQ(s.num_voxels_hit, 0);
+  EXPECT_EQ(s.num_voxels_hit, 1);
+  EXPECT_EQ(map.state(12, 10, 6), VoxelState::kOccupied);
   // Cleared from x 0.05 to 0.85: voxels 0..8; beyond, unknown.
   for (int ix = 0; ix < 20; ++ix) {
     EXPECT_EQ(map.state(ix, 10, 5), ix <= 8 ? VoxelState::kFree : VoxelState::kUnknown) << ix;

@@ -1,7 +1,7 @@
 // The shipped simulation graph (config/graphs/sim.yaml) runs as it is, isolated by default:
 // the logger records the simulator's ROBOT_STATE, BASE_POSE, POINT_CLOUD, SIM_STATUS, HEARTBEAT
 // and the launcher's GRAPH_STATUS into <run>/graph.lcmlog; with --group drive the commands move
-// the robot.
+// the robot; with --group perception the mapper publishes MAP_UPDATE and saves its OctoMap.
 
 #include <gtest/gtest.h>
 
@@ -16,7 +16,7 @@ TEST(SimGraph, RunsIsolatedAndRecordsTheSimulator) {
   if (!EnterTestNamespace(&why)) GTEST_SKIP() << why;  // the launcher nests its own namespace
   const std::string dir = TestDir("sim_graph");
   const pid_t launcher = StartLauncher(std::string(TOPAY_SOURCE_DIR) + "/config/graphs/sim.yaml", dir,
-                                       {"--duration", "3", "--group", "sim", "--group", "drive"});
+                                       {"--duration", "3", "--group", "sim", "--group", "perception", "--group", "drive"});
   const int status = WaitFor(launcher, 15.0);
   const std::string out = ReadText(dir + "/launcher.out");
   ASSERT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 0) << out;
@@ -32,6 +32,10 @@ TEST(SimGraph, RunsIsolatedAndRecordsTheSimulator) {
   EXPECT_GE(summary.channels.at("HEARTBEAT").count, 4);
   EXPECT_GE(summary.channels.at("GRAPH_STATUS").count, 2);
   EXPECT_GE(summary.channels.at("CONTROL_COMMAND").count, 20);
+  ASSERT_TRUE(summary.channels.contains("MAP_UPDATE")) << loginfo::FormatSummary(summary);
+  EXPECT_GE(summary.channels.at("MAP_UPDATE").count, 5);  // >= 2 Hz, every scan
+  EXPECT_NE(ReadText(dir + "/mapper.log").find("scan in -> MAP_UPDATE"), std::string::npos);  // report at the end
+  EXPECT_TRUE(std::filesystem::exists(dir + "/map.bt"));
   for (const auto& [channel, c] : summary.channels) EXPECT_EQ(c.decode_failures, 0) << channel;
   EXPECT_NE(ReadText(dir + "/sim.log").find("final: sim time"), std::string::npos);  // counts printed on SIGTERM
   for (const char* log : {"/sim.log", "/drive-pattern.log", "/logger.log", "/launch.log", "/status.json"}) {
