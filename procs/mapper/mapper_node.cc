@@ -71,7 +71,7 @@ void MapperNode::OnCloud(const point_cloud_t& msg) {
     octomap_->Submit(cloud_.X_WS.translation(), mapper_->last_points());
   }
   Publish(last_data_utime_);
-  stats_.scan_to_update_ms.push_back(MsSince(start));
+  AddSample(&stats_.scan_to_update_ms, MsSince(start));
 }
 
 void MapperNode::Publish(std::int64_t utime, bool force_snapshot) {
@@ -92,11 +92,11 @@ void MapperNode::Publish(std::int64_t utime, bool force_snapshot) {
   const double bytes = static_cast<double>(msg.getEncodedSize());
   if (full) {
     ++stats_.snapshots;
-    stats_.snapshot_bytes.push_back(bytes);
-    stats_.snapshot_encode_ms.push_back(encode_ms);
+    AddSample(&stats_.snapshot_bytes, bytes);
+    AddSample(&stats_.snapshot_encode_ms, encode_ms);
   } else {
-    stats_.delta_bytes.push_back(bytes);
-    stats_.encode_ms.push_back(encode_ms);
+    AddSample(&stats_.delta_bytes, bytes);
+    AddSample(&stats_.encode_ms, encode_ms);
   }
 }
 

@@ -18,17 +18,22 @@ double Last(const std::vector<double>& v) { return v.empty() ? 0.0 : v.back(); }
 
 }  // namespace
 
+void AddSample(std::vector<double>* sample, double value) {
+  if (sample->size() >= 2 * kMaxSamples) sample->erase(sample->begin(), sample->begin() + kMaxSamples);
+  sample->push_back(value);
+}
+
 void MapperStats::AddScan(const ScanMapperSummary& s) {
   points_non_finite += s.filter.num_non_finite;
   if (s.filter.self_filter_skipped) ++scans_without_state;
-  range_ms.push_back(s.filter.range_ms);
-  ground_ms.push_back(s.filter.ground_ms);
-  self_ms.push_back(s.filter.self_ms);
-  voxel_ms.push_back(s.filter.voxel_ms);
-  outlier_ms.push_back(s.filter.outlier_ms);
-  filter_ms.push_back(s.filter.total_ms);
-  insert_ms.push_back(s.insert.total_s * 1e3);
-  changes.push_back(s.insert.num_changes);
+  AddSample(&range_ms, s.filter.range_ms);
+  AddSample(&ground_ms, s.filter.ground_ms);
+  AddSample(&self_ms, s.filter.self_ms);
+  AddSample(&voxel_ms, s.filter.voxel_ms);
+  AddSample(&outlier_ms, s.filter.outlier_ms);
+  AddSample(&filter_ms, s.filter.total_ms);
+  AddSample(&insert_ms, s.insert.total_s * 1e3);
+  AddSample(&changes, s.insert.num_changes);
 }
 
 std::string MapperStats::StatusLine(const VoxelStateCounts& counts) const {

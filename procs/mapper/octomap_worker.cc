@@ -1,5 +1,6 @@
 #include "procs/mapper/octomap_worker.h"
 
+#include "procs/mapper/mapper_stats.h"
 #include "procs/runtime/thread_priority.h"
 
 namespace topay::mapper {
@@ -62,7 +63,7 @@ void OctomapWorker::Run() {
     lock.lock();
     busy_ = false;
     ++stats_.inserted;
-    stats_.insert_ms.push_back(summary.ms);
+    AddSample(&stats_.insert_ms, summary.ms);
     idle_.notify_all();
   }
 }

@@ -21,7 +21,7 @@ struct OctomapWorkerStats {
   std::int64_t submitted = 0;  ///< Scans handed over.
   std::int64_t inserted = 0;   ///< Scans inserted.
   std::int64_t dropped = 0;    ///< Scans refused because the previous one was not done.
-  std::vector<double> insert_ms;  ///< Every insertion's time.
+  std::vector<double> insert_ms;  ///< Insertion times, ms (the newest, AddSample).
 };
 
 class OctomapWorker {
