@@ -1,8 +1,10 @@
 #include "core/map/voxel_boxes.h"
 
 #include <algorithm>
+#include <cmath>
 #include <array>
 #include <stdexcept>
+#include <string>
 
 #include "core/map/voxel_state.h"
 
@@ -115,6 +117,65 @@ std::vector<OrientedBox> OccupiedVoxelBoxes(const OccupancyGrid3& grid) {
   // OccupancyGrid3 cells are 1 when occupied, as VoxelState::kOccupied.
   static_assert(static_cast<std::uint8_t>(VoxelState::kOccupied) == 1);
   return OccupiedVoxelBoxes(grid.geometry(), grid.cells());
+}
+
+bool VoxelBlocksPlanner(VoxelState state, UnknownVoxelPolicy unknown) {
+  if (state == VoxelState::kOccupied) return true;
+  return state == VoxelState::kUnknown && unknown == UnknownVoxelPolicy::kOccupied;
+}
+
+std::vector<OrientedBox> BlockedVoxelBoxes(const GridGeometry3& geometry,
+                                           std::span<const std::uint8_t> states,
+                                           UnknownVoxelPolicy unknown, CellBox region) {
+  if (static_cast<std::int64_t>(states.size()) != geometry.NumCells()) {
+    throw std::invalid_argument("BlockedVoxelBoxes: " + std::to_string(states.size()) +
+                                " states for a grid of " + std::to_string(geometry.NumCells()) +
+                                " voxels");
+  }
+  region = {region.begin.cwiseMax(0), region.end.cwiseMin(geometry.dims)};
+  if (region.empty()) return {};
+  const Eigen::Vector3i n = region.sizes();
+  std::vector<std::uint8_t> blocked(static_cast<std::size_t>(region.NumCells()));
+  std::size_t k = 0;
+  for (int iz = region.begin.z(); iz < region.end.z(); ++iz) {
+    for (int iy = region.begin.y(); iy < region.end.y(); ++iy) {
+      const std::int64_t row = geometry.Index(region.begin.x(), iy, iz);
+      for (int i = 0; i < n.x(); ++i) {
+        blocked[k++] = VoxelBlocksPlanner(static_cast<VoxelState>(states[row + i]), unknown);
+      }
+    }
+  }
+  std::vector<OrientedBox> boxes;
+  for (CellBox box : MergeVoxelsIntoBoxes(n, blocked, 1)) {
+    box.begin += region.begin;
+    box.end += region.begin;
+    boxes.push_back(VoxelBoxInWorld(geometry, box));
+  }
+  return boxes;
+}
+
+std::vector<OrientedBox> BlockedVoxelBoxes(const GridGeometry3& geometry,
+                                           std::span<const std::uint8_t> states,
+                                           UnknownVoxelPolicy unknown) {
+  return BlockedVoxelBoxes(geometry, states, unknown, CellBox{Eigen::Vector3i::Zero(), geometry.dims});
+}
+
+CellBox VoxelsOverlapping(const GridGeometry3& geometry, const Eigen::AlignedBox3d& box_W_m) {
+  if (box_W_m.isEmpty()) return {};
+  // Voxels whose interior meets the box (a box face on a voxel face takes no voxel beyond it;
+  // 1e-9 voxel absorbs the rounding of coordinates given on the grid).
+  const Eigen::Vector3d lo = (box_W_m.min() - geometry.origin_W_m) / geometry.resolution_m;
+  const Eigen::Vector3d hi = (box_W_m.max() - geometry.origin_W_m) / geometry.resolution_m;
+  Eigen::Vector3i begin, end;
+  for (int a = 0; a < 3; ++a) {
+    begin[a] = static_cast<int>(std::clamp(std::floor(lo[a] + 1e-9), 0.0, double(geometry.dims[a])));
+    end[a] = static_cast<int>(std::clamp(std::ceil(hi[a] - 1e-9), 0.0, double(geometry.dims[a])));
+  }
+  // A flat box (a point, a face) still meets the voxel it lies in.
+  for (int a = 0; a < 3; ++a) {
+    if (end[a] <= begin[a] && begin[a] < geometry.dims[a] && hi[a] >= lo[a]) end[a] = begin[a] + 1;
+  }
+  return {begin, end};
 }
 
 }  // namespace topay

@@ -10,6 +10,7 @@
 #include "core/map/cell_box.h"
 #include "core/map/grid_geometry.h"
 #include "core/map/occupancy_grid3.h"
+#include "core/map/voxel_map_fields.h"
 
 namespace topay {
 
@@ -35,5 +36,28 @@ std::vector<OrientedBox> OccupiedVoxelBoxes(const OccupancyGrid3& grid);
 /// geometry's order) as world boxes. Throws std::invalid_argument for a size mismatch.
 std::vector<OrientedBox> OccupiedVoxelBoxes(const GridGeometry3& geometry,
                                             std::span<const std::uint8_t> states);
+
+/// True if a voxel in `state` is an obstacle to the planner's exact checks (its validator and
+/// the checks of a trajectory against the map) under `unknown`: occupied voxels always,
+/// unknown ones unless the policy counts them as free (kFree) or blocks them only for the
+/// base's 2D field (kOccupiedInBaseBands: the exact checks, which cannot tell base from arm
+/// per voxel, take them as free, as the arm's 3D field does).
+bool VoxelBlocksPlanner(VoxelState state, UnknownVoxelPolicy unknown);
+
+/// The planner's obstacles in the voxels of `region` (clipped to the grid; whole grid by
+/// default) as world boxes: VoxelBlocksPlanner voxels merged by MergeVoxelsIntoBoxes over the
+/// region's sub-grid. Cost: the region's voxels. Throws std::invalid_argument for a size
+/// mismatch of `states`.
+std::vector<OrientedBox> BlockedVoxelBoxes(const GridGeometry3& geometry,
+                                           std::span<const std::uint8_t> states,
+                                           UnknownVoxelPolicy unknown, CellBox region);
+std::vector<OrientedBox> BlockedVoxelBoxes(const GridGeometry3& geometry,
+                                           std::span<const std::uint8_t> states,
+                                           UnknownVoxelPolicy unknown);
+
+/// The voxels of `geometry` whose interior the world box `box_W_m` meets (a box face lying on
+/// a voxel face takes no voxel beyond it; a flat box the voxels it lies in), clipped to the
+/// grid (empty if none).
+CellBox VoxelsOverlapping(const GridGeometry3& geometry, const Eigen::AlignedBox3d& box_W_m);
 
 }  // namespace topay

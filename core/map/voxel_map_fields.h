@@ -127,6 +127,8 @@ class VoxelMapFields {
   VoxelState state(int ix, int iy, int iz) const {
     return static_cast<VoxelState>(states_[geometry().Index(ix, iy, iz)]);
   }
+  /// One VoxelState per voxel, linear order (GridGeometry3::Index).
+  std::span<const std::uint8_t> states() const { return states_; }
   /// The voxels as the 3D field counts them (after the unknown policy).
   const OccupancyGrid3& occupancy_3d() const { return occupancy_3d_; }
   /// The columns of the base band (and the upper band, if set) as the 2D field counts them.

@@ -15,6 +15,7 @@
 #include "topay/sim_contact_t.hpp"
 #include "topay/sim_event_t.hpp"
 #include "topay/sim_status_t.hpp"
+#include "topay/tracker_status_t.hpp"
 #include "topay/whole_body_state_t.hpp"
 #include "topay_msgs/checked_decode.h"
 
@@ -38,7 +39,7 @@ const std::vector<MessageTypeInfo>& AllMessageTypes() {
       Info<map_update_t>(),     Info<goal_t>(),           Info<poly_trajectory_t>(),
       Info<control_command_t>(), Info<planner_status_t>(), Info<heartbeat_t>(),
       Info<graph_status_t>(),   Info<sim_contact_t>(),    Info<sim_status_t>(),
-      Info<sim_event_t>()};
+      Info<sim_event_t>(),      Info<tracker_status_t>()};
   return kTypes;
 }
 

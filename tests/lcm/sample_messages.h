@@ -18,6 +18,7 @@
 #include "topay/joint_state_t.hpp"
 #include "topay/map_update_t.hpp"
 #include "topay/planner_status_t.hpp"
+#include "topay/tracker_status_t.hpp"
 #include "topay/point_cloud_t.hpp"
 #include "topay/poly_trajectory_t.hpp"
 #include "topay/robot_state_t.hpp"
@@ -45,7 +46,7 @@ using Catalogue =
     MessageList<base_pose_t, base_velocity_t, joint_state_t, robot_state_t, whole_body_state_t,
                 point_cloud_t, map_update_t, goal_t, poly_trajectory_t, control_command_t,
                 planner_status_t, heartbeat_t, graph_status_t, sim_contact_t, sim_status_t,
-                sim_event_t>;
+                sim_event_t, tracker_status_t>;
 using AllMessageTypes = Catalogue::GtestTypes;
 
 // Names typed tests after the message type ("RoundTrip/joint_state_t") instead of 0, 1, ...
@@ -341,6 +342,8 @@ struct MessageSample<planner_status_t> {
     m.sampling_ms = 187.25;
     m.optimization_ms = -1.0;  // not run
     m.total_ms = 201.0;
+    m.replans = 3;
+    m.detail = "replan: the map shows a collision 2.40 s ahead";
     return m;
   }
   static void ExpectSame(const planner_status_t& a, const planner_status_t& b) {
@@ -353,6 +356,36 @@ struct MessageSample<planner_status_t> {
     EXPECT_EQ(a.sampling_ms, b.sampling_ms);
     EXPECT_EQ(a.optimization_ms, b.optimization_ms);
     EXPECT_EQ(a.total_ms, b.total_ms);
+    EXPECT_EQ(a.replans, b.replans);
+    EXPECT_EQ(a.detail, b.detail);
+  }
+};
+
+template <>
+struct MessageSample<tracker_status_t> {
+  static tracker_status_t Make() {
+    tracker_status_t m;
+    m.utime = 1'700'000'001'523'456;
+    m.state = tracker_status_t::TRACKING;
+    m.trajectory_id = 12;
+    m.goal_id = 4;
+    m.t_along_s = 3.25;
+    m.position_error_m = 0.021;
+    m.yaw_error_rad = -0.013;
+    m.joint_error_rad = 0.004;
+    m.solve_ms = 1.2;
+    return m;
+  }
+  static void ExpectSame(const tracker_status_t& a, const tracker_status_t& b) {
+    EXPECT_EQ(a.utime, b.utime);
+    EXPECT_EQ(a.state, b.state);
+    EXPECT_EQ(a.trajectory_id, b.trajectory_id);
+    EXPECT_EQ(a.goal_id, b.goal_id);
+    EXPECT_EQ(a.t_along_s, b.t_along_s);
+    EXPECT_EQ(a.position_error_m, b.position_error_m);
+    EXPECT_EQ(a.yaw_error_rad, b.yaw_error_rad);
+    EXPECT_EQ(a.joint_error_rad, b.joint_error_rad);
+    EXPECT_EQ(a.solve_ms, b.solve_ms);
   }
 };
 

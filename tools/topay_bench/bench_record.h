@@ -42,7 +42,7 @@ struct BenchRecord {
   double base_distance_m = 0.0;  ///< Straight line between start and goal base positions.
   /// No motion of the rigid lower body takes the base from the start to any position from
   /// which the arm could reach the target (CertifyTargetUnreachable in
-  /// sim/scenes/base_reachability.h): no planner can solve the task. Counted as a failure like
+  /// core/planning/base_reachability.h): no planner can solve the task. Counted as a failure like
   /// any other, and reported apart.
   bool base_unreachable = false;
   /// A tight task's record of its ends (PlanningTask::tight); unset for an open task or one

@@ -14,7 +14,7 @@
 #include "tools/topay_plan/plan_query.h"
 #include "tools/topay_plan/plan_summary_fill.h"
 #include "tools/topay_plan/trajectory_json.h"
-#include "sim/scenes/base_reachability.h"
+#include "core/planning/base_reachability.h"
 #include "sim/scenes/scene_json.h"
 #include "sim/scenes/task_generator.h"
 #include "sim/scenes/task_json.h"

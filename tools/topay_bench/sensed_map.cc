@@ -15,17 +15,6 @@ double MsSince(Clock::time_point start) {
   return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
 }
 
-// The planner's obstacles: occupied voxels, and unknown ones if the policy blocks them.
-std::vector<std::uint8_t> BlockedVoxels(const OccupancyMap& map, UnknownVoxelPolicy unknown) {
-  std::vector<std::uint8_t> blocked(map.states().size());
-  const bool unknown_blocks = unknown == UnknownVoxelPolicy::kOccupied;
-  for (std::size_t i = 0; i < blocked.size(); ++i) {
-    const auto s = static_cast<VoxelState>(map.states()[i]);
-    blocked[i] = s == VoxelState::kOccupied || (unknown_blocks && s == VoxelState::kUnknown);
-  }
-  return blocked;
-}
-
 }  // namespace
 
 SensedMap BuildSensedMap(const Scene& exact, const PlanningTask& task, const Kinematics& kinematics,
@@ -71,11 +60,7 @@ SensedMap BuildSensedMap(const Scene& exact, const PlanningTask& task, const Kin
   f.fields_ms = MsSince(fields_start);
 
   const auto boxes_start = Clock::now();
-  const GridGeometry3& g = mapper.map().geometry();
-  for (const CellBox& box : MergeVoxelsIntoBoxes(g.dims,
-                                                 BlockedVoxels(mapper.map(), settings.unknown), 1)) {
-    out.scene.boxes.push_back(VoxelBoxInWorld(g, box));
-  }
+  out.scene.boxes = BlockedVoxelBoxes(mapper.map().geometry(), mapper.map().states(), settings.unknown);
   out.scene.bounds_W_m = exact.bounds_W_m;
   out.scene.kind = "sensed " + exact.kind;
   out.scene.seed = exact.seed;

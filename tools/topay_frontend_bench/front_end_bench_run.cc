@@ -9,7 +9,7 @@
 #include "core/planning/front_end.h"
 #include "core/planning/path_verification.h"
 #include "core/planning/planner_fields.h"
-#include "sim/scenes/base_reachability.h"
+#include "core/planning/base_reachability.h"
 #include "sim/scenes/task_generator.h"
 
 namespace topay::frontend_bench {

@@ -42,7 +42,7 @@ void WriteTable(const FrontEndBenchOptions& o, const FrontEndTally& t, std::ostr
 
 void WriteNotes(const FrontEndTally& t, std::ostream& out) {
   out << "Reachable: tasks not certified unsolvable by the rigid lower body's connectivity "
-         "to the target's reach disc (sim/scenes/base_reachability.h); certified: "
+         "to the target's reach disc (core/planning/base_reachability.h); certified: "
       << t.unreachable << ", of which given a path (must be 0): " << t.unreachable_ok << ".\n";
   out << "Goal stage ms (median / p95): " << MedianP95(t.goal_ms)
       << ". Jobs cancelled by the improvement window or budget (not counted in the per-path "

@@ -13,7 +13,7 @@ namespace topay::frontend_bench {
 struct FrontEndTally {
   int tasks = 0;
   int tasks_ok = 0;        ///< a path, and every path passed the exact check
-  int unreachable = 0;     ///< certified unsolvable (sim/scenes/base_reachability.h)
+  int unreachable = 0;     ///< certified unsolvable (core/planning/base_reachability.h)
   int unreachable_ok = 0;  ///< ... yet given a path: must stay 0
   int paths = 0;
   int paths_failing_exact_check = 0;

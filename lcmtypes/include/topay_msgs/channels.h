@@ -17,6 +17,7 @@ inline constexpr std::string_view GOAL = "GOAL";                        // goal_
 inline constexpr std::string_view TRAJECTORY = "TRAJECTORY";            // poly_trajectory_t
 inline constexpr std::string_view CONTROL_COMMAND = "CONTROL_COMMAND";  // control_command_t
 inline constexpr std::string_view PLANNER_STATUS = "PLANNER_STATUS";    // planner_status_t
+inline constexpr std::string_view TRACKER_STATUS = "TRACKER_STATUS";    // tracker_status_t
 inline constexpr std::string_view HEARTBEAT = "HEARTBEAT";              // heartbeat_t
 inline constexpr std::string_view GRAPH_STATUS = "GRAPH_STATUS";        // graph_status_t
 inline constexpr std::string_view SIM_CONTACT = "SIM_CONTACT";          // sim_contact_t
@@ -24,9 +25,9 @@ inline constexpr std::string_view SIM_STATUS = "SIM_STATUS";            // sim_s
 inline constexpr std::string_view SIM_EVENT = "SIM_EVENT";              // sim_event_t
 
 // Every channel above, e.g. for a logger's or a bridge's channel list.
-inline constexpr std::array<std::string_view, 15> kAll = {
+inline constexpr std::array<std::string_view, 16> kAll = {
     BASE_POSE,  BASE_VELOCITY, JOINT_STATE,     ROBOT_STATE,    POINT_CLOUD, MAP_UPDATE,
     GOAL,       TRAJECTORY,    CONTROL_COMMAND, PLANNER_STATUS, HEARTBEAT,   GRAPH_STATUS,
-    SIM_CONTACT, SIM_STATUS,   SIM_EVENT};
+    SIM_CONTACT, SIM_STATUS,   SIM_EVENT,       TRACKER_STATUS};
 
 }  // namespace topay::channels

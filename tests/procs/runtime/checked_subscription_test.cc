@@ -33,12 +33,13 @@ template <> std::string_view ChannelOf<control_command_t>() { return channels::C
 template <> std::string_view ChannelOf<planner_status_t>() { return channels::PLANNER_STATUS; }
 template <> std::string_view ChannelOf<heartbeat_t>() { return channels::HEARTBEAT; }
 template <> std::string_view ChannelOf<graph_status_t>() { return channels::GRAPH_STATUS; }
+template <> std::string_view ChannelOf<tracker_status_t>() { return channels::TRACKER_STATUS; }
 
 template <class Msg>
 class CheckedSubscription : public testing::Test {};
 using ChannelTypes = testing::Types<base_pose_t, base_velocity_t, joint_state_t, robot_state_t, point_cloud_t,
                                     map_update_t, goal_t, poly_trajectory_t, control_command_t, planner_status_t,
-                                    heartbeat_t, graph_status_t>;
+                                    heartbeat_t, graph_status_t, tracker_status_t>;
 TYPED_TEST_SUITE(CheckedSubscription, ChannelTypes, test::MessageTypeName);
 
 // Every bad payload for Msg: garbage, truncated, trailing bytes, huge, and another type.

@@ -10,7 +10,7 @@
 
 #include "core/collision/scene_clearance.h"
 #include "core/common/random.h"
-#include "sim/scenes/base_reachability.h"
+#include "core/planning/base_reachability.h"
 #include "sim/scenes/benchmark_scene.h"
 #include "sim/scenes/scene_json.h"
 #include "sim/scenes/task_generator.h"

@@ -1,4 +1,4 @@
-#include "sim/scenes/base_reachability.h"
+#include "core/planning/base_reachability.h"
 
 #include <algorithm>
 #include <cmath>

@@ -1,0 +1,49 @@
+#include "procs/planner/active_trajectory.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "core/common/angles.h"
+
+namespace topay::planner {
+
+std::int64_t ActiveTrajectory::end_utime() const {
+  return start_utime + static_cast<std::int64_t>(std::llround(trajectory->duration_s() * 1e6));
+}
+
+TrajectorySample ActiveTrajectory::SampleAt(std::int64_t utime) const {
+  TrajectorySample sample = trajectory->MakePoint();
+  const double t = std::clamp(TimeAt(utime), 0.0, trajectory->duration_s());
+  trajectory->Evaluate(t, &sample);
+  return sample;
+}
+
+Drift MeasureDrift(const ActiveTrajectory& active, const msgs::RobotStateEstimate& robot) {
+  const TrajectorySample ref = active.SampleAt(robot.utime);
+  Drift drift;
+  drift.position_m = std::hypot(robot.state.x_m - ref.state.x_m, robot.state.y_m - ref.state.y_m);
+  drift.yaw_rad = std::abs(WrapAngle(robot.state.yaw_rad - ref.state.yaw_rad));
+  if (robot.state.q_rad.size() == ref.state.q_rad.size() && ref.state.q_rad.size() > 0) {
+    drift.joint_rad = (robot.state.q_rad - ref.state.q_rad).cwiseAbs().maxCoeff();
+  }
+  return drift;
+}
+
+Eigen::AlignedBox3d SweptRegion(const ArcYawTrajectory& trajectory, double t_from_s, double t_to_s,
+                                double reach_m, double height_m) {
+  TrajectorySample point = trajectory.MakePoint();
+  Eigen::AlignedBox3d region;
+  const double t0 = std::clamp(t_from_s, 0.0, trajectory.duration_s());
+  const double t1 = std::clamp(t_to_s, t0, trajectory.duration_s());
+  // Base positions every 0.05 s: the base moves at most v_max x 0.05 s (5 cm at 1 m/s)
+  // between two, which the reach covers (it is grown by 0.1 m for that).
+  const int n = static_cast<int>(std::ceil((t1 - t0) / 0.05));
+  for (int k = 0; k <= n; ++k) {
+    trajectory.Evaluate(std::min(t0 + 0.05 * k, t1), &point);
+    region.extend(Eigen::Vector3d(point.state.x_m, point.state.y_m, 0.0));
+  }
+  const Eigen::Vector3d grow(reach_m + 0.1, reach_m + 0.1, 0.0);
+  return {region.min() - grow, Eigen::Vector3d(region.max().x(), region.max().y(), height_m) + grow};
+}
+
+}  // namespace topay::planner

@@ -1,0 +1,47 @@
+#pragma once
+// The trajectory the planner last published (the one the robot is on), with what the planner
+// asks of it: the state at a time (where a replan starts), the robot's drift from it, and
+// the region its rest sweeps (what the map check looks at).
+
+#include <cstdint>
+#include <memory>
+
+#include <Eigen/Geometry>
+
+#include "core/trajectory/arc_yaw_trajectory.h"
+#include "core/trajectory/trajectory_sample.h"
+#include "procs/msgs/convert_robot_state.h"
+
+namespace topay::planner {
+
+struct ActiveTrajectory {
+  std::int64_t trajectory_id = 0;
+  std::int64_t goal_id = 0;
+  std::int64_t start_utime = 0;  ///< t = 0, us since the Unix epoch
+  std::shared_ptr<const ArcYawTrajectory> trajectory;
+  bool stopping = false;         ///< a stopping trajectory (safe stop), not a plan to the goal
+
+  /// Time along the trajectory (s) at `utime`, not clamped.
+  double TimeAt(std::int64_t utime) const { return 1e-6 * static_cast<double>(utime - start_utime); }
+  std::int64_t end_utime() const;
+  bool EndedBy(std::int64_t utime) const { return utime >= end_utime(); }
+  /// Every quantity at `utime` (clamped to the trajectory: before its start the start, after
+  /// its end the end, at rest).
+  TrajectorySample SampleAt(std::int64_t utime) const;
+};
+
+/// How far the robot is from where the trajectory says it should be at the state's time.
+struct Drift {
+  double position_m = 0.0;
+  double yaw_rad = 0.0;    ///< wrapped, absolute
+  double joint_rad = 0.0;  ///< the largest joint error
+};
+Drift MeasureDrift(const ActiveTrajectory& active, const msgs::RobotStateEstimate& robot);
+
+/// A world box that holds the robot over [t_from_s, t_to_s] of the trajectory: the base
+/// positions (every 0.05 s) grown by `reach_m` (the robot's extent around its base axis)
+/// plus 0.1 m in x and y, from the floor to `height_m`.
+Eigen::AlignedBox3d SweptRegion(const ArcYawTrajectory& trajectory, double t_from_s, double t_to_s,
+                                double reach_m, double height_m);
+
+}  // namespace topay::planner

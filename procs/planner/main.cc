@@ -1,0 +1,80 @@
+// topay-planner: the onboard planner of the graph (docs/planner.md). GOAL, ROBOT_STATE,
+// MAP_UPDATE and TRACKER_STATUS in; TRAJECTORY and PLANNER_STATUS out. Plans on the live map
+// (the mapper's voxels: distance fields updated in batches, exact voxel boxes for its own
+// validation) on a planning thread; replans on a collision ahead, drift or a new goal, from the
+// moving robot; a stopping trajectory when the way ahead is blocked and no new plan comes.
+// Exit codes: 0, 1 config or file error, 2 usage error.
+
+#include <CLI/CLI.hpp>
+#include <spdlog/spdlog.h>
+
+#include <cstdio>
+#include <cstdlib>
+#include <memory>
+#include <optional>
+
+#include "core/common/error.h"
+#include "core/io/planner_config.h"
+#include "core/io/robot_loader.h"
+#include "procs/planner/plan_worker.h"
+#include "procs/planner/planner_node.h"
+#include "procs/planner/planner_process_options.h"
+#include "procs/planner/stop_planner.h"
+#include "procs/runtime/process_loop.h"
+
+using namespace topay;
+using namespace topay::planner;
+
+namespace {
+
+std::string ConfigDir() {
+  const char* env = std::getenv("TOPAY_CONFIG_DIR");
+  return env != nullptr && *env != '\0' ? env : TOPAY_CONFIG_DIR;
+}
+
+PlannerProcessOptions ResolveOptions(const procs::ProcessOptions& process) {
+  PlannerProcessOptions o =
+      process.config_path.empty() ? PlannerProcessOptions{} : LoadPlannerProcessOptions(process.config_path);
+  if (o.robot_urdf.empty()) o.robot_urdf = ConfigDir() + "/robot/topay_mm.urdf";
+  if (o.robot_yaml.empty()) o.robot_yaml = ConfigDir() + "/robot/topay_mm.yaml";
+  if (o.planner_config.empty()) o.planner_config = ConfigDir() + "/planner/topay.yaml";
+  return o;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  CLI::App app{"topay-planner: whole-body plans on the live map, replanning, safe stop"};
+  procs::ProcessOptions process;
+  procs::AddCommonFlags(&app, "topay-planner", &process);
+  if (const std::optional<int> code = procs::ParseFlags(&app, argc, argv)) return *code;
+
+  PlannerProcessOptions options;
+  WholeBodyPlannerOptions planner_options;
+  std::unique_ptr<RobotModel> model;
+  std::unique_ptr<Kinematics> kinematics;
+  try {
+    options = ResolveOptions(process);
+    planner_options = LoadPlannerOptions(options.planner_config);
+    model = std::make_unique<RobotModel>(LoadRobotModel(options.robot_urdf, options.robot_yaml));
+    kinematics = std::make_unique<Kinematics>(*model);
+  } catch (const std::exception& e) {  // ConfigError and the robot files' errors
+    spdlog::error("{}", e.what());
+    return procs::kExitConfigError;
+  }
+  procs::ProcessLoop loop(process);
+  if (!loop.ok()) {
+    spdlog::error("{}", loop.error());
+    return procs::kExitConfigError;
+  }
+  const StopPlanner stop_planner(*model, planner_options.base_limits.value_or(model->base_limits));
+  PlanWorker worker(*kinematics, planner_options, options.map.unknown, options.map.field_update_period_s);
+  PlannerNode node(&loop, &worker, *kinematics, stop_planner, options);
+  spdlog::info("{}: robot {}, planner {}, unknown voxels {}, replanning budget {:.2f} s", process.name,
+               model->name, options.planner_config, ToString(options.map.unknown),
+               options.timing.replan_budget_s);
+  const int code = loop.Run();
+  std::printf("%s", node.Report().c_str());
+  std::fflush(stdout);
+  return code;
+}

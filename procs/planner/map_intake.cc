@@ -1,0 +1,77 @@
+#include "procs/planner/map_intake.h"
+
+#include "core/map/voxel_boxes.h"
+
+namespace topay::planner {
+
+bool SameGeometry(const GridGeometry3& a, const GridGeometry3& b) {
+  return a.origin_W_m == b.origin_W_m && a.resolution_m == b.resolution_m && a.dims == b.dims;
+}
+
+MapIntake::MapIntake(UnknownVoxelPolicy unknown, const msgs::MapCodecOptions& codec)
+    : unknown_(unknown), receiver_(codec) {}
+
+std::optional<MapWork> MapIntake::Accept(const map_update_t& msg, msgs::MapAcceptResult* result) {
+  *result = receiver_.Accept(msg);
+  MapWork work;
+  work.map_seq = receiver_.map_seq();
+  work.map_utime = receiver_.utime();
+  work.geometry = receiver_.geometry();
+  if (result->outcome == msgs::MapUpdateOutcome::kDeltaApplied) {
+    for (const VoxelChange& c : result->changes) {
+      forwarded_[receiver_.geometry().Index(c.voxel.x(), c.voxel.y(), c.voxel.z())] =
+          static_cast<std::uint8_t>(c.state);
+    }
+    work.changes = result->changes;
+    return work;
+  }
+  if (result->outcome != msgs::MapUpdateOutcome::kSnapshotApplied) return std::nullopt;
+  const std::span<const std::uint8_t> states = receiver_.states();
+  if (forwarded_.size() != states.size() || !SameGeometry(forwarded_geometry_, receiver_.geometry())) {
+    forwarded_.assign(states.begin(), states.end());
+    forwarded_geometry_ = receiver_.geometry();
+    work.reset = true;
+    work.states = forwarded_;
+    return work;
+  }
+  // A snapshot of the grid held: only what differs (usually nothing: the deltas had it all).
+  const GridGeometry3& g = receiver_.geometry();
+  for (int iz = 0; iz < g.dims.z(); ++iz) {
+    for (int iy = 0; iy < g.dims.y(); ++iy) {
+      for (int ix = 0; ix < g.dims.x(); ++ix) {
+        const std::int64_t i = g.Index(ix, iy, iz);
+        if (forwarded_[i] == states[i]) continue;
+        forwarded_[i] = states[i];
+        work.changes.push_back({{ix, iy, iz}, static_cast<VoxelState>(states[i])});
+      }
+    }
+  }
+  if (work.changes.empty()) return std::nullopt;
+  return work;
+}
+
+std::vector<OrientedBox> MapIntake::BlockedBoxesNear(const Eigen::AlignedBox3d& region_W_m) const {
+  if (!receiver_.has_map()) return {};
+  const GridGeometry3& g = receiver_.geometry();
+  return BlockedVoxelBoxes(g, receiver_.states(), unknown_, VoxelsOverlapping(g, region_W_m));
+}
+
+bool MapIntake::NearBlocked(const Eigen::Vector3d& p_W, double clearance_m) const {
+  if (!receiver_.has_map()) return false;
+  const GridGeometry3& g = receiver_.geometry();
+  const Eigen::Vector3d r = Eigen::Vector3d::Constant(clearance_m);
+  const CellBox cells = VoxelsOverlapping(g, Eigen::AlignedBox3d(p_W - r, p_W + r));
+  for (int iz = cells.begin.z(); iz < cells.end.z(); ++iz) {
+    for (int iy = cells.begin.y(); iy < cells.end.y(); ++iy) {
+      for (int ix = cells.begin.x(); ix < cells.end.x(); ++ix) {
+        if (!VoxelBlocksPlanner(receiver_.state(ix, iy, iz), unknown_)) continue;
+        const Eigen::Vector3d lo = g.origin_W_m + g.resolution_m * Eigen::Vector3d(ix, iy, iz);
+        const Eigen::AlignedBox3d voxel(lo, lo + Eigen::Vector3d::Constant(g.resolution_m));
+        if (voxel.exteriorDistance(p_W) <= clearance_m) return true;
+      }
+    }
+  }
+  return false;
+}
+
+}  // namespace topay::planner

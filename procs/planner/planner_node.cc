@@ -1,0 +1,407 @@
+#include "procs/planner/planner_node.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include <fmt/format.h>
+#include <spdlog/spdlog.h>
+
+#include "core/collision/scene_clearance.h"
+#include "core/common/stopwatch.h"
+#include "procs/msgs/convert_trajectory.h"
+#include "topay/heartbeat_t.hpp"
+#include "topay/poly_trajectory_t.hpp"
+#include "topay_msgs/channels.h"
+
+namespace topay::planner {
+namespace {
+
+std::int64_t Micros(double seconds) { return static_cast<std::int64_t>(std::llround(seconds * 1e6)); }
+
+bool AtRest(const TrajectorySample& s, double rest_speed) {
+  return std::abs(s.v_mps) < rest_speed && std::abs(s.omega_radps) < rest_speed &&
+         (s.qd_radps.size() == 0 || s.qd_radps.cwiseAbs().maxCoeff() < rest_speed);
+}
+
+// A measured robot state as a plan's start: the pose and joints, with the measured rates and
+// zero accelerations.
+TrajectorySample StartFromEstimate(const msgs::RobotStateEstimate& robot) {
+  TrajectorySample s = MakeTrajectorySample(robot.state.num_joints());
+  s.state = robot.state;
+  s.v_mps = robot.v_mps;
+  s.omega_radps = robot.omega_radps;
+  if (robot.qdot_radps.size() == robot.state.q_rad.size()) s.qd_radps = robot.qdot_radps;
+  return s;
+}
+
+}  // namespace
+
+const char* ToString(PlanTrigger trigger) {
+  switch (trigger) {
+    case PlanTrigger::kGoal: return "goal";
+    case PlanTrigger::kMapCollision: return "map_collision";
+    case PlanTrigger::kDrift: return "drift";
+    case PlanTrigger::kRetry: return "retry";
+  }
+  return "?";
+}
+
+PlannerNode::PlannerNode(procs::ProcessLoop* loop, PlanWorker* worker, const Kinematics& kinematics,
+                         const StopPlanner& stop_planner, const PlannerProcessOptions& options)
+    : loop_(loop),
+      worker_(worker),
+      kinematics_(kinematics),
+      stop_planner_(stop_planner),
+      options_(options),
+      reach_(ComputeReachHeights(kinematics)),
+      map_(options.map.unknown) {
+  const std::string goal(channels::GOAL), state(channels::ROBOT_STATE), map(channels::MAP_UPDATE),
+      tracker(channels::TRACKER_STATUS);
+  loop->Subscribe<goal_t>(goal, [this](const goal_t& m) { OnGoal(m); });
+  loop->Subscribe<robot_state_t>(state, [this](const robot_state_t& m) { OnRobotState(m); });
+  loop->Subscribe<map_update_t>(map, [this](const map_update_t& m) { OnMap(m); });
+  loop->Subscribe<tracker_status_t>(tracker, [this](const tracker_status_t& m) { OnTrackerStatus(m); });
+  loop->AddTimer(0.01, [this] { Tick(); });
+  status_.state = planner_status_t::IDLE;
+  loop->SetHealth(heartbeat_t::OK, "waiting for a goal");
+}
+
+void PlannerNode::OnGoal(const goal_t& msg) {
+  ++counts_.goals;
+  std::string error;
+  const std::optional<msgs::PlanGoal> goal = msgs::FromMessage(msg, &error);
+  std::string reason = goal ? ScreenGoal(*goal, map_, reach_, options_.goals) : "bad goal: " + error;
+  if (goal_ && !goal_->done && worker_->busy()) {
+    worker_->Cancel();
+    ++counts_.goals_cancelled;
+    PublishStatus(planner_status_t::CANCELLED, "", fmt::format("goal {} superseded by goal {}",
+                                                               goal_->goal.goal_id, msg.goal_id));
+  }
+  if (!reason.empty()) {
+    ++counts_.goals_refused;
+    spdlog::warn("goal {} refused: {}", msg.goal_id, reason);
+    goal_.reset();
+    status_.goal_id = msg.goal_id;
+    PublishStatus(planner_status_t::FAILED, reason, "goal refused before planning");
+    return;
+  }
+  goal_ = GoalRecord{*goal};
+  pending_.reset();
+  retry_at_utime_ = 0;
+  RequestPlan(PlanTrigger::kGoal, fmt::format("new goal {}", goal->goal_id));
+}
+
+void PlannerNode::OnRobotState(const robot_state_t& msg) {
+  std::string error;
+  std::optional<msgs::RobotStateEstimate> robot = msgs::FromMessage(msg, &error);
+  if (!robot) {
+    spdlog::warn("ROBOT_STATE ignored: {}", error);
+    return;
+  }
+  robot_ = std::move(robot);
+  if (!active_ || active_->stopping || active_->EndedBy(robot_->utime) || !goal_ || goal_->done) return;
+  if (robot_->state.num_joints() != active_->trajectory->num_joints()) return;
+  const Drift d = MeasureDrift(*active_, *robot_);
+  const ReplanTriggerOptions& t = options_.triggers;
+  if (d.position_m > t.drift_position_m || d.yaw_rad > t.drift_yaw_rad || d.joint_rad > t.drift_joint_rad) {
+    RequestPlan(PlanTrigger::kDrift,
+                fmt::format("drift from trajectory {}: {:.3f} m, {:.3f} rad yaw, {:.3f} rad joint",
+                            active_->trajectory_id, d.position_m, d.yaw_rad, d.joint_rad));
+  }
+}
+
+void PlannerNode::OnMap(const map_update_t& msg) {
+  msgs::MapAcceptResult result;
+  std::optional<MapWork> work = map_.Accept(msg, &result);
+  if (result.outcome == msgs::MapUpdateOutcome::kRejected) {
+    ++counts_.maps_rejected;
+    spdlog::warn("MAP_UPDATE rejected: {}", result.reason);
+    return;
+  }
+  if (work) worker_->SubmitMap(std::move(*work));
+  if (result.outcome == msgs::MapUpdateOutcome::kSnapshotApplied ||
+      result.outcome == msgs::MapUpdateOutcome::kDeltaApplied) {
+    CheckActiveAgainstMap(procs::NowUtime());
+  }
+}
+
+void PlannerNode::OnTrackerStatus(const tracker_status_t& msg) { tracker_ = msg; }
+
+std::optional<PredictedCollision> PlannerNode::CheckAhead(const ArcYawTrajectory& trajectory,
+                                                           double t_from_s) const {
+  const double height_m = GridBounds(map_.receiver().geometry()).max().z();
+  Scene scene;
+  scene.boxes = map_.BlockedBoxesNear(SweptRegion(trajectory, t_from_s, trajectory.duration_s(),
+                                                  options_.triggers.check_reach_m, height_m));
+  if (scene.boxes.empty()) return std::nullopt;
+  const SceneClearanceChecker checker(kinematics_, scene);
+  return FirstPredictedCollision(trajectory, t_from_s, trajectory.duration_s(), checker,
+                                 options_.triggers.check);
+}
+
+void PlannerNode::CheckActiveAgainstMap(std::int64_t now) {
+  if (!active_ || active_->EndedBy(now) || !map_.has_map()) return;
+  const Stopwatch watch;
+  const std::optional<PredictedCollision> hit = CheckAhead(*active_->trajectory, active_->TimeAt(now));
+  const double ms = watch.ElapsedMs();
+  ++counts_.map_checks;
+  counts_.map_check_ms_sum += ms;
+  counts_.map_check_ms_max = std::max(counts_.map_check_ms_max, ms);
+  if (!hit) {
+    collision_utime_.reset();
+    return;
+  }
+  const std::int64_t at = active_->start_utime + Micros(hit->t_s);
+  const bool first = !collision_utime_;
+  collision_utime_ = at;
+  if (active_->stopping) return;  // braking already; the replans go on (retry)
+  const std::string reason =
+      fmt::format("map seq {}: trajectory {} collides {:.2f} s ahead (clearance {:.3f} m)",
+                  map_.receiver().map_seq(), active_->trajectory_id, 1e-6 * (at - now),
+                  hit->clearance.obstacle_m());
+  if (first) spdlog::info("{}", reason);
+  RequestPlan(PlanTrigger::kMapCollision, reason);
+}
+
+bool PlannerNode::FillStart(PlanTrigger trigger, std::int64_t now, PlanJob* job, std::string* error) const {
+  const PlanTimingOptions& t = options_.timing;
+  const std::int64_t t0 = now + Micros(t.replan_budget_s);
+  if (trigger != PlanTrigger::kDrift && active_ && !active_->EndedBy(t0)) {
+    job->start = active_->SampleAt(t0);  // where the robot will be at t0 on the trajectory
+    if (!AtRest(job->start, t.rest_speed) || active_->TimeAt(t0) > 0.0) {
+      job->from_rest = false;
+      job->t0_utime = t0;
+      job->time_limit_s = t.replan_budget_s - t.publish_margin_s;
+      return true;
+    }
+  }
+  if (!robot_) {
+    *error = "no ROBOT_STATE received yet";
+    return false;
+  }
+  job->start = StartFromEstimate(*robot_);
+  if (!AtRest(job->start, t.rest_speed)) {
+    // Moving off any trajectory of ours (drift, a restart): start at the measured state
+    // extrapolated to t0 with its measured rates.
+    job->from_rest = false;
+    job->t0_utime = t0;
+    job->time_limit_s = t.replan_budget_s - t.publish_margin_s;
+    const double dt = 1e-6 * (t0 - robot_->utime);
+    job->start.state.x_m += dt * job->start.v_mps * std::cos(job->start.state.yaw_rad);
+    job->start.state.y_m += dt * job->start.v_mps * std::sin(job->start.state.yaw_rad);
+    job->start.state.yaw_rad += dt * job->start.omega_radps;
+    job->start.state.q_rad += dt * job->start.qd_radps;
+    return true;
+  }
+  job->from_rest = true;
+  job->t0_utime = 0;
+  job->time_limit_s = t.from_rest_time_limit_s;
+  return true;
+}
+
+void PlannerNode::RequestPlan(PlanTrigger trigger, const std::string& reason) {
+  if (!goal_ || goal_->done) return;
+  if (trigger != PlanTrigger::kGoal && worker_->busy()) {
+    pending_ = {trigger, reason};  // after the plan in progress
+    return;
+  }
+  PlanJob job;
+  std::string error;
+  const std::int64_t now = procs::NowUtime();
+  if (!FillStart(trigger, now, &job, &error)) {
+    spdlog::warn("goal {}: cannot plan yet: {}", goal_->goal.goal_id, error);
+    retry_at_utime_ = now + Micros(options_.timing.retry_period_s);
+    PublishStatus(planner_status_t::PLANNING, "", "waiting: " + error);
+    return;
+  }
+  job.job_id = latest_job_ = ++job_seq_;
+  job.goal_id = goal_->goal.goal_id;
+  job.trigger = fmt::format("{}: {}", ToString(trigger), reason);
+  job.X_WE_goal = goal_->goal.X_WE;
+  job.hint = goal_->goal.hint;
+  job.certify_reachability = !goal_->planned_once && options_.goals.certify_reachability;
+  ++counts_.triggers[trigger];
+  if (trigger != PlanTrigger::kGoal && trigger != PlanTrigger::kRetry) ++goal_->replans;
+  retry_at_utime_ = 0;
+  spdlog::info("goal {}: plan {} ({}; {}, limit {:.2f} s)", job.goal_id, job.job_id, job.trigger,
+               job.from_rest ? "from rest" : "moving start", job.time_limit_s);
+  PublishStatus(planner_status_t::PLANNING, "", job.trigger);
+  worker_->SubmitPlan(std::move(job));
+}
+
+void PlannerNode::Tick() {
+  while (std::optional<PlanJobOutcome> outcome = worker_->TakeResult()) HandleOutcome(std::move(*outcome));
+  const std::int64_t now = procs::NowUtime();
+  MaybeSafeStop(now);
+  MaybeFinishGoal(now);
+  if (pending_ && !worker_->busy()) {
+    const auto [trigger, reason] = *pending_;
+    pending_.reset();
+    RequestPlan(trigger, reason);
+  }
+  if (retry_at_utime_ != 0 && now >= retry_at_utime_ && !worker_->busy()) {
+    RequestPlan(PlanTrigger::kRetry, "after a failed plan");
+  }
+  if (now - last_status_utime_ >= Micros(options_.status_period_s)) {
+    PublishStatus(status_.state, status_.failure_reason, status_.detail);
+  }
+}
+
+void PlannerNode::HandleOutcome(PlanJobOutcome outcome) {
+  if (outcome.job.job_id != latest_job_ || !goal_ || goal_->done ||
+      outcome.job.goal_id != goal_->goal.goal_id) {
+    return;  // superseded (a newer job or goal); its cancel was reported
+  }
+  const std::int64_t now = procs::NowUtime();
+  if (!outcome.result.success()) {
+    HandleFailure(outcome);
+    return;
+  }
+  if (!outcome.job.from_rest && now > outcome.job.t0_utime) {
+    ++counts_.results_dropped_late;
+    spdlog::warn("goal {}: plan {} came {:.0f} ms after its start time: dropped", outcome.job.goal_id,
+                 outcome.job.job_id, 1e-3 * (now - outcome.job.t0_utime));
+    RequestPlan(PlanTrigger::kRetry, "the last plan came too late");
+    return;
+  }
+  // The map may have changed while it planned: check it against the newest.
+  if (const auto hit = CheckAhead(*outcome.result.trajectory, 0.0)) {
+    ++counts_.results_colliding;
+    RequestPlan(PlanTrigger::kMapCollision,
+                fmt::format("plan {} collides with the newer map at {:.2f} s", outcome.job.job_id, hit->t_s));
+    return;
+  }
+  PublishTrajectory(outcome, now);
+}
+
+void PlannerNode::HandleFailure(const PlanJobOutcome& outcome) {
+  const WholeBodyPlanResult& r = outcome.result;
+  if (r.status == PlanStatus::kCancelled) return;
+  ++counts_.plans_failed;
+  spdlog::warn("goal {}: plan {} failed ({}): {}", outcome.job.goal_id, outcome.job.job_id,
+               ToString(r.status), r.failure_reason);
+  if (!goal_->planned_once && (outcome.certified_unreachable || outcome.job.from_rest)) {
+    goal_->done = true;  // the first plan from rest: the goal fails (the mission may resend it)
+    PublishStatus(planner_status_t::FAILED, r.failure_reason, outcome.job.trigger, &r);
+    return;
+  }
+  // A replan while moving: keep trying; the safe stop guards the trajectory under way.
+  retry_at_utime_ = procs::NowUtime() + Micros(options_.timing.retry_period_s);
+  PublishStatus(collision_utime_ ? planner_status_t::STOPPING : planner_status_t::PLANNING, "",
+                "replan failed, retrying: " + r.failure_reason, &r);
+}
+
+void PlannerNode::PublishTrajectory(const PlanJobOutcome& outcome, std::int64_t now) {
+  ActiveTrajectory active;
+  active.trajectory_id = ++trajectory_seq_;
+  active.goal_id = outcome.job.goal_id;
+  active.start_utime = outcome.job.from_rest ? now : outcome.job.t0_utime;
+  active.trajectory = std::make_shared<const ArcYawTrajectory>(*outcome.result.trajectory);
+  active_ = std::move(active);
+  collision_utime_.reset();
+  goal_->planned_once = true;
+  ++counts_.trajectories;
+  PublishActive("plan");
+  PublishStatus(planner_status_t::SUCCEEDED, "", outcome.job.trigger, &outcome.result);
+}
+
+void PlannerNode::PublishActive(const char* what) {
+  const ArcYawTrajectory& t = *active_->trajectory;
+  TrajectorySample start = t.MakePoint();
+  t.Evaluate(0.0, &start);
+  msgs::PolyTrajectory poly = msgs::FromArcYaw(t, {start.state.x_m, start.state.y_m});
+  poly.utime = procs::NowUtime();
+  poly.trajectory_id = active_->trajectory_id;
+  poly.goal_id = active_->goal_id;
+  poly.start_utime = active_->start_utime;
+  const poly_trajectory_t msg = msgs::ToMessage(poly);
+  loop_->lcm().publish(std::string(channels::TRAJECTORY), &msg);
+  spdlog::info("goal {}: {} trajectory {} out, {:.2f} s, starts in {:.0f} ms", active_->goal_id, what,
+               active_->trajectory_id, t.duration_s(), 1e-3 * (active_->start_utime - poly.utime));
+}
+
+void PlannerNode::MaybeSafeStop(std::int64_t now) {
+  if (!collision_utime_ || !active_ || active_->stopping || active_->EndedBy(now)) return;
+  const std::int64_t begin = now + Micros(options_.stop.latency_s);
+  std::string why;
+  std::optional<ArcYawTrajectory> stop =
+      stop_planner_.Make(*active_->trajectory, active_->TimeAt(begin), &why);
+  const double until_collision_s = 1e-6 * (*collision_utime_ - now);
+  const double needed_s = (stop ? stop->duration_s() : 0.0) + options_.stop.latency_s + options_.stop.margin_s;
+  if (until_collision_s > needed_s) return;
+  if (!stop) {
+    spdlog::error("goal {}: collision {:.2f} s ahead and no stopping trajectory: {}", active_->goal_id,
+                  until_collision_s, why);
+    return;
+  }
+  ActiveTrajectory s;
+  s.trajectory_id = ++trajectory_seq_;
+  s.goal_id = active_->goal_id;
+  s.start_utime = begin;
+  s.stopping = true;
+  s.trajectory = std::make_shared<const ArcYawTrajectory>(std::move(*stop));
+  active_ = std::move(s);
+  ++counts_.stops;
+  PublishActive("stopping");
+  PublishStatus(planner_status_t::STOPPING, "",
+                fmt::format("collision {:.2f} s ahead, no new trajectory yet: stopping", until_collision_s));
+  if (!worker_->busy()) RequestPlan(PlanTrigger::kRetry, "replanning after the safe stop");
+}
+
+void PlannerNode::MaybeFinishGoal(std::int64_t now) {
+  if (!goal_ || goal_->done || !active_ || active_->stopping || !active_->EndedBy(now)) return;
+  if (active_->goal_id != goal_->goal.goal_id || worker_->busy() || pending_) return;
+  goal_->done = true;  // its trajectory ran to the end: nothing more to replan
+  PublishStatus(planner_status_t::SUCCEEDED, "", fmt::format("trajectory {} ended", active_->trajectory_id));
+}
+
+void PlannerNode::PublishStatus(std::int8_t state, const std::string& reason, const std::string& detail,
+                                const WholeBodyPlanResult* result) {
+  status_.utime = procs::NowUtime();
+  status_.state = state;
+  status_.goal_id = goal_ ? goal_->goal.goal_id : status_.goal_id;
+  status_.trajectory_id = active_ ? active_->trajectory_id : 0;
+  status_.failure_reason = reason;
+  status_.detail = detail;
+  status_.replans = goal_ ? goal_->replans : 0;
+  if (result != nullptr) {
+    status_.front_end_ms = result->timings.search_ms;
+    status_.sampling_ms = result->timings.sampling_ms;
+    status_.optimization_ms = result->timings.optimization_ms;
+    status_.total_ms = result->timings.total_ms;
+  }
+  loop_->lcm().publish(std::string(channels::PLANNER_STATUS), &status_);
+  last_status_utime_ = status_.utime;
+  UpdateHealth();
+}
+
+void PlannerNode::UpdateHealth() {
+  static constexpr const char* kStates[] = {"IDLE", "PLANNING", "SUCCEEDED", "FAILED", "CANCELLED", "STOPPING"};
+  const int s = std::clamp<int>(status_.state, 0, 5);
+  const PlanWorkerCounts w = worker_->counts();
+  loop_->SetHealth(status_.state == planner_status_t::STOPPING ? heartbeat_t::WARN : heartbeat_t::OK,
+                   fmt::format("goal {} {}; trajectory {}; replans {}; map seq {}; field update {:.0f} ms",
+                               status_.goal_id, kStates[s], status_.trajectory_id, status_.replans,
+                               map_.receiver().map_seq(), w.last_flush_ms));
+}
+
+std::string PlannerNode::Report() const {
+  const PlanWorkerCounts w = worker_->counts();
+  std::string out = fmt::format(
+      "topay-planner: {} goals ({} refused, {} cancelled), {} trajectories, {} stops, {} plans "
+      "({} failed, {} cancelled, {} late, {} colliding with a newer map)\n",
+      counts_.goals, counts_.goals_refused, counts_.goals_cancelled, counts_.trajectories,
+      counts_.stops, w.plans, counts_.plans_failed, w.cancelled, counts_.results_dropped_late,
+      counts_.results_colliding);
+  out += "  triggers:";
+  for (const auto& [trigger, n] : counts_.triggers) out += fmt::format(" {} {}", ToString(trigger), n);
+  out += fmt::format("\n  map: {} checks of the trajectory ahead (mean {:.2f} ms, max {:.2f} ms), {} rejected; "
+                     "{} field updates (last {:.0f} ms, max {:.0f} ms)\n",
+                     counts_.map_checks,
+                     counts_.map_checks > 0 ? counts_.map_check_ms_sum / counts_.map_checks : 0.0,
+                     counts_.map_check_ms_max, counts_.maps_rejected, w.flushes, w.last_flush_ms,
+                     w.max_flush_ms);
+  return out;
+}
+
+}  // namespace topay::planner

@@ -1,0 +1,111 @@
+#pragma once
+// topay-planner on the bus: GOAL, ROBOT_STATE, MAP_UPDATE and TRACKER_STATUS in, TRAJECTORY and
+// PLANNER_STATUS out (docs/planner.md). The LCM thread only decides; the plans run on the
+// planning thread (PlanWorker). It replans when
+//  (a) a map update shows the rest of the current trajectory colliding (checked at once
+//      against the map's blocked voxels, exactly),
+//  (b) the robot has drifted from the trajectory beyond the tolerances,
+//  (c) the goal changed (a new goal cancels the plan in progress),
+// and, while the robot moves, a replan starts on the current trajectory at t0 = now + the
+// replanning budget and joins it there C2-continuously. If the trajectory ahead collides and
+// no new one comes before the robot must start braking, it publishes a stopping trajectory
+// along the current path and keeps trying.
+
+#include <cstdint>
+#include <map>
+#include <optional>
+#include <string>
+
+#include "core/optimization/trajectory_problem.h"
+#include "core/robot/kinematics.h"
+#include "procs/msgs/convert_goal.h"
+#include "procs/msgs/convert_robot_state.h"
+#include "procs/planner/active_trajectory.h"
+#include "procs/planner/goal_screen.h"
+#include "procs/planner/map_intake.h"
+#include "procs/planner/plan_worker.h"
+#include "procs/planner/planner_process_options.h"
+#include "procs/planner/stop_planner.h"
+#include "procs/runtime/process_loop.h"
+#include "topay/goal_t.hpp"
+#include "topay/map_update_t.hpp"
+#include "topay/planner_status_t.hpp"
+#include "topay/robot_state_t.hpp"
+#include "topay/tracker_status_t.hpp"
+
+namespace topay::planner {
+
+/// Why a plan was asked for.
+enum class PlanTrigger { kGoal, kMapCollision, kDrift, kRetry };
+const char* ToString(PlanTrigger trigger);
+
+/// What the node counted since its start (the heartbeat and the exit report).
+struct PlannerNodeCounts {
+  std::map<PlanTrigger, std::int64_t> triggers;
+  std::int64_t goals = 0, goals_refused = 0, goals_cancelled = 0;
+  std::int64_t trajectories = 0, stops = 0;
+  std::int64_t plans_failed = 0, results_dropped_late = 0, results_colliding = 0;
+  std::int64_t maps_rejected = 0, map_checks = 0;
+  double map_check_ms_max = 0.0, map_check_ms_sum = 0.0;
+};
+
+class PlannerNode {
+ public:
+  /// Subscribes and adds its timer to *loop (before Run). Everything passed outlives it.
+  PlannerNode(procs::ProcessLoop* loop, PlanWorker* worker, const Kinematics& kinematics,
+              const StopPlanner& stop_planner, const PlannerProcessOptions& options);
+
+  void OnGoal(const goal_t& msg);
+  void OnRobotState(const robot_state_t& msg);
+  void OnMap(const map_update_t& msg);
+  void OnTrackerStatus(const tracker_status_t& msg);
+  /// Every 10 ms: plan results, the safe stop, retries, the periodic status.
+  void Tick();
+
+  const PlannerNodeCounts& counts() const { return counts_; }
+  std::string Report() const;
+
+ private:
+  struct GoalRecord {
+    msgs::PlanGoal goal;
+    bool planned_once = false;  // a trajectory went out for it
+    bool done = false;          // failed, or its trajectory ended
+    int replans = 0;
+  };
+
+  void RequestPlan(PlanTrigger trigger, const std::string& reason);
+  bool FillStart(PlanTrigger trigger, std::int64_t now, PlanJob* job, std::string* error) const;
+  void HandleOutcome(PlanJobOutcome outcome);
+  void HandleFailure(const PlanJobOutcome& outcome);
+  void PublishTrajectory(const PlanJobOutcome& outcome, std::int64_t now);
+  void PublishActive(const char* what);
+  std::optional<PredictedCollision> CheckAhead(const ArcYawTrajectory& trajectory, double t_from_s) const;
+  void CheckActiveAgainstMap(std::int64_t now);
+  void MaybeSafeStop(std::int64_t now);
+  void MaybeFinishGoal(std::int64_t now);
+  void PublishStatus(std::int8_t state, const std::string& reason, const std::string& detail,
+                     const WholeBodyPlanResult* result = nullptr);
+  void UpdateHealth();
+
+  procs::ProcessLoop* loop_;
+  PlanWorker* worker_;
+  const Kinematics& kinematics_;
+  const StopPlanner& stop_planner_;
+  PlannerProcessOptions options_;
+  ReachHeights reach_;
+  MapIntake map_;
+  std::optional<msgs::RobotStateEstimate> robot_;
+  std::optional<tracker_status_t> tracker_;
+  std::optional<GoalRecord> goal_;
+  std::optional<ActiveTrajectory> active_;
+  std::optional<std::int64_t> collision_utime_;  // predicted collision on active_, if any
+  std::optional<std::pair<PlanTrigger, std::string>> pending_;  // asked for while busy
+  std::int64_t retry_at_utime_ = 0;               // 0: no retry scheduled
+  std::int64_t job_seq_ = 0, latest_job_ = 0;
+  std::int64_t trajectory_seq_ = 0;
+  planner_status_t status_{};
+  std::int64_t last_status_utime_ = 0;
+  PlannerNodeCounts counts_;
+};
+
+}  // namespace topay::planner

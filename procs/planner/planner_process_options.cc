@@ -1,0 +1,138 @@
+#include "procs/planner/planner_process_options.h"
+
+#include <cmath>
+#include <filesystem>
+
+#include "core/common/error.h"
+#include "core/io/yaml_section.h"
+
+namespace topay::planner {
+namespace {
+
+std::string Resolve(const std::string& path, const std::string& config_path) {
+  if (path.empty() || std::filesystem::path(path).is_absolute()) return path;
+  return (std::filesystem::path(config_path).parent_path() / path).string();
+}
+
+void ReadMap(YamlSection s, PlannerMapOptions* o) {
+  std::string unknown = ToString(o->unknown);
+  s.Read("unknown", &unknown);
+  const std::optional<UnknownVoxelPolicy> policy = ParseUnknownVoxelPolicy(unknown);
+  if (!policy) {
+    throw ConfigError(s.source(), s.FieldPath("unknown"),
+                      "expected free, occupied or occupied_in_base_bands, got '" + unknown + "'");
+  }
+  o->unknown = *policy;
+  s.Read("field_update_period_s", &o->field_update_period_s);
+  s.Finish();
+}
+
+void ReadTiming(YamlSection s, PlanTimingOptions* o) {
+  s.Read("from_rest_time_limit_s", &o->from_rest_time_limit_s);
+  s.Read("replan_budget_s", &o->replan_budget_s);
+  s.Read("publish_margin_s", &o->publish_margin_s);
+  s.Read("rest_speed", &o->rest_speed);
+  s.Read("retry_period_s", &o->retry_period_s);
+  s.Finish();
+}
+
+void ReadTriggers(YamlSection s, ReplanTriggerOptions* o) {
+  s.Read("check_sample_period_s", &o->check.sample_period_s);
+  s.Read("check_obstacle_margin_m", &o->check.obstacle_margin_m);
+  s.Read("drift_position_m", &o->drift_position_m);
+  s.Read("drift_yaw_rad", &o->drift_yaw_rad);
+  s.Read("drift_joint_rad", &o->drift_joint_rad);
+  s.Read("check_reach_m", &o->check_reach_m);
+  s.Finish();
+}
+
+void ReadStop(YamlSection s, SafeStopOptions* o) {
+  s.Read("latency_s", &o->latency_s);
+  s.Read("margin_s", &o->margin_s);
+  s.Finish();
+}
+
+void ReadGoals(YamlSection s, GoalCheckOptions* o) {
+  s.Read("target_clearance_m", &o->target_clearance_m);
+  s.Read("certify_reachability", &o->certify_reachability);
+  s.Finish();
+}
+
+void RequirePositive(double value, const std::string& source, const char* field) {
+  if (!(value > 0.0) || !std::isfinite(value)) {
+    throw ConfigError(source, field, "must be finite and > 0, got " + std::to_string(value));
+  }
+}
+
+void RequireNonNegative(double value, const std::string& source, const char* field) {
+  if (!(value >= 0.0) || !std::isfinite(value)) {
+    throw ConfigError(source, field, "must be finite and >= 0, got " + std::to_string(value));
+  }
+}
+
+}  // namespace
+
+std::optional<UnknownVoxelPolicy> ParseUnknownVoxelPolicy(const std::string& name) {
+  if (name == "free") return UnknownVoxelPolicy::kFree;
+  if (name == "occupied") return UnknownVoxelPolicy::kOccupied;
+  if (name == "occupied_in_base_bands") return UnknownVoxelPolicy::kOccupiedInBaseBands;
+  return std::nullopt;
+}
+
+const char* ToString(UnknownVoxelPolicy policy) {
+  switch (policy) {
+    case UnknownVoxelPolicy::kFree: return "free";
+    case UnknownVoxelPolicy::kOccupied: return "occupied";
+    case UnknownVoxelPolicy::kOccupiedInBaseBands: return "occupied_in_base_bands";
+  }
+  return "?";
+}
+
+void CheckPlannerProcessOptions(const PlannerProcessOptions& o, const std::string& source) {
+  RequirePositive(o.map.field_update_period_s, source, "map.field_update_period_s");
+  RequirePositive(o.timing.from_rest_time_limit_s, source, "timing.from_rest_time_limit_s");
+  RequirePositive(o.timing.publish_margin_s, source, "timing.publish_margin_s");
+  RequirePositive(o.timing.replan_budget_s - o.timing.publish_margin_s, source,
+                  "timing.replan_budget_s (minus publish_margin_s)");
+  RequirePositive(o.timing.rest_speed, source, "timing.rest_speed");
+  RequirePositive(o.timing.retry_period_s, source, "timing.retry_period_s");
+  RequirePositive(o.triggers.check.sample_period_s, source, "triggers.check_sample_period_s");
+  RequireNonNegative(o.triggers.check.obstacle_margin_m, source, "triggers.check_obstacle_margin_m");
+  RequirePositive(o.triggers.drift_position_m, source, "triggers.drift_position_m");
+  RequirePositive(o.triggers.drift_yaw_rad, source, "triggers.drift_yaw_rad");
+  RequirePositive(o.triggers.drift_joint_rad, source, "triggers.drift_joint_rad");
+  RequirePositive(o.triggers.check_reach_m, source, "triggers.check_reach_m");
+  RequireNonNegative(o.stop.latency_s, source, "stop.latency_s");
+  RequireNonNegative(o.stop.margin_s, source, "stop.margin_s");
+  RequireNonNegative(o.goals.target_clearance_m, source, "goals.target_clearance_m");
+  RequirePositive(o.status_period_s, source, "status_period_s");
+}
+
+PlannerProcessOptions LoadPlannerProcessOptions(const std::string& path) {
+  YAML::Node root;
+  try {
+    root = YAML::LoadFile(path);
+  } catch (const YAML::Exception& e) {
+    throw ConfigError(path, "", std::string("cannot read YAML: ") + e.what());
+  }
+  PlannerProcessOptions o;
+  o.source = path;
+  YamlSection top(root, path);
+  top.Read("robot_urdf", &o.robot_urdf);
+  top.Read("robot_yaml", &o.robot_yaml);
+  top.Read("planner_config", &o.planner_config);
+  o.robot_urdf = Resolve(o.robot_urdf, path);
+  o.robot_yaml = Resolve(o.robot_yaml, path);
+  o.planner_config = Resolve(o.planner_config, path);
+  ReadMap(top.Section("map"), &o.map);
+  ReadTiming(top.Section("timing"), &o.timing);
+  ReadTriggers(top.Section("triggers"), &o.triggers);
+  ReadStop(top.Section("stop"), &o.stop);
+  ReadGoals(top.Section("goals"), &o.goals);
+  top.Read("status_period_s", &o.status_period_s);
+  top.Finish();
+  CheckPlannerProcessOptions(o, path);
+  return o;
+}
+
+}  // namespace topay::planner

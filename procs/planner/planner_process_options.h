@@ -1,0 +1,105 @@
+#pragma once
+// topay-planner's own options (config/planner/planner.yaml): which robot and core planner
+// configuration, how the live map is taken in, when to replan and when to stop. The core
+// planner's options stay in their own file (config/planner/topay.yaml, core/io/planner_config.h).
+
+#include <optional>
+#include <string>
+
+#include "core/map/voxel_map_fields.h"
+#include "core/validate/trajectory_collision_scan.h"
+
+namespace topay::planner {
+
+/// How the planner takes in MAP_UPDATE.
+struct PlannerMapOptions {
+  /// How never-observed voxels count for the fields and the exact checks (docs/planner.md):
+  /// "free" (default: plan through unseen space; every scan is checked against the trajectory
+  /// ahead, so what appears there triggers a replan), "occupied", "occupied_in_base_bands".
+  UnknownVoxelPolicy unknown = UnknownVoxelPolicy::kFree;
+  /// Map changes reach the planner's distance fields in batches, at most this often (s), and
+  /// always before a plan starts: an update costs tens to hundreds of ms while the robot
+  /// drives into unseen space (docs/benchmarks.md), too much for every scan. > 0.
+  double field_update_period_s = 1.0;
+};
+
+/// When a plan starts and how long it may take.
+struct PlanTimingOptions {
+  /// A plan from rest (no trajectory under way) may take this long (s); the core planner's
+  /// time_limit_s is replaced by it. > 0.
+  double from_rest_time_limit_s = 3.0;
+  /// A replan while the robot moves starts at t0 = now + this budget (s) on the current
+  /// trajectory, so it must be on the bus before t0: its time limit is the budget less
+  /// publish_margin_s, and a result that comes after t0 is dropped. > publish_margin_s.
+  double replan_budget_s = 0.5;
+  double publish_margin_s = 0.05;
+  /// Below this base speed (m/s) and yaw rate (rad/s) and every joint rate (rad/s) the robot
+  /// counts as at rest (a plan from rest starts at its measured state).
+  double rest_speed = 0.02;
+  /// A failed replan is retried after this long (s) while the goal stands.
+  double retry_period_s = 0.3;
+};
+
+/// What makes the planner replan (each counted and logged with its reason).
+struct ReplanTriggerOptions {
+  /// The rest of the current trajectory is checked against every map update (exact, the
+  /// map's blocked voxels as boxes; TrajectoryCollisionScanOptions: every 0.02 s, margin 0).
+  TrajectoryCollisionScanOptions check;
+  /// The robot has drifted from the trajectory (ROBOT_STATE against the trajectory at the
+  /// state's time) by more than these: base position (m), yaw (rad), any joint (rad).
+  double drift_position_m = 0.3;
+  double drift_yaw_rad = 0.35;
+  double drift_joint_rad = 0.35;
+  /// The map check looks at the blocked voxels within this distance (m) of the base axis
+  /// along the rest of the trajectory: the robot's whole extent (arm stretched out over the
+  /// base) with room to spare. > 0.
+  double check_reach_m = 1.6;
+};
+
+/// The safe stop (a stopping trajectory along the current path).
+struct SafeStopOptions {
+  /// The stopping trajectory starts this long (s) after it is decided (its publication and
+  /// the tracker's reaction).
+  double latency_s = 0.1;
+  /// It is published when the predicted collision is less than its own duration + latency +
+  /// this margin (s) ahead and no new trajectory has come.
+  double margin_s = 0.5;
+};
+
+/// Goals the planner refuses at once (PLANNER_STATUS FAILED with the reason).
+struct GoalCheckOptions {
+  /// A target nearer than this (m) to a blocked voxel's box counts as inside an obstacle
+  /// (0: only a target inside one).
+  double target_clearance_m = 0.0;
+  /// Run the base reachability certificate (core/planning/base_reachability.h) on the map's
+  /// voxels: a target no base pose the robot can reach lets the arm touch fails at once.
+  bool certify_reachability = true;
+};
+
+struct PlannerProcessOptions {
+  std::string source;       ///< The file these came from ("" = defaults).
+  std::string robot_urdf;   ///< "" = the shipped robot (config/robot/topay_mm.urdf).
+  std::string robot_yaml;   ///< "" = config/robot/topay_mm.yaml.
+  std::string planner_config;  ///< Core planner YAML; "" = config/planner/topay.yaml.
+  PlannerMapOptions map;
+  PlanTimingOptions timing;
+  ReplanTriggerOptions triggers;
+  SafeStopOptions stop;
+  GoalCheckOptions goals;
+  /// PLANNER_STATUS is sent on every change and at least this often (s). > 0.
+  double status_period_s = 1.0;
+};
+
+/// Loads options from YAML (every key optional, relative paths from the file's folder).
+/// Throws ConfigError naming the file and the dotted field for an unreadable file, an
+/// unknown key or a value out of range.
+PlannerProcessOptions LoadPlannerProcessOptions(const std::string& path);
+
+/// Throws ConfigError (source `source`) for the first value out of range.
+void CheckPlannerProcessOptions(const PlannerProcessOptions& options, const std::string& source);
+
+/// "free", "occupied", "occupied_in_base_bands" <-> the policy (nullopt for another name).
+std::optional<UnknownVoxelPolicy> ParseUnknownVoxelPolicy(const std::string& name);
+const char* ToString(UnknownVoxelPolicy policy);
+
+}  // namespace topay::planner

@@ -1,0 +1,65 @@
+#include "procs/planner/active_trajectory.h"
+
+#include <gtest/gtest.h>
+
+namespace topay::planner {
+namespace {
+
+// 4 m along +x in 8 s from (1, 2), joints (2 of them) from 0 to 0.4 rad.
+ActiveTrajectory Drive() {
+  auto t = std::make_shared<ArcYawTrajectory>(2, 4, ArcYawTrajectory::Options{});
+  Eigen::MatrixXd head = Eigen::MatrixXd::Zero(4, 3), tail = Eigen::MatrixXd::Zero(4, 3);
+  tail(0, 0) = 4.0;
+  tail(2, 0) = tail(3, 0) = 0.4;
+  Eigen::MatrixXd waypoints(4, 3);
+  waypoints << 0.5, 2.0, 3.5, 0, 0, 0, 0.05, 0.2, 0.35, 0.05, 0.2, 0.35;
+  t->Update({1.0, 2.0}, head, tail, waypoints, Eigen::VectorXd::Constant(4, 2.0));
+  ActiveTrajectory active;
+  active.trajectory_id = 3;
+  active.start_utime = 1'000'000;
+  active.trajectory = t;
+  return active;
+}
+
+TEST(ActiveTrajectoryTest, SamplesAreClampedToTheTrajectory) {
+  const ActiveTrajectory a = Drive();
+  EXPECT_EQ(a.end_utime(), 9'000'000);
+  EXPECT_TRUE(a.EndedBy(9'000'000));
+  EXPECT_FALSE(a.EndedBy(8'999'999));
+  const TrajectorySample before = a.SampleAt(0);
+  EXPECT_NEAR(before.state.x_m, 1.0, 1e-12);
+  EXPECT_EQ(before.v_mps, 0.0);
+  const TrajectorySample mid = a.SampleAt(5'000'000);
+  EXPECT_NEAR(mid.state.x_m, 3.0, 1e-6);  // symmetric rest-to-rest profile: half way at half time
+  EXPECT_GT(mid.v_mps, 0.3);
+  const TrajectorySample after = a.SampleAt(20'000'000);
+  EXPECT_NEAR(after.state.x_m, 5.0, 1e-6);
+  EXPECT_NEAR(after.state.q_rad(1), 0.4, 1e-9);
+}
+
+TEST(ActiveTrajectoryTest, DriftIsMeasuredAtTheStatesTime) {
+  const ActiveTrajectory a = Drive();
+  msgs::RobotStateEstimate robot;
+  robot.utime = 5'000'000;
+  robot.state = a.SampleAt(robot.utime).state;
+  EXPECT_NEAR(MeasureDrift(a, robot).position_m, 0.0, 1e-12);
+  robot.state.y_m += 0.3;
+  robot.state.yaw_rad += 2 * M_PI + 0.1;  // wrapped
+  robot.state.q_rad(0) -= 0.2;
+  const Drift d = MeasureDrift(a, robot);
+  EXPECT_NEAR(d.position_m, 0.3, 1e-9);
+  EXPECT_NEAR(d.yaw_rad, 0.1, 1e-9);
+  EXPECT_NEAR(d.joint_rad, 0.2, 1e-9);
+}
+
+TEST(ActiveTrajectoryTest, SweptRegionHoldsTheBaseGrownByTheReach) {
+  const ActiveTrajectory a = Drive();
+  const Eigen::AlignedBox3d r = SweptRegion(*a.trajectory, 4.0, 100.0, 1.0, 1.6);
+  EXPECT_NEAR(r.min().x(), 3.0 - 1.1, 1e-6);
+  EXPECT_NEAR(r.max().x(), 5.0 + 1.1, 1e-6);
+  EXPECT_NEAR(r.min().y(), 2.0 - 1.1, 1e-9);
+  EXPECT_NEAR(r.max().z(), 1.6, 1e-12);
+}
+
+}  // namespace
+}  // namespace topay::planner

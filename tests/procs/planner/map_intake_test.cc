@@ -1,0 +1,78 @@
+#include "procs/planner/map_intake.h"
+
+#include <gtest/gtest.h>
+
+#include "procs/msgs/map_codec.h"
+#include "tests/procs/planner/planner_test_support.h"
+
+namespace topay::planner {
+namespace {
+
+TEST(MapIntakeTest, FirstSnapshotResetsThenDeltasAndMatchingSnapshotsGiveOnlyChanges) {
+  const GridGeometry3 g = testing::RoomGeometry();
+  std::vector<std::uint8_t> states = testing::StatesOf(g, testing::RoomBoxes());
+  MapIntake intake(UnknownVoxelPolicy::kFree);
+  msgs::MapAcceptResult result;
+  std::optional<MapWork> work = intake.Accept(msgs::EncodeFullMap(g, states, 100, 1), &result);
+  ASSERT_TRUE(work.has_value());
+  EXPECT_TRUE(work->reset);
+  EXPECT_EQ(work->states, states);
+  EXPECT_EQ(work->map_seq, 1);
+
+  const std::vector<VoxelChange> changes = {{{10, 20, 3}, VoxelState::kOccupied}, {{11, 20, 3}, VoxelState::kUnknown}};
+  work = intake.Accept(msgs::EncodeMapDelta(g, changes, 200, 2), &result);
+  ASSERT_TRUE(work.has_value());
+  EXPECT_FALSE(work->reset);
+  EXPECT_EQ(work->changes.size(), 2u);
+  EXPECT_EQ(work->map_seq, 2);
+
+  // The same map again as a snapshot: nothing to do.
+  for (const VoxelChange& c : changes) states[g.Index(c.voxel.x(), c.voxel.y(), c.voxel.z())] = static_cast<std::uint8_t>(c.state);
+  EXPECT_FALSE(intake.Accept(msgs::EncodeFullMap(g, states, 300, 3), &result).has_value());
+  EXPECT_EQ(result.outcome, msgs::MapUpdateOutcome::kSnapshotApplied);
+  // A snapshot that differs in one voxel: that voxel only.
+  states[g.Index(5, 5, 5)] = static_cast<std::uint8_t>(VoxelState::kOccupied);
+  work = intake.Accept(msgs::EncodeFullMap(g, states, 400, 4), &result);
+  ASSERT_TRUE(work.has_value());
+  ASSERT_EQ(work->changes.size(), 1u);
+  EXPECT_EQ(work->changes[0].voxel, Eigen::Vector3i(5, 5, 5));
+}
+
+TEST(MapIntakeTest, MalformedAndOutOfOrderMessagesGiveNoWork) {
+  const GridGeometry3 g = testing::RoomGeometry();
+  MapIntake intake(UnknownVoxelPolicy::kFree);
+  msgs::MapAcceptResult result;
+  map_update_t bad = msgs::EncodeFullMap(g, testing::StatesOf(g, {}), 1, 1);
+  bad.num_payload_voxels += 7;
+  EXPECT_FALSE(intake.Accept(bad, &result).has_value());
+  EXPECT_EQ(result.outcome, msgs::MapUpdateOutcome::kRejected);
+  const std::vector<VoxelChange> one = {{{1, 1, 1}, VoxelState::kOccupied}};
+  EXPECT_FALSE(intake.Accept(msgs::EncodeMapDelta(g, one, 2, 2), &result).has_value());
+  EXPECT_EQ(result.outcome, msgs::MapUpdateOutcome::kWaitingForSnapshot);
+  EXPECT_FALSE(intake.has_map());
+}
+
+TEST(MapIntakeTest, BlockedBoxesNearCoverTheOccupiedVoxelsOfTheRegionOnly) {
+  const GridGeometry3 g = testing::RoomGeometry();
+  MapIntake intake(UnknownVoxelPolicy::kFree);
+  msgs::MapAcceptResult result;
+  intake.Accept(msgs::EncodeFullMap(g, testing::StatesOf(g, testing::RoomBoxes()), 1, 1), &result);
+  // Around the table only: its voxels as boxes, none of the walls.
+  const std::vector<OrientedBox> boxes =
+      intake.BlockedBoxesNear({Eigen::Vector3d(-1, -1, 0), Eigen::Vector3d(1, 1, 1.6)});
+  ASSERT_FALSE(boxes.empty());
+  Eigen::AlignedBox3d covered;
+  for (const OrientedBox& b : boxes) {
+    covered.extend(b.center_W_m - 0.5 * b.size_m);
+    covered.extend(b.center_W_m + 0.5 * b.size_m);
+  }
+  EXPECT_NEAR(covered.min().x(), -0.5, 1e-9);
+  EXPECT_NEAR(covered.max().x(), 0.5, 1e-9);
+  EXPECT_NEAR(covered.max().z(), 0.75, 1e-9);
+  EXPECT_TRUE(intake.NearBlocked({0.0, 0.0, 0.5}, 0.0));
+  EXPECT_FALSE(intake.NearBlocked({0.0, 0.0, 1.0}, 0.2));
+  EXPECT_TRUE(intake.NearBlocked({0.0, 0.0, 0.9}, 0.2));
+}
+
+}  // namespace
+}  // namespace topay::planner

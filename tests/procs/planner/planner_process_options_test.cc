@@ -1,0 +1,51 @@
+#include "procs/planner/planner_process_options.h"
+
+#include <filesystem>
+#include <fstream>
+
+#include <gtest/gtest.h>
+
+#include "core/common/error.h"
+
+namespace topay::planner {
+namespace {
+
+std::string WriteYaml(const std::string& name, const std::string& text) {
+  const std::filesystem::path path = std::filesystem::temp_directory_path() / ("topay_planner_" + name + ".yaml");
+  std::ofstream(path) << text;
+  return path.string();
+}
+
+TEST(PlannerProcessOptionsTest, ShippedFileLoadsWithTheDefaults) {
+  const PlannerProcessOptions o = LoadPlannerProcessOptions(TOPAY_SOURCE_DIR "/config/planner/planner.yaml");
+  const PlannerProcessOptions d;
+  EXPECT_EQ(o.map.unknown, d.map.unknown);
+  EXPECT_EQ(o.timing.replan_budget_s, d.timing.replan_budget_s);
+  EXPECT_EQ(o.triggers.drift_position_m, d.triggers.drift_position_m);
+  EXPECT_EQ(o.stop.margin_s, d.stop.margin_s);
+  EXPECT_TRUE(std::filesystem::exists(o.planner_config)) << o.planner_config;
+}
+
+TEST(PlannerProcessOptionsTest, ValuesAreReadAndBadOnesNamed) {
+  const PlannerProcessOptions o = LoadPlannerProcessOptions(
+      WriteYaml("good", "map: {unknown: occupied, field_update_period_s: 0.5}\ntiming: {replan_budget_s: 0.4}\n"));
+  EXPECT_EQ(o.map.unknown, UnknownVoxelPolicy::kOccupied);
+  EXPECT_EQ(o.map.field_update_period_s, 0.5);
+  EXPECT_EQ(o.timing.replan_budget_s, 0.4);
+  const auto expect_error = [](const std::string& text, const std::string& field) {
+    try {
+      LoadPlannerProcessOptions(WriteYaml("bad", text));
+      ADD_FAILURE() << "accepted: " << text;
+    } catch (const ConfigError& e) {
+      EXPECT_NE(std::string(e.what()).find(field), std::string::npos) << e.what();
+    }
+  };
+  expect_error("map: {unknown: maybe}\n", "map.unknown");
+  expect_error("timing: {replan_budget_s: 0.01}\n", "replan_budget_s");
+  expect_error("triggers: {drift_position_m: -1}\n", "drift_position_m");
+  expect_error("stop: {latency: 1}\n", "stop.latency");
+  expect_error("status_period_s: .nan\n", "status_period_s");
+}
+
+}  // namespace
+}  // namespace topay::planner
