@@ -10,7 +10,7 @@
 #include "core/collision/scene_clearance.h"
 #include "core/common/random.h"
 #include "core/geometry/primitive_box_distance.h"
-#include "sim/scenes/base_reachability.h"
+#include "core/planning/base_reachability.h"
 #include "sim/scenes/quantize.h"
 #include "sim/scenes/task_sampling.h"
 

@@ -1,0 +1,230 @@
+// topay-planner as a real process over real LCM in a private network namespace (skipped, with
+// the reason, where none can be made). The test plays the mapper (MAP_UPDATE snapshots and
+// deltas of a small room), the robot (ROBOT_STATE at rest) and the mission (GOAL): a goal gets a
+// trajectory with its id, every bad goal a FAILED status with its reason at once, a box put on
+// the route triggers a replan, a flood of goals leaves the loop responsive and the last goal
+// planned.
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+
+#include "graph_test_support.h"
+#include "core/io/robot_loader.h"
+#include "core/robot/kinematics.h"
+#include "procs/msgs/convert_goal.h"
+#include "procs/msgs/convert_robot_state.h"
+#include "procs/msgs/convert_trajectory.h"
+#include "procs/msgs/map_codec.h"
+#include "procs/runtime/process_loop.h"
+#include "tests/common/arm_state.h"
+#include "tests/procs/planner/planner_test_support.h"
+#include "topay/planner_status_t.hpp"
+#include "topay/poly_trajectory_t.hpp"
+
+namespace topay::test {
+namespace {
+
+constexpr const char* kLcmUrl = "udpm://239.255.76.67:7667?ttl=0&recv_buf_size=8388608";
+
+struct PlannerListener {
+  std::vector<poly_trajectory_t> trajectories;
+  std::vector<planner_status_t> statuses;
+  void OnTrajectory(const lcm::ReceiveBuffer*, const std::string&, const poly_trajectory_t* m) { trajectories.push_back(*m); }
+  void OnStatus(const lcm::ReceiveBuffer*, const std::string&, const planner_status_t* m) { statuses.push_back(*m); }
+  // The last status for goal_id in `state` (nullptr if none).
+  const planner_status_t* Last(std::int64_t goal_id, std::int8_t state) const {
+    for (auto it = statuses.rbegin(); it != statuses.rend(); ++it) {
+      if (it->goal_id == goal_id && it->state == state) return &*it;
+    }
+    return nullptr;
+  }
+};
+
+class PlannerProcess : public testing::Test {
+ protected:
+  void SetUp() override {
+    std::string why;
+    if (!EnterTestNamespace(&why)) GTEST_SKIP() << why;
+    dir_ = TestDir("planner");
+    // Generous plan time: the tests share two cores with the rest of the suite. No drift
+    // trigger: the test's robot stays at its start while the planner's trajectories run.
+    WriteText(dir_ + "/planner.yaml", "planner_config: " + std::string(TOPAY_SOURCE_DIR) +
+                                          "/config/planner/topay.yaml\ntiming: {from_rest_time_limit_s: 20.0}\n"
+                                          "triggers: {drift_position_m: 100, drift_yaw_rad: 100, drift_joint_rad: 100}\n");
+    watcher_ = std::make_unique<HeartbeatWatcher>(kLcmUrl);
+    watcher_->lcm().subscribe(std::string(channels::TRAJECTORY), &PlannerListener::OnTrajectory, &out_);
+    watcher_->lcm().subscribe(std::string(channels::PLANNER_STATUS), &PlannerListener::OnStatus, &out_);
+    boxes_ = planner::testing::RoomBoxes();
+    boxes_.push_back(MakeBox({1.0, 0.0, 0.6}, {0.1, 8.0, 1.2}));  // splits the room at x = 1
+    planner_ = Spawn({BinDir() + "/topay-planner", "--config", dir_ + "/planner.yaml", "--name", "planner",
+                      "--lcm-url", kLcmUrl},
+                     dir_ + "/planner.txt");
+    ASSERT_TRUE(watcher_->SpinUntil([&] { return watcher_->last.contains("planner"); }, 10.0))
+        << ReadText(dir_ + "/planner.txt");
+    const GridGeometry3 g = planner::testing::RoomGeometry();
+    const map_update_t map = msgs::EncodeFullMap(g, planner::testing::StatesOf(g, boxes_), 1, 1);
+    watcher_->lcm().publish(std::string(channels::MAP_UPDATE), &map);
+  }
+  void TearDown() override {
+    if (planner_ > 0 && launch::ProcessAlive(planner_)) {
+      kill(planner_, SIGKILL);
+      WaitFor(planner_, 3.0);
+    }
+  }
+  // Spins until pred() or the timeout, publishing ROBOT_STATE (the robot at rest at start_)
+  // every 50 ms.
+  template <class Pred>
+  bool SpinWithRobot(Pred pred, double timeout_s) {
+    const Clock::time_point start = Clock::now();
+    Clock::time_point last = start - std::chrono::seconds(1);
+    while (!pred() && SecondsSince(start) < timeout_s) {
+      if (SecondsSince(last) >= 0.05) {
+        msgs::RobotStateEstimate robot;
+        robot.utime = procs::NowUtime();
+        robot.state = start_;
+        robot.qdot_radps = Eigen::VectorXd::Zero(7);
+        const robot_state_t msg = msgs::ToMessage(robot);
+        watcher_->lcm().publish(std::string(channels::ROBOT_STATE), &msg);
+        last = Clock::now();
+      }
+      watcher_->lcm().handleTimeout(5);
+    }
+    return pred();
+  }
+  goal_t Goal(std::int64_t id, const Eigen::Vector3d& p_WE) const {
+    msgs::PlanGoal goal;
+    goal.utime = procs::NowUtime();
+    goal.goal_id = id;
+    goal.X_WE = kinematics_.EndEffectorPose(BentArmState(-1.0, 2.0, 1.0));
+    goal.X_WE.translation() = p_WE;
+    return msgs::ToMessage(goal);
+  }
+  goal_t ReachableGoal(std::int64_t id) const {
+    msgs::PlanGoal goal;
+    goal.utime = procs::NowUtime();
+    goal.goal_id = id;
+    goal.hint = BentArmState(-1.0, 2.0, 1.0);
+    goal.X_WE = kinematics_.EndEffectorPose(*goal.hint);
+    return msgs::ToMessage(goal);
+  }
+  void Send(const goal_t& goal) { watcher_->lcm().publish(std::string(channels::GOAL), &goal); }
+
+  RobotModel model_ = LoadRobotModel(TOPAY_SOURCE_DIR "/config/robot/topay_mm.urdf",
+                                     TOPAY_SOURCE_DIR "/config/robot/topay_mm.yaml");
+  Kinematics kinematics_{model_};
+  WholeBodyState start_ = BentArmState(-2.5, -2.5, 0.0);
+  std::vector<OrientedBox> boxes_;
+  std::string dir_;
+  pid_t planner_ = -1;
+  std::unique_ptr<HeartbeatWatcher> watcher_;
+  PlannerListener out_;
+};
+
+TEST_F(PlannerProcess, AGoalGetsATrajectoryWithItsIdStartingAtTheRobot) {
+  Send(ReachableGoal(11));
+  ASSERT_TRUE(SpinWithRobot([&] { return out_.Last(11, planner_status_t::SUCCEEDED) != nullptr; }, 60.0))
+      << ReadText(dir_ + "/planner.txt");
+  ASSERT_FALSE(out_.trajectories.empty());
+  const poly_trajectory_t& t = out_.trajectories.back();
+  EXPECT_EQ(t.goal_id, 11);
+  EXPECT_EQ(out_.Last(11, planner_status_t::SUCCEEDED)->trajectory_id, t.trajectory_id);
+  std::string error;
+  const auto poly = msgs::FromMessage(t, &error);
+  ASSERT_TRUE(poly.has_value()) << error;
+  EXPECT_NEAR(poly->p0_W_m.x(), start_.x_m, 1e-3);
+  EXPECT_NEAR(poly->p0_W_m.y(), start_.y_m, 1e-3);
+  EXPECT_NEAR(poly->yaw0_rad, start_.yaw_rad, 1e-3);
+  EXPECT_NEAR((poly->Evaluate(0.0).tail(7) - start_.q_rad).cwiseAbs().maxCoeff(), 0.0, 1e-3);
+  EXPECT_GT(out_.Last(11, planner_status_t::SUCCEEDED)->total_ms, 0.0);
+}
+
+TEST_F(PlannerProcess, EveryBadGoalFailsAtOnceWithItsReason) {
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  struct Case {
+    goal_t goal;
+    std::string reason;
+  };
+  std::vector<Case> cases;
+  cases.push_back({Goal(21, {nan, 0.0, 0.5}), "bad goal"});
+  goal_t skew = Goal(22, {-1.0, 2.0, 0.5});
+  skew.quat_WE[0] = 2.0;
+  cases.push_back({skew, "bad goal"});
+  cases.push_back({Goal(23, {9.0, 0.0, 0.5}), "outside the map"});
+  cases.push_back({Goal(24, {0.0, 0.0, 0.4}), "inside an obstacle"});
+  cases.push_back({Goal(25, {-1.0, 2.0, 3.0}), "outside the arm's reach"});
+  cases.push_back({Goal(26, {3.0, 0.0, 0.5}), "unreachable"});  // beyond the wall at x = 1
+  for (const Case& c : cases) {
+    Send(c.goal);
+    const std::int64_t id = c.goal.goal_id;
+    ASSERT_TRUE(SpinWithRobot([&] { return out_.Last(id, planner_status_t::FAILED) != nullptr; }, 30.0))
+        << "goal " << id << "\n" << ReadText(dir_ + "/planner.txt");
+    EXPECT_NE(out_.Last(id, planner_status_t::FAILED)->failure_reason.find(c.reason), std::string::npos)
+        << "goal " << id << ": " << out_.Last(id, planner_status_t::FAILED)->failure_reason;
+  }
+  EXPECT_TRUE(out_.trajectories.empty());
+  EXPECT_TRUE(launch::ProcessAlive(planner_));
+}
+
+TEST_F(PlannerProcess, ABoxOnTheRouteTriggersAReplanThatAvoidsIt) {
+  Send(ReachableGoal(31));
+  ASSERT_TRUE(SpinWithRobot([&] { return !out_.trajectories.empty(); }, 60.0)) << ReadText(dir_ + "/planner.txt");
+  std::string error;
+  const auto first = msgs::FromMessage(out_.trajectories.back(), &error);
+  ASSERT_TRUE(first.has_value()) << error;
+  // A pillar where the first trajectory's base is 60 % of the way (still ahead of the robot,
+  // which the planner believes is driving it).
+  const double t_mid = 0.6 * first->durations_s.sum();
+  // The base position there: integrate x, y numerically from p0 along s and yaw.
+  Eigen::Vector2d p = first->p0_W_m;
+  const int n = 2000;
+  for (int k = 0; k < n; ++k) {
+    const double ta = t_mid * k / n, tb = t_mid * (k + 1) / n;
+    const Eigen::VectorXd a = first->Evaluate(ta), b = first->Evaluate(tb);
+    const double yaw = 0.5 * (a(1) + b(1));
+    p += (b(0) - a(0)) * Eigen::Vector2d(std::cos(yaw), std::sin(yaw));
+  }
+  const GridGeometry3 g = planner::testing::RoomGeometry();
+  std::vector<VoxelChange> pillar;
+  const CellBox cells = VoxelsOverlapping(g, {Eigen::Vector3d(p.x() - 0.15, p.y() - 0.15, 0.0),
+                                              Eigen::Vector3d(p.x() + 0.15, p.y() + 0.15, 1.0)});
+  for (int iz = cells.begin.z(); iz < cells.end.z(); ++iz)
+    for (int iy = cells.begin.y(); iy < cells.end.y(); ++iy)
+      for (int ix = cells.begin.x(); ix < cells.end.x(); ++ix) pillar.push_back({{ix, iy, iz}, VoxelState::kOccupied});
+  const map_update_t delta = msgs::EncodeMapDelta(g, pillar, procs::NowUtime(), 2);
+  watcher_->lcm().publish(std::string(channels::MAP_UPDATE), &delta);
+  const std::size_t before = out_.trajectories.size();
+  ASSERT_TRUE(SpinWithRobot([&] { return out_.trajectories.size() > before; }, 30.0)) << ReadText(dir_ + "/planner.txt");
+  const poly_trajectory_t& second = out_.trajectories.back();
+  EXPECT_EQ(second.goal_id, 31);
+  EXPECT_GT(second.trajectory_id, out_.trajectories[before - 1].trajectory_id);
+  bool said_why = false;
+  for (const planner_status_t& s : out_.statuses) said_why |= s.detail.find("collides") != std::string::npos;
+  EXPECT_TRUE(said_why);
+  EXPECT_GE(out_.statuses.back().replans, 1);
+}
+
+TEST_F(PlannerProcess, AGoalFloodLeavesTheLoopResponsiveAndTheLastGoalPlanned) {
+  const int pid_before = watcher_->last["planner"].pid;
+  const int beats_before = watcher_->last["planner"].count;
+  const Clock::time_point start = Clock::now();
+  for (int k = 0; k < 100; ++k) {  // 100 Hz for 1 s
+    Send(ReachableGoal(100 + k));
+    SpinWithRobot([] { return false; }, 0.01);
+  }
+  ASSERT_TRUE(SpinWithRobot([&] { return out_.Last(199, planner_status_t::SUCCEEDED) != nullptr; }, 60.0))
+      << ReadText(dir_ + "/planner.txt");
+  // Heartbeats kept coming (1 Hz) and the superseded goals were reported cancelled.
+  const double elapsed = SecondsSince(start);
+  EXPECT_GE(watcher_->last["planner"].count - beats_before, static_cast<int>(elapsed) - 2);
+  EXPECT_EQ(watcher_->last["planner"].pid, pid_before);
+  int cancelled = 0;
+  for (const planner_status_t& s : out_.statuses) cancelled += s.state == planner_status_t::CANCELLED;
+  EXPECT_GE(cancelled, 1);
+  ASSERT_FALSE(out_.trajectories.empty());
+  EXPECT_EQ(out_.trajectories.back().goal_id, 199);
+}
+
+}  // namespace
+}  // namespace topay::test
