@@ -92,7 +92,7 @@ void SimNode::OnTrajectory(const poly_trajectory_t& msg) {
     spdlog::info("TRAJECTORY {} (goal {}) accepted: {} pieces, starts in {:.3f} s", msg.trajectory_id, msg.goal_id,
                  msg.num_pieces, static_cast<double>(msg.start_utime - NowSimUtime()) * 1e-6);
   } else if (Every(follower_->counts().rejected)) {
-    spdlog::warn("rejected TRAJECTORY {} (#{}): {}; the robot holds", msg.trajectory_id,
+    spdlog::warn("rejected TRAJECTORY {} (#{}): {}; ignored", msg.trajectory_id,
                  follower_->counts().rejected, why);
   }
 }
