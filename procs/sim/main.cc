@@ -104,6 +104,9 @@ int main(int argc, char** argv) {
   try {
     options = ResolveOptions(process, flags);
     sim = simproc::AssembleSim(options);
+    if (!flags.replay_log.empty() && options.follow) {
+      throw ConfigError(options.source, "follow", "--replay-commands replays CONTROL_COMMANDs: not in follow mode");
+    }
     if (!flags.replay_log.empty()) return ReplayCommandLog(&sim, flags.replay_log, flags.duration_s.value_or(0.0));
   } catch (const ConfigError& e) {
     spdlog::error("{}", e.what());

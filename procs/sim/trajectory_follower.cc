@@ -9,6 +9,9 @@
 namespace topay::simproc {
 namespace {
 
+// Largest |start_utime - now| and duration accepted, s (11.6 days; keeps utimes far from overflow).
+constexpr double kMaxTimeS = 1e6;
+
 double Seconds(std::int64_t from_utime, std::int64_t to_utime) { return static_cast<double>(to_utime - from_utime) * 1e-6; }
 
 sim::PlantState FromSample(const TrajectorySample& sample, double gripper) {
@@ -75,11 +78,19 @@ std::string TrajectoryFollower::Check(const poly_trajectory_t& msg, std::int64_t
   if (msg.num_joints != num_joints_) {
     return "num_joints " + std::to_string(msg.num_joints) + ", the robot has " + std::to_string(num_joints_);
   }
+  const double start_in_s = (static_cast<double>(msg.start_utime) - static_cast<double>(now_utime)) * 1e-6;
+  if (!(std::abs(start_in_s) <= kMaxTimeS)) {
+    return "start_utime " + std::to_string(msg.start_utime) + " is " + std::to_string(start_in_s) +
+           " s from the sim's time (at most 1e6 s)";
+  }
   std::string error;
   const std::optional<msgs::PolyTrajectory> poly = msgs::FromMessage(msg, &error);
   if (!poly) return error;
   std::optional<ArcYawTrajectory> trajectory = msgs::ToArcYaw(*poly, options_.rebuild, &error);
   if (!trajectory) return error;
+  if (!(trajectory->duration_s() <= kMaxTimeS)) {
+    return "lasts " + std::to_string(trajectory->duration_s()) + " s (at most 1e6 s)";
+  }
   const std::int64_t end_utime = msg.start_utime + std::llround(trajectory->duration_s() * 1e6);
   if (end_utime < now_utime) {
     return "ended " + std::to_string(Seconds(end_utime, now_utime)) + " s before it arrived";

@@ -39,8 +39,9 @@ class TrajectoryFollower {
   TrajectoryFollower(int num_joints, const TrajectoryFollowerOptions& options);
 
   /// "" if `msg` is accepted (it waits for its start_utime, replacing any other waiting one),
-  /// else why not (counted): a wrong joint count, a malformed message (msgs::FromMessage), not
-  /// a MINCO trajectory (msgs::ToArcYaw), already ended at now_utime, or starting further than
+  /// else why not (counted): a wrong joint count, a start_utime or a duration beyond 1e6 s from
+  /// now, a malformed message (msgs::FromMessage), not a MINCO trajectory (msgs::ToArcYaw),
+  /// already ended at now_utime, or starting further than
   /// the options allow from where the robot is at its start_utime (`current`, the plant's state
   /// at now_utime, carried along the trajectory followed now).
   std::string Accept(const poly_trajectory_t& msg, std::int64_t now_utime, const sim::PlantState& current);

@@ -134,7 +134,13 @@ TEST(TrajectoryFollower, RejectsMalformedAndFarTrajectoriesAndKeepsHolding) {
   elsewhere.state.q_rad[6] += 0.5;
   EXPECT_NE(rejected(good, elsewhere).find("a joint 0.5 rad"), std::string::npos);
   EXPECT_NE(follower.Accept(good, At(2.5), robot).find("before it arrived"), std::string::npos);
-  EXPECT_EQ(follower.counts().rejected, 9);
+  msg = good;
+  msg.start_utime = INT64_MAX;
+  EXPECT_NE(rejected(msg).find("from the sim's time"), std::string::npos);
+  msg = good;
+  for (double& d : msg.durations_s) d *= 1e7;  // (coefficients unchanged: also no MINCO solution)
+  EXPECT_FALSE(rejected(msg).empty());
+  EXPECT_EQ(follower.counts().rejected, 11);
   EXPECT_EQ(follower.counts().accepted, 0);
   // Nothing to follow: held.
   ExpectAtRestAt(follower.StateAt(At(1.0), robot), robot);
