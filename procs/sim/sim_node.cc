@@ -188,9 +188,9 @@ void SimNode::OnStatusTimer() {
   loop_->lcm().publish(std::string(channels::SIM_STATUS), &s);
 
   const bool rejected = s.commands_rejected > 0 || (follower_ && follower_->counts().rejected > 0);
-  const std::int8_t health = s.in_contact                              ? heartbeat_t::ERROR
+  const std::int8_t health = s.in_contact                         ? heartbeat_t::ERROR
                              : (s.contact_events > 0 || rejected) ? heartbeat_t::WARN
-                                                                       : heartbeat_t::OK;
+                                                                  : heartbeat_t::OK;
   loop_->SetHealth(health, fmt::format("t {:.1f} s, rtf {:.2f}, contacts {}{}, scans {}, {}, step p99 late {:.0f} us",
                                        s.sim_time_s, s.real_time_factor, s.contact_events,
                                        s.in_contact ? " (IN CONTACT)" : "", s.scans,
