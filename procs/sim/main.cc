@@ -1,7 +1,7 @@
 // topay-sim: the simulator of the graph (docs/simulator.md). The world (scene file or generated
 // room), the robot plant at 500 Hz, localisation, LiDAR, the ground-truth collision monitor and
-// scripted events; CONTROL_COMMAND and SIM_EVENT in; ROBOT_STATE, BASE_POSE, POINT_CLOUD,
-// SIM_CONTACT, SIM_STATUS out. Exit codes: 0, 1 config or file error, 2 usage error.
+// scripted events; CONTROL_COMMAND (or, with --follow, TRAJECTORY followed exactly) and SIM_EVENT
+// in; ROBOT_STATE, BASE_POSE, POINT_CLOUD, SIM_CONTACT, SIM_STATUS out. Exit codes: 0, 1 config or file error, 2 usage error.
 
 #include <CLI/CLI.hpp>
 #include <spdlog/spdlog.h>
@@ -28,6 +28,7 @@ struct Flags {
   std::optional<double> rate, duration_s;
   std::optional<std::int64_t> start_utime;
   bool max_speed = false;
+  bool follow = false;
 };
 
 void AddSimFlags(CLI::App* app, Flags* f) {
@@ -40,9 +41,13 @@ void AddSimFlags(CLI::App* app, Flags* f) {
   app->add_flag("--max-speed", f->max_speed, "step as fast as possible (no real-time pacing)")->excludes(rate);
   app->add_option("--duration", f->duration_s, "stop after this much sim time, s")->check(CLI::PositiveNumber);
   app->add_option("--start-utime", f->start_utime, "utime of sim time 0, us (default: the wall clock at start)");
-  app->add_option("--replay-commands", f->replay_log,
-                  "lockstep: feed the CONTROL_COMMANDs of this LCM log at their own times, as fast as possible, "
-                  "print the output digests and exit (no LCM traffic)");
+  auto* replay = app->add_option("--replay-commands", f->replay_log,
+                                 "lockstep: feed the CONTROL_COMMANDs of this LCM log at their own times, as fast as "
+                                 "possible, print the output digests and exit (no LCM traffic)");
+  app->add_flag("--follow", f->follow,
+                "ideal follower: the robot follows TRAJECTORY exactly instead of CONTROL_COMMAND (the config's "
+                "`follow`)")
+      ->excludes(replay);
 }
 
 simproc::SimOptions ResolveOptions(const procs::ProcessOptions& process, const Flags& f) {
@@ -59,6 +64,7 @@ simproc::SimOptions ResolveOptions(const procs::ProcessOptions& process, const F
   if (f.rate) o.rate = *f.rate;
   if (f.max_speed) o.rate = 0.0;
   if (f.start_utime) o.start_utime = *f.start_utime;
+  if (f.follow) o.follow = true;
   return o;
 }
 
@@ -98,15 +104,19 @@ int main(int argc, char** argv) {
   try {
     options = ResolveOptions(process, flags);
     sim = simproc::AssembleSim(options);
+    if (!flags.replay_log.empty() && options.follow) {
+      throw ConfigError(options.source, "follow", "--replay-commands replays CONTROL_COMMANDs: not in follow mode");
+    }
     if (!flags.replay_log.empty()) return ReplayCommandLog(&sim, flags.replay_log, flags.duration_s.value_or(0.0));
   } catch (const ConfigError& e) {
     spdlog::error("{}", e.what());
     return procs::kExitConfigError;
   }
-  spdlog::info("{}: robot {} ({} joints), scene {}, {} scripted events, LiDAR {}, monitor {}, rate {}", process.name,
-               sim.model->name, sim.model->num_joints(), sim.scene_description, sim.num_scripted_events,
+  spdlog::info("{}: robot {} ({} joints), scene {}, {} scripted events, LiDAR {}, monitor {}, rate {}, driven by {}",
+               process.name, sim.model->name, sim.model->num_joints(), sim.scene_description, sim.num_scripted_events,
                sim.core->has_lidar() ? "on" : "off", sim.core->contact_sensor() != nullptr ? "on" : "off",
-               options.rate > 0.0 ? fmt::format("{}x real time", options.rate) : std::string("as fast as possible"));
+               options.rate > 0.0 ? fmt::format("{}x real time", options.rate) : std::string("as fast as possible"),
+               options.follow ? "TRAJECTORY (ideal follower)" : "CONTROL_COMMAND");
 
   procs::ProcessLoop loop(process);
   if (!loop.ok()) {
@@ -120,6 +130,8 @@ int main(int argc, char** argv) {
   node_options.status_rate_hz = options.status_rate_hz;
   node_options.duration_s = flags.duration_s.value_or(0.0);
   node_options.joint_names = sim.model->joint_names;
+  node_options.follow = options.follow;
+  node_options.follower = options.follower;
   simproc::SimNode node(&loop, sim.core.get(), node_options);
   const int code = loop.Run();
   node.Finish();

@@ -45,6 +45,15 @@ void SimCore::SyncWorld() {
 
 void SimCore::Step() {
   plant_.Step();
+  AfterPlantStep();
+}
+
+void SimCore::StepTo(const sim::PlantState& target) {
+  plant_.StepTo(target);
+  AfterPlantStep();
+}
+
+void SimCore::AfterPlantStep() {
   const double t_s = plant_.time_s();
   const WholeBodyState& state = plant_.state().state;
 

@@ -77,6 +77,10 @@ class SimCore {
 
   /// One plant step, then due events, the monitor, and the outputs due at the new time.
   void Step();
+  /// One plant step to `target` (Plant::StepTo: the ideal follower), then as Step.
+  void StepTo(const sim::PlantState& target);
+  /// The time the next step reaches, s.
+  double next_time_s() const { return static_cast<double>(plant_.step_count() + 1) * plant_.step_s(); }
 
   double time_s() const { return plant_.time_s(); }
   std::int64_t steps() const { return plant_.step_count(); }
@@ -96,6 +100,8 @@ class SimCore {
 
  private:
   void SyncWorld();
+  /// After the plant step: due events, the monitor, the outputs.
+  void AfterPlantStep();
 
   sim::Plant plant_;
   sim::SimWorld world_;

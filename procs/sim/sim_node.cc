@@ -31,6 +31,11 @@ SimNode::SimNode(procs::ProcessLoop* loop, SimCore* core, const SimNodeOptions& 
   }
   loop_->Subscribe<control_command_t>(std::string(channels::CONTROL_COMMAND),
                                       [this](const control_command_t& msg) { OnCommand(msg); });
+  if (options.follow) {
+    follower_ = std::make_unique<TrajectoryFollower>(core_->plant().model().num_joints(), options.follower);
+    loop_->Subscribe<poly_trajectory_t>(std::string(channels::TRAJECTORY),
+                                        [this](const poly_trajectory_t& msg) { OnTrajectory(msg); });
+  }
   loop_->Subscribe<sim_event_t>(std::string(channels::SIM_EVENT), [this](const sim_event_t& msg) { OnSimEvent(msg); });
   loop_->AddScheduledTimer([this] { return OnPlantTimer(); });
   loop_->AddTimer(1.0 / options.status_rate_hz, [this] { OnStatusTimer(); });
@@ -51,7 +56,7 @@ RealTimePacer::Clock::time_point SimNode::OnPlantTimer() {
   }
   const int due = pacer_.StepsDue(now, core_->steps() - steps_at_start_);
   for (int i = 0; i < due; ++i) {
-    core_->Step();
+    StepOnce();
     pacer_.RecordStep(RealTimePacer::Clock::now(), core_->steps() - steps_at_start_);
     if (options_.duration_s > 0.0 && core_->time_s() >= options_.duration_s - 1e-9) {
       loop_->Stop();
@@ -67,7 +72,36 @@ RealTimePacer::Clock::time_point SimNode::OnPlantTimer() {
   return options_.rate > 0.0 ? pacer_.NextDue(core_->steps() - steps_at_start_) : RealTimePacer::Clock::now();
 }
 
+void SimNode::StepOnce() {
+  if (!follower_) {
+    core_->Step();
+    return;
+  }
+  const std::int64_t utime = SimUtime(start_utime_, core_->next_time_s());
+  core_->StepTo(follower_->StateAt(utime, core_->plant().state()));
+}
+
+std::int64_t SimNode::NowSimUtime() const {
+  if (started_) return SimUtime(start_utime_, core_->time_s());
+  return options_.start_utime > 0 ? SimUtime(options_.start_utime, core_->time_s()) : procs::NowUtime();
+}
+
+void SimNode::OnTrajectory(const poly_trajectory_t& msg) {
+  const std::string why = follower_->Accept(msg, NowSimUtime(), core_->plant().state());
+  if (why.empty()) {
+    spdlog::info("TRAJECTORY {} (goal {}) accepted: {} pieces, starts in {:.3f} s", msg.trajectory_id, msg.goal_id,
+                 msg.num_pieces, static_cast<double>(msg.start_utime - NowSimUtime()) * 1e-6);
+  } else if (Every(follower_->counts().rejected)) {
+    spdlog::warn("rejected TRAJECTORY {} (#{}): {}; ignored", msg.trajectory_id,
+                 follower_->counts().rejected, why);
+  }
+}
+
 void SimNode::OnCommand(const control_command_t& msg) {
+  if (follower_) {
+    if (++commands_ignored_ == 1) spdlog::info("follow mode: CONTROL_COMMAND ignored (counted)");
+    return;
+  }
   const std::string why = core_->Command(ToActuatorCommand(msg));
   if (!why.empty() && Every(core_->plant().counts().commands_rejected)) {
     spdlog::warn("rejected command #{} ({}): the drives brake", core_->plant().counts().commands_rejected, why);
@@ -153,20 +187,32 @@ void SimNode::OnStatusTimer() {
   last_status_ = s;
   loop_->lcm().publish(std::string(channels::SIM_STATUS), &s);
 
-  const std::int8_t health = s.in_contact ? heartbeat_t::ERROR
-                             : (s.contact_events > 0 || s.commands_rejected > 0) ? heartbeat_t::WARN
-                                                                                 : heartbeat_t::OK;
-  loop_->SetHealth(health, fmt::format("t {:.1f} s, rtf {:.2f}, contacts {}{}, scans {}, commands {} (rejected {}, "
-                                       "timeouts {}), step p99 late {:.0f} us",
+  const bool rejected = s.commands_rejected > 0 || (follower_ && follower_->counts().rejected > 0);
+  const std::int8_t health = s.in_contact                         ? heartbeat_t::ERROR
+                             : (s.contact_events > 0 || rejected) ? heartbeat_t::WARN
+                                                                  : heartbeat_t::OK;
+  loop_->SetHealth(health, fmt::format("t {:.1f} s, rtf {:.2f}, contacts {}{}, scans {}, {}, step p99 late {:.0f} us",
                                        s.sim_time_s, s.real_time_factor, s.contact_events,
-                                       s.in_contact ? " (IN CONTACT)" : "", s.scans, s.commands_accepted,
-                                       s.commands_rejected, s.command_timeouts, s.step_lateness_p99_us));
+                                       s.in_contact ? " (IN CONTACT)" : "", s.scans,
+                                       follower_ ? FollowReport()
+                                                 : fmt::format("commands {} (rejected {}, timeouts {})",
+                                                               s.commands_accepted, s.commands_rejected,
+                                                               s.command_timeouts),
+                                       s.step_lateness_p99_us));
 }
 
 void SimNode::Finish() {
   if (!scan_worker_) return;
   scan_worker_->Drain();
   for (const ScanResult& scan : scan_worker_->TakeCompleted()) OnScan(scan);
+}
+
+std::string SimNode::FollowReport() const {
+  const FollowerCounts& c = follower_->counts();
+  const std::optional<std::int64_t> id = follower_->active_id();
+  return fmt::format("follow: trajectories {} accepted / {} rejected / {} started (following {}), {} commands ignored",
+                     c.accepted, c.rejected, c.started, id ? std::to_string(*id) : std::string("none"),
+                     commands_ignored_);
 }
 
 std::string SimNode::FinalReport() const {
@@ -184,6 +230,7 @@ std::string SimNode::FinalReport() const {
       pacer_.schedule_resets(), plant.commands_accepted, plant.commands_rejected, plant.command_timeouts,
       core_->counts().scans, scans_published_.load(), core_->counts().events_applied, core_->counts().events_failed,
       bad_events_);
+  if (follower_) text += "\nfinal: " + FollowReport();
   if (const ContactSensor* monitor = core_->contact_sensor()) {
     const ContactCounts c = monitor->counts();
     text += fmt::format("\nfinal: contacts {} events, {} of {} steps in contact, max depth {:.4f} m\n{}", c.events,

@@ -3,7 +3,9 @@
 // process loop's timers, feeds it CONTROL_COMMAND and SIM_EVENT, publishes ROBOT_STATE,
 // BASE_POSE, POINT_CLOUD, SIM_CONTACT as the core produces them and SIM_STATUS at the status
 // rate, and keeps the heartbeat's health: ERROR while in contact, WARN after a contact or a
-// rejected command, else OK.
+// rejected command or trajectory, else OK. With `follow` (topay-sim --follow) the plant follows
+// TRAJECTORY exactly (TrajectoryFollower) instead of integrating CONTROL_COMMAND (ignored,
+// counted); everything else runs as without.
 
 #include <atomic>
 #include <cstdint>
@@ -15,7 +17,9 @@
 #include "procs/sim/real_time_pacer.h"
 #include "procs/sim/scan_worker.h"
 #include "procs/sim/sim_core.h"
+#include "procs/sim/trajectory_follower.h"
 #include "topay/control_command_t.hpp"
+#include "topay/poly_trajectory_t.hpp"
 #include "topay/sim_event_t.hpp"
 #include "topay/sim_status_t.hpp"
 
@@ -30,6 +34,8 @@ struct SimNodeOptions {
   std::string lidar_frame = "lidar";
   bool async_scans = true;          ///< scan on a thread of its own (ScanWorker) instead of in the plant loop
   std::vector<std::string> joint_names;
+  bool follow = false;              ///< follow TRAJECTORY (TrajectoryFollower) instead of CONTROL_COMMAND
+  TrajectoryFollowerOptions follower;
 };
 
 class SimNode : public SimListener {
@@ -56,7 +62,13 @@ class SimNode : public SimListener {
   /// Runs the steps due; returns when the next one is due.
   RealTimePacer::Clock::time_point OnPlantTimer();
   void OnStatusTimer();
+  /// One plant step: to the follower's state at the step's time (follow), else Step.
+  void StepOnce();
+  /// utime of the sim's clock now (before the first step: of the time stepping will start).
+  std::int64_t NowSimUtime() const;
   void OnCommand(const control_command_t& msg);
+  void OnTrajectory(const poly_trajectory_t& msg);
+  std::string FollowReport() const;
   void OnSimEvent(const sim_event_t& msg);
 
   procs::ProcessLoop* loop_;
@@ -70,6 +82,8 @@ class SimNode : public SimListener {
   std::int64_t start_utime_ = 0;
   std::int64_t steps_at_start_ = 0;
   std::int64_t bad_events_ = 0;
+  std::unique_ptr<TrajectoryFollower> follower_;  // follow mode only
+  std::int64_t commands_ignored_ = 0;             // CONTROL_COMMANDs in follow mode
   std::atomic<std::int64_t> scans_published_{0};
   // Status period bookkeeping.
   RealTimePacer::Clock::time_point last_status_wall_{};

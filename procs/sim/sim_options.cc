@@ -19,6 +19,20 @@ void Positive(const YamlSection& s, const char* key, double value) {
   if (!(value > 0.0) || !std::isfinite(value)) throw ConfigError(s.source(), s.FieldPath(key), "must be a finite number > 0");
 }
 
+void ReadFollowerOptions(YamlSection& s, TrajectoryFollowerOptions* o) {
+  s.Read("max_start_offset_m", &o->max_start_offset_m);
+  Positive(s, "max_start_offset_m", o->max_start_offset_m);
+  s.Read("max_start_offset_rad", &o->max_start_offset_rad);
+  Positive(s, "max_start_offset_rad", o->max_start_offset_rad);
+  int& panels = o->rebuild.trajectory.integrator.panels_per_piece;
+  s.Read("panels_per_piece", &panels);
+  if (panels < 1) throw ConfigError(s.source(), s.FieldPath("panels_per_piece"), "must be >= 1");
+  s.Read("coefficient_tolerance", &o->rebuild.coefficient_tolerance);
+  Positive(s, "coefficient_tolerance", o->rebuild.coefficient_tolerance);
+  s.Read("yaw0_tolerance_rad", &o->rebuild.yaw0_tolerance_rad);
+  Positive(s, "yaw0_tolerance_rad", o->rebuild.yaw0_tolerance_rad);
+}
+
 }  // namespace
 
 SimOptions LoadSimOptions(const std::string& path) {
@@ -90,6 +104,12 @@ SimOptions LoadSimOptions(const std::string& path) {
   }
   top.Read("status_rate_hz", &o.status_rate_hz);
   Positive(top, "status_rate_hz", o.status_rate_hz);
+  top.Read("follow", &o.follow);
+  {
+    YamlSection s = top.Section("follower");
+    ReadFollowerOptions(s, &o.follower);
+    s.Finish();
+  }
   top.Finish();
   o.robot_urdf = Resolve(o.robot_urdf, folder);
   o.robot_yaml = Resolve(o.robot_yaml, folder);

@@ -7,6 +7,7 @@
 
 #include <yaml-cpp/yaml.h>
 
+#include "procs/sim/trajectory_follower.h"
 #include "sim/localization/pose_sensor.h"
 #include "sim/plant/plant_options.h"
 
@@ -33,6 +34,10 @@ struct SimOptions {
   YAML::Node lidar_options;        ///< inline LiDAR options (the `lidar.options` map)
   bool monitor_enabled = true;     ///< the ground-truth collision monitor
   double status_rate_hz = 10.0;    ///< SIM_STATUS, Hz (wall time)
+  /// The ideal follower (--follow): the plant follows TRAJECTORY exactly instead of integrating
+  /// CONTROL_COMMAND (ignored, counted).
+  bool follow = false;
+  TrajectoryFollowerOptions follower;  ///< the `follower` section
 };
 
 /// Loads the YAML at `path` (relative paths inside resolved against its folder). Throws

@@ -72,6 +72,19 @@ void Plant::Step() {
   ++counts_.steps;
 }
 
+void Plant::StepTo(const PlantState& target) {
+  state_ = target;
+  drive_v_mps_ = target.v_mps;
+  drive_omega_radps_ = target.omega_radps;
+  slip_v_ = slip_omega_ = 0.0;
+  base_braking_ = false;
+  const double half_track = 0.5 * options_.wheels.track_m;
+  wheel_left_rad_ += (drive_v_mps_ - drive_omega_radps_ * half_track) / options_.wheels.radius_m * options_.step_s;
+  wheel_right_rad_ += (drive_v_mps_ + drive_omega_radps_ * half_track) / options_.wheels.radius_m * options_.step_s;
+  ++step_;
+  ++counts_.steps;
+}
+
 void Plant::StepBase() {
   if (std::optional<BaseTarget> due = base_delay_.Pop(step_)) {
     base_target_ = *due;

@@ -40,6 +40,13 @@ class Plant {
   /// Advances one step.
   void Step();
 
+  /// Advances one step to `target` (an ideal follower, topay-sim --follow): the true state is
+  /// `target` at the new time, the drives run at its velocities (no lag, no limit, no slip:
+  /// the wheels' odometry measures target.v_mps and target.omega_radps), the wheel angles
+  /// advance by them over the step. Commands are not applied. `target`'s joint vectors must
+  /// fit the model.
+  void StepTo(const PlantState& target);
+
   std::int64_t step_count() const { return step_; }
   double time_s() const { return static_cast<double>(step_) * options_.step_s; }
   double step_s() const { return options_.step_s; }

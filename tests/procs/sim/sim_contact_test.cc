@@ -1,13 +1,17 @@
 // The core with the real collision monitor (procs/sim/monitor_adapter.h): a straight drive into
 // a box is reported once, at the first plant step the base cylinder enters it, with the box's
-// stable id and a depth of at most one step's travel; a clear drive reports none.
+// stable id and a depth of at most one step's travel; a clear drive reports none; the ideal
+// follower (--follow) driving the base into a box is judged at every step too.
 
 #include <gtest/gtest.h>
 
 #include <filesystem>
 #include <fstream>
 
+#include "follow_test_trajectory.h"
+#include "procs/sim/sim_messages.h"
 #include "procs/sim/sim_setup.h"
+#include "procs/sim/trajectory_follower.h"
 
 namespace topay::simproc {
 namespace {
@@ -90,6 +94,34 @@ TEST(SimContact, ClearDriveReportsNone) {
   EXPECT_EQ(sim.core->contact_sensor()->counts().events, 0);
   EXPECT_EQ(sim.core->contact_sensor()->counts().steps, 4000);
   EXPECT_GT(sim.core->plant().state().state.x_m, 3.5);  // it drove past the box
+}
+
+TEST(SimContact, FollowingATrajectoryIntoABoxIsReportedAtTheFirstStepInside) {
+  SimAssembly sim = AssembleSim(Options(R"({"boxes": [{"center": [0.85, 0, 0.5], "size": [0.5, 3, 1], "yaw": 0}]})"));
+  const double radius = sim.model->base_cylinder.radius_m;
+  const double face_m = 0.6;
+  const sim::PlantState start = sim.core->plant().state();
+  const ArcYawTrajectory straight = test::FollowTestTrajectory({0.0, 0.0}, 0.0, start.state.q_rad, 0.0, 0.0);
+  ASSERT_GT(1.0 + radius, face_m);
+  constexpr std::int64_t kStartUtime = 1'800'000'000'000'000;
+  TrajectoryFollower follower(sim.model->num_joints(), {});
+  ASSERT_EQ(follower.Accept(test::FollowTestMessage(straight, {0.0, 0.0}, kStartUtime + 100'000, 1), kStartUtime, start),
+            "");
+  Contacts contacts;
+  sim.core->SetListener(&contacts);
+  double expected_t = -1.0;
+  for (int k = 0; k < 1500; ++k) {  // 3 s: 0.1 s held, 2 s followed, then held at the end
+    const std::int64_t utime = SimUtime(kStartUtime, sim.core->next_time_s());
+    sim.core->StepTo(follower.StateAt(utime, sim.core->plant().state()));
+    if (expected_t < 0.0 && sim.core->plant().state().state.x_m + radius > face_m) expected_t = sim.core->time_s();
+  }
+  ASSERT_GT(expected_t, 0.1);
+  ASSERT_FALSE(contacts.list.empty());
+  EXPECT_EQ(contacts.list.front().first.body, "base");
+  EXPECT_EQ(contacts.list.front().second, 0);
+  EXPECT_NEAR(contacts.list.front().first.t_s, expected_t, 1e-9);
+  EXPECT_EQ(sim.core->contact_sensor()->counts().steps, 1500);
+  EXPECT_NEAR(sim.core->plant().state().state.x_m, 1.0, 1e-5);  // the end, held (Simpson: s' is quartic)
 }
 
 }  // namespace

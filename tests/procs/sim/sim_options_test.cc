@@ -41,6 +41,21 @@ TEST(SimOptions, LoadsTheShippedConfig) {
   EXPECT_NE(sim.scene_description.find("tables seed 1"), std::string::npos);
   EXPECT_TRUE(sim.core->has_lidar());
   EXPECT_NE(sim.core->contact_sensor(), nullptr);
+  EXPECT_FALSE(o.follow);
+  EXPECT_EQ(o.follower.max_start_offset_m, 0.3);
+  EXPECT_EQ(o.follower.rebuild.trajectory.integrator.panels_per_piece, 12);
+}
+
+TEST(SimOptions, ReadsTheFollowerOptions) {
+  const SimOptions o = LoadSimOptions(Write(
+      "follow.yaml", "follow: true\nfollower: {max_start_offset_m: 0.5, max_start_offset_rad: 0.2, panels_per_piece: 8, "
+                     "coefficient_tolerance: 1.0e-8, yaw0_tolerance_rad: 1.0e-5}\n"));
+  EXPECT_TRUE(o.follow);
+  EXPECT_EQ(o.follower.max_start_offset_m, 0.5);
+  EXPECT_EQ(o.follower.max_start_offset_rad, 0.2);
+  EXPECT_EQ(o.follower.rebuild.trajectory.integrator.panels_per_piece, 8);
+  EXPECT_EQ(o.follower.rebuild.coefficient_tolerance, 1e-8);
+  EXPECT_EQ(o.follower.rebuild.yaw0_tolerance_rad, 1e-5);
 }
 
 TEST(SimOptions, NamesTheFileAndKeyOfBadOptions) {
@@ -61,6 +76,10 @@ TEST(SimOptions, NamesTheFileAndKeyOfBadOptions) {
   expect_error("lidar: {file: lidar.yaml, options: {range_max_m: 20}}\n", "lidar");
   expect_error("speed: 3\n", "speed");
   expect_error("plant: {initial: {q_rad: [0, nan]}}\n", "plant.initial.q_rad[1]");
+  expect_error("follow: yes please\n", "follow");
+  expect_error("follower: {max_start_offset_m: 0}\n", "follower.max_start_offset_m");
+  expect_error("follower: {panels_per_piece: 0}\n", "follower.panels_per_piece");
+  expect_error("follower: {tolerance: 1}\n", "follower.tolerance");
 }
 
 SimOptions Base() {

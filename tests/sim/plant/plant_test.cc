@@ -262,3 +262,36 @@ TEST(Plant, WheelSlipMovesTheBaseOtherThanTheWheelsSayButRepeatably) {
 
 }  // namespace
 }  // namespace topay::sim
+
+namespace topay::sim {
+namespace {
+
+TEST(Plant, StepToSetsTheStateAndTheDrivesMeasureItsVelocities) {
+  const RobotModel& model = test::TopayRobot();
+  Plant plant(model, PlantOptions{}, 7);
+  PlantState target = plant.state();
+  target.state.x_m = 0.3;
+  target.state.yaw_rad = 0.2;
+  target.state.q_rad[2] = 0.4;
+  target.v_mps = 0.5;  // (no lag, no limit: an ideal follower)
+  target.omega_radps = -0.25;
+  target.qdot_radps[2] = 0.7;
+  plant.StepTo(target);
+  EXPECT_EQ(plant.step_count(), 1);
+  EXPECT_EQ(plant.state().state.x_m, 0.3);
+  EXPECT_EQ(plant.state().state.q_rad[2], 0.4);
+  const MeasuredActuators m = plant.measured();
+  EXPECT_EQ(m.v_mps, 0.5);
+  EXPECT_EQ(m.omega_radps, -0.25);
+  EXPECT_EQ(m.qdot_radps[2], 0.7);
+  EXPECT_FALSE(m.braking);
+  const double expected_left = (0.5 + 0.25 * 0.25) / 0.1 * plant.step_s();  // default track 0.5 m, radius 0.1 m
+  EXPECT_NEAR(m.wheel_left_rad, expected_left, 1e-15);
+  // A command is not applied by StepTo (and a later Step runs the drives from this state).
+  EXPECT_EQ(plant.Command(Cmd(-0.5, 0.0)), "");
+  plant.StepTo(target);
+  EXPECT_EQ(plant.measured().v_mps, 0.5);
+}
+
+}  // namespace
+}  // namespace topay::sim
