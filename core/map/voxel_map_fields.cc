@@ -335,6 +335,21 @@ void VoxelMapFields::ResetFrom(const OccupancyGrid3& occupied) {
   RebuildAll();
 }
 
+void VoxelMapFields::ResetStates(std::span<const std::uint8_t> states) {
+  if (states.size() != states_.size()) {
+    throw std::invalid_argument("VoxelMapFields::ResetStates: " + std::to_string(states.size()) +
+                                " states for a map of " + std::to_string(states_.size()) + " voxels");
+  }
+  for (std::size_t i = 0; i < states.size(); ++i) {
+    if (states[i] > static_cast<std::uint8_t>(VoxelState::kUnknown)) {
+      throw std::invalid_argument("VoxelMapFields::ResetStates: voxel " + std::to_string(i) +
+                                  " has state " + std::to_string(states[i]) + ", not a VoxelState");
+    }
+  }
+  std::copy(states.begin(), states.end(), states_.begin());
+  RebuildAll();
+}
+
 VoxelChange VoxelMapFields::ChangeAt(const Eigen::Vector3d& p_W, VoxelState state) const {
   if (!p_W.allFinite()) {
     throw std::invalid_argument("VoxelMapFields::ChangeAt: point has a NaN or infinite coordinate");

@@ -147,6 +147,12 @@ class VoxelMapFields {
   /// std::invalid_argument otherwise) and rebuilds both fields (RebuildAll).
   void ResetFrom(const OccupancyGrid3& occupied);
 
+  /// Sets every voxel's state (one VoxelState per voxel, GridGeometry3 order: e.g. a received
+  /// snapshot) and rebuilds both fields (RebuildAll): far cheaper than ApplyChanges with every
+  /// voxel. Throws std::invalid_argument (map unchanged) for a size other than the grid's or
+  /// a byte that is not a VoxelState.
+  void ResetStates(std::span<const std::uint8_t> states);
+
   /// Rebuilds both fields from the voxels over the whole grid: the reference ApplyChanges
   /// equals.
   void RebuildAll();

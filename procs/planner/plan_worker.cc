@@ -6,35 +6,61 @@
 #include <spdlog/spdlog.h>
 
 #include "core/common/stopwatch.h"
+#include "core/map/voxel_boxes.h"
 #include "core/planner/whole_body_planner.h"
 #include "core/planning/base_reachability.h"
 
 namespace topay::planner {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+Clock::duration Seconds(double s) {
+  return std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(s));
+}
+
+PlanJobOutcome Failed(PlanStatus status, std::string reason) {
+  PlanJobOutcome out;
+  out.result.status = status;
+  out.result.failure_reason = std::move(reason);
+  return out;
+}
+
+}  // namespace
 
 PlanWorker::PlanWorker(const Kinematics& kinematics, const WholeBodyPlannerOptions& options,
                        UnknownVoxelPolicy unknown, double field_update_period_s)
     : kinematics_(kinematics),
       options_(options),
+      unknown_(unknown),
       field_update_period_s_(field_update_period_s),
       world_(kinematics, unknown),
-      last_flush_(std::chrono::steady_clock::now()),
-      thread_([this](std::stop_token stop) { Run(stop); }) {}
+      field_thread_([this](std::stop_token stop) { RunFields(stop); }),
+      plan_thread_([this](std::stop_token stop) { RunPlans(stop); }) {}
 
 PlanWorker::~PlanWorker() {
   {
     std::lock_guard lock(mutex_);
     job_stop_.request_stop();
   }
-  thread_.request_stop();
-  wake_.notify_all();
+  plan_thread_.request_stop();
+  field_thread_.request_stop();
+  wake_plans_.notify_all();
+  wake_fields_.notify_all();
+  fields_ready_.notify_all();
 }
 
 void PlanWorker::SubmitMap(MapWork work) {
+  std::lock_guard lock(mutex_);
+  maps_.push_back(std::move(work));
+}
+
+void PlanWorker::UpdateFieldsSoon() {
   {
     std::lock_guard lock(mutex_);
-    maps_.push_back(std::move(work));
+    fields_soon_ = true;
   }
-  wake_.notify_all();
+  wake_fields_.notify_all();
 }
 
 void PlanWorker::SubmitPlan(PlanJob job) {
@@ -43,7 +69,7 @@ void PlanWorker::SubmitPlan(PlanJob job) {
     if (running_) job_stop_.request_stop();
     queued_ = std::move(job);
   }
-  wake_.notify_all();
+  wake_plans_.notify_all();
 }
 
 void PlanWorker::Cancel() {
@@ -88,37 +114,55 @@ void PlanWorker::FlushMap() {
     ++counts_.map_errors;
     return;
   }
-  last_flush_ = std::chrono::steady_clock::now();
+  if (!world_.has_map()) return;
+  auto snapshot = std::make_shared<const FieldSnapshot>(
+      FieldSnapshot{world_.fields().base_field_2d(), world_.fields().field_3d(), world_.map_seq()});
   std::lock_guard lock(mutex_);
+  fields_ = std::move(snapshot);
   ++counts_.flushes;
   counts_.last_flush_ms = summary.ms;
   counts_.max_flush_ms = std::max(counts_.max_flush_ms, summary.ms);
+  fields_ready_.notify_all();
 }
 
-void PlanWorker::Run(std::stop_token thread_stop) {
-  const auto period = std::chrono::duration_cast<std::chrono::steady_clock::duration>(
-      std::chrono::duration<double>(field_update_period_s_));
+void PlanWorker::RunFields(std::stop_token thread_stop) {
   while (!thread_stop.stop_requested()) {
-    std::optional<PlanJob> job;
+    {
+      std::unique_lock lock(mutex_);
+      wake_fields_.wait_for(lock, thread_stop, Seconds(field_update_period_s_),
+                            [this] { return fields_soon_; });
+      fields_soon_ = false;
+    }
+    if (thread_stop.stop_requested()) return;
+    FlushMap();
+  }
+}
+
+std::shared_ptr<const FieldSnapshot> PlanWorker::Fields(Clock::time_point deadline, std::stop_token stop) {
+  std::unique_lock lock(mutex_);
+  if (!fields_) {
+    fields_soon_ = true;
+    wake_fields_.notify_all();
+    fields_ready_.wait_until(lock, stop, deadline, [this] { return fields_ != nullptr; });
+  }
+  return fields_;
+}
+
+void PlanWorker::RunPlans(std::stop_token thread_stop) {
+  while (!thread_stop.stop_requested()) {
+    PlanJob job;
     std::stop_token job_token;
     {
       std::unique_lock lock(mutex_);
-      wake_.wait_until(lock, thread_stop, last_flush_ + period,
-                       [this] { return queued_.has_value(); });
+      wake_plans_.wait(lock, thread_stop, [this] { return queued_.has_value(); });
       if (thread_stop.stop_requested()) return;
-      if (queued_) {
-        job = std::move(queued_);
-        queued_.reset();
-        job_stop_ = std::stop_source();
-        job_token = job_stop_.get_token();
-        running_ = true;
-      }
+      job = std::move(*queued_);
+      queued_.reset();
+      job_stop_ = std::stop_source();
+      job_token = job_stop_.get_token();
+      running_ = true;
     }
-    if (!job) {
-      if (std::chrono::steady_clock::now() >= last_flush_ + period) FlushMap();
-      continue;
-    }
-    PlanJobOutcome outcome = Execute(*job, job_token);
+    PlanJobOutcome outcome = Execute(job, job_token);
     std::lock_guard lock(mutex_);
     running_ = false;
     ++counts_.plans;
@@ -127,29 +171,21 @@ void PlanWorker::Run(std::stop_token thread_stop) {
   }
 }
 
-namespace {
-
-PlanJobOutcome Failed(PlanStatus status, std::string reason) {
-  PlanJobOutcome out;
-  out.result.status = status;
-  out.result.failure_reason = std::move(reason);
-  return out;
-}
-
-}  // namespace
-
 PlanJobOutcome PlanWorker::Execute(const PlanJob& job, std::stop_token job_stop) {
-  const auto deadline = std::chrono::steady_clock::now() +
-                        std::chrono::duration_cast<std::chrono::steady_clock::duration>(
-                            std::chrono::duration<double>(job.time_limit_s));
+  const auto deadline = Clock::now() + Seconds(job.time_limit_s);
   const Stopwatch setup;
-  FlushMap();
   PlanJobOutcome out;
-  if (!world_.has_map()) {
+  const std::shared_ptr<const FieldSnapshot> fields = job.map_states ? Fields(deadline, job_stop) : nullptr;
+  if (job.map_states == nullptr) {
     out = Failed(PlanStatus::kInvalidInput, "no map yet (no MAP_UPDATE snapshot received)");
+  } else if (fields == nullptr) {
+    out = Failed(job_stop.stop_requested() ? PlanStatus::kCancelled : PlanStatus::kTimeLimit,
+                 "the planner's fields were not built within the time limit");
   } else {
-    const Scene& scene = world_.scene();
-    out.map_seq = world_.map_seq();
+    Scene scene;
+    scene.boxes = BlockedVoxelBoxes(job.map_geometry, *job.map_states, unknown_);
+    scene.bounds_W_m = GridBounds(job.map_geometry);
+    scene.kind = "map";
     if (job.certify_reachability) {
       const BaseReachability cert = CertifyTargetUnreachable(
           scene, kinematics_, {job.start.state.x_m, job.start.state.y_m}, job.X_WE_goal);
@@ -161,13 +197,11 @@ PlanJobOutcome PlanWorker::Execute(const PlanJob& job, std::stop_token job_stop)
     if (!out.certified_unreachable) {
       WholeBodyPlannerOptions options = options_;
       options.time_limit_s = job.time_limit_s;
-      const VoxelMapFields& fields = world_.fields();
-      const WholeBodyPlanner planner(kinematics_, fields.base_field_2d(), fields.field_3d(), scene,
-                                     options);
+      const WholeBodyPlanner planner(kinematics_, fields->base_field, fields->arm_field, scene, options);
       out.setup_ms = setup.ElapsedMs();
       out.result = planner.PlanBy(deadline, job.start.state, job.X_WE_goal, job.hint, job_stop);
     }
-    out.map_seq = world_.map_seq();
+    out.fields_map_seq = fields->map_seq;
   }
   out.job = job;
   return out;

@@ -1,10 +1,13 @@
 #pragma once
-// The planning thread of topay-planner: it owns the planner's world (fields and boxes from the
-// live map, PlannerWorld), takes the map work the LCM thread hands it, updates the fields in
-// batches (every field_update_period_s, and before every plan) and runs one plan at a time.
-// A new plan request replaces a queued one and cancels a running one through the planner's
-// stop token (cooperatively: the plan returns within a short step). The LCM thread never
-// waits on it: Submit* only queue, TakeResult only takes.
+// The two worker threads of topay-planner. The field thread owns the planner's distance fields
+// on the live map (PlannerWorld): it takes the map work the LCM thread hands it, updates the
+// fields in batches (every field_update_period_s, or at once when a plan asks for it) and
+// publishes each result as an immutable snapshot. The planning thread runs one plan at a
+// time on the newest snapshot of the fields and on the exact boxes of the newest map states
+// (given with the job, so a plan never waits for a field update: its own validator sees every
+// voxel the LCM thread had). A new plan request replaces a queued one and cancels a running
+// one through the planner's stop token (cooperatively: the plan returns within a short step).
+// The LCM thread never waits on them: Submit* only queue, TakeResult only takes.
 
 #include <atomic>
 #include <chrono>
@@ -23,6 +26,10 @@
 #include "core/planner/whole_body_planner_options.h"
 #include "core/robot/kinematics.h"
 #include "core/trajectory/trajectory_sample.h"
+#include "core/map/signed_distance_field2.h"
+#include "core/map/signed_distance_field3.h"
+#include <memory>
+#include <vector>
 #include "procs/planner/map_intake.h"
 #include "procs/planner/planner_world.h"
 
@@ -42,6 +49,18 @@ struct PlanJob {
   double time_limit_s = 3.0;
   /// Run the base reachability certificate on the map first (a goal's first plan).
   bool certify_reachability = false;
+  /// The map as the LCM thread holds it when the plan is asked for (null: no map yet): the
+  /// plan's exact boxes (its validator, the certificate) come from these states.
+  std::shared_ptr<const std::vector<std::uint8_t>> map_states;
+  GridGeometry3 map_geometry;
+  std::int64_t map_seq = 0;
+};
+
+/// The planner's fields after one update, shared read-only with the plans that use them.
+struct FieldSnapshot {
+  SignedDistanceField2 base_field;
+  SignedDistanceField3 arm_field;
+  std::int64_t map_seq = 0;  ///< the last map update in them
 };
 
 /// A finished (or cancelled) job.
@@ -51,8 +70,7 @@ struct PlanJobOutcome {
   /// Set when the certificate proved the target unreachable (result then kFrontEndFailed
   /// with this reason, no plan run).
   bool certified_unreachable = false;
-  std::int64_t map_seq = 0;      ///< the map the plan ran on
-  MapFlushSummary flush;         ///< the field update just before it
+  std::int64_t fields_map_seq = 0;  ///< the map update the fields had (may lag map_seq)
   double setup_ms = 0.0;         ///< boxes, certificate and planner construction
 };
 
@@ -69,7 +87,8 @@ struct PlanWorkerCounts {
 class PlanWorker {
  public:
   /// `kinematics` outlives the worker; `options` are the core planner's (time_limit_s is
-  /// replaced by each job's).
+  /// replaced by each job's). A plan waits for the first field snapshot at most
+  /// first_fields_wait_s of its time limit.
   PlanWorker(const Kinematics& kinematics, const WholeBodyPlannerOptions& options,
              UnknownVoxelPolicy unknown, double field_update_period_s);
   ~PlanWorker();  // cancels and joins
@@ -77,6 +96,8 @@ class PlanWorker {
   PlanWorker& operator=(const PlanWorker&) = delete;
 
   void SubmitMap(MapWork work);
+  /// Asks the field thread to apply what it has now rather than at its next period.
+  void UpdateFieldsSoon();
   /// Replaces a queued job; cancels the running one (its outcome still comes, kCancelled).
   void SubmitPlan(PlanJob job);
   /// Cancels the queued and the running job.
@@ -88,25 +109,33 @@ class PlanWorker {
   PlanWorkerCounts counts() const;
 
  private:
-  void Run(std::stop_token thread_stop);
+  void RunPlans(std::stop_token thread_stop);
+  void RunFields(std::stop_token thread_stop);
   PlanJobOutcome Execute(const PlanJob& job, std::stop_token job_stop);
+  // The newest field snapshot, waiting for the first one until `deadline` (null: none yet).
+  std::shared_ptr<const FieldSnapshot> Fields(std::chrono::steady_clock::time_point deadline,
+                                              std::stop_token stop);
   void FlushMap();
 
   const Kinematics& kinematics_;
   WholeBodyPlannerOptions options_;
+  UnknownVoxelPolicy unknown_;
   double field_update_period_s_;
-  PlannerWorld world_;  // the planning thread's only
-  std::chrono::steady_clock::time_point last_flush_;
+  PlannerWorld world_;  // the field thread's only
 
   mutable std::mutex mutex_;
-  std::condition_variable_any wake_;
+  std::condition_variable_any wake_plans_, wake_fields_, fields_ready_;
   std::deque<MapWork> maps_;
+  bool fields_soon_ = false;
+  std::shared_ptr<const FieldSnapshot> fields_;
   std::optional<PlanJob> queued_;
   bool running_ = false;
   std::stop_source job_stop_;
   std::deque<PlanJobOutcome> results_;
   PlanWorkerCounts counts_;
-  std::jthread thread_;  // last: starts after everything above exists
+  // Last: they start after everything above exists.
+  std::jthread field_thread_;
+  std::jthread plan_thread_;
 };
 
 }  // namespace topay::planner

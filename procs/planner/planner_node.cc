@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <span>
 
 #include <fmt/format.h>
 #include <spdlog/spdlog.h>
@@ -220,6 +221,13 @@ void PlannerNode::RequestPlan(PlanTrigger trigger, const std::string& reason) {
   job.X_WE_goal = goal_->goal.X_WE;
   job.hint = goal_->goal.hint;
   job.certify_reachability = !goal_->planned_once && options_.goals.certify_reachability;
+  if (map_.has_map()) {
+    const std::span<const std::uint8_t> states = map_.receiver().states();
+    job.map_states = std::make_shared<const std::vector<std::uint8_t>>(states.begin(), states.end());
+    job.map_geometry = map_.receiver().geometry();
+    job.map_seq = map_.receiver().map_seq();
+  }
+  if (trigger == PlanTrigger::kMapCollision) worker_->UpdateFieldsSoon();
   ++counts_.triggers[trigger];
   if (trigger != PlanTrigger::kGoal && trigger != PlanTrigger::kRetry) ++goal_->replans;
   retry_at_utime_ = 0;

@@ -32,16 +32,7 @@ void PlannerWorld::Reset(const MapWork& work) {
   if (!SameGeometry(fields->geometry(), g)) {
     throw std::invalid_argument("planner map: the fields' grid does not match the map's");
   }
-  std::vector<VoxelChange> known;
-  for (int iz = 0; iz < g.dims.z(); ++iz) {
-    for (int iy = 0; iy < g.dims.y(); ++iy) {
-      for (int ix = 0; ix < g.dims.x(); ++ix) {
-        const auto s = static_cast<VoxelState>(work.states[g.Index(ix, iy, iz)]);
-        if (s != VoxelState::kUnknown) known.push_back({{ix, iy, iz}, s});
-      }
-    }
-  }
-  fields->ApplyChanges(known);
+  fields->ResetStates(work.states);
   fields_ = std::move(fields);
 }
 
@@ -50,31 +41,46 @@ MapFlushSummary PlannerWorld::Flush() {
   MapFlushSummary summary;
   std::vector<MapWork> queue;
   queue.swap(queue_);
-  for (const MapWork& work : queue) {
-    if (work.reset) {
-      Reset(work);
-      summary.reset = true;
-    } else if (fields_ != nullptr) {
-      fields_->ApplyChanges(work.changes);
-      summary.changes += static_cast<std::int64_t>(work.changes.size());
-    }  // changes before any grid: nothing to apply them to (the intake sends a reset first)
-    map_seq_ = work.map_seq;
-    map_utime_ = work.map_utime;
-    ++summary.works;
+  // From the last reset on, everything is changes on top of it.
+  std::size_t first = 0;
+  for (std::size_t k = 0; k < queue.size(); ++k) {
+    if (queue[k].reset) first = k;
   }
-  if (summary.works > 0) scene_stale_ = true;
+  if (first < queue.size() && queue[first].reset) {
+    Reset(queue[first]);
+    summary.reset = true;
+    ++first;
+  }
+  std::int64_t num_changes = 0;
+  for (std::size_t k = first; k < queue.size(); ++k) num_changes += static_cast<std::int64_t>(queue[k].changes.size());
+  if (fields_ != nullptr && num_changes > 0) ApplyChanges(queue, first, num_changes);
+  summary.changes = num_changes;
+  summary.works = static_cast<int>(queue.size());
+  if (!queue.empty()) {
+    map_seq_ = queue.back().map_seq;
+    map_utime_ = queue.back().map_utime;
+  }
   summary.ms = watch.ElapsedMs();
   return summary;
 }
 
-const Scene& PlannerWorld::scene() {
-  if (scene_stale_ && fields_ != nullptr) {
-    scene_.boxes = BlockedVoxelBoxes(fields_->geometry(), fields_->states(), unknown_);
-    scene_.bounds_W_m = GridBounds(fields_->geometry());
-    scene_.kind = "map";
-    scene_stale_ = false;
+void PlannerWorld::ApplyChanges(const std::vector<MapWork>& queue, std::size_t first,
+                                std::int64_t num_changes) {
+  if (num_changes <= kRebuildAboveChanges) {
+    for (std::size_t k = first; k < queue.size(); ++k) fields_->ApplyChanges(queue[k].changes);
+    return;
   }
-  return scene_;
+  // Many changes (a first scan, a long batch): their windows cover much of the map, and
+  // recomputing window after window costs far more than one full rebuild (docs/benchmarks.md).
+  std::vector<std::uint8_t> states(fields_->states().begin(), fields_->states().end());
+  const GridGeometry3& g = fields_->geometry();
+  for (std::size_t k = first; k < queue.size(); ++k) {
+    for (const VoxelChange& c : queue[k].changes) {
+      if ((c.voxel.array() < 0).any() || (c.voxel.array() >= g.dims.array()).any()) throw std::invalid_argument("planner map: a change outside the grid");
+      states[g.Index(c.voxel.x(), c.voxel.y(), c.voxel.z())] = static_cast<std::uint8_t>(c.state);
+    }
+  }
+  fields_->ResetStates(states);
 }
 
 }  // namespace topay::planner

@@ -1,7 +1,6 @@
 #pragma once
-// What the planning thread plans on: the planner's distance fields built from the live map
-// (VoxelMapFields, updated in batches) and the map's blocked voxels as exact boxes (the
-// planner's own validator checks against them: its Scene). Owned by one thread.
+// The planner's distance fields built from the live map (VoxelMapFields), updated in batches
+// of map work. Owned by one thread (PlanWorker's field thread).
 
 #include <cstdint>
 #include <memory>
@@ -31,29 +30,32 @@ class PlannerWorld {
   void Queue(MapWork work);
   bool pending() const { return !queue_.empty(); }
 
-  /// Applies the queued work to the fields in order. A reset builds new fields over the map's
-  /// grid (the planner's field options at the map's resolution). Throws std::invalid_argument
+  /// More voxel changes than this in one flush rebuild the fields whole (about 0.4 s for a
+  /// 20 x 20 m map, docs/benchmarks.md) instead of window by window: the first scan of a
+  /// room changes ~200 k voxels, whose windows cover most of the map, and took 10 s
+  /// incrementally.
+  static constexpr std::int64_t kRebuildAboveChanges = 20'000;
+
+  /// Applies the queued work to the fields in order (work before the last reset is skipped:
+  /// the reset replaces it). A reset builds new fields over the map's grid (the planner's field
+  /// options at the map's resolution). Throws std::invalid_argument
   /// for work that does not fit the grid (the queue is dropped; the fields keep what was applied).
   MapFlushSummary Flush();
 
   bool has_map() const { return fields_ != nullptr; }
   /// The fields (has_map() only).
   const VoxelMapFields& fields() const { return *fields_; }
-  /// The blocked voxels as boxes over the map's volume, rebuilt after a Flush that changed
-  /// anything (has_map() only).
-  const Scene& scene();
   std::int64_t map_seq() const { return map_seq_; }
   std::int64_t map_utime() const { return map_utime_; }
 
  private:
   void Reset(const MapWork& work);
+  void ApplyChanges(const std::vector<MapWork>& queue, std::size_t first, std::int64_t num_changes);
 
   const Kinematics& kinematics_;
   UnknownVoxelPolicy unknown_;
   std::vector<MapWork> queue_;
   std::unique_ptr<VoxelMapFields> fields_;
-  Scene scene_;
-  bool scene_stale_ = true;
   std::int64_t map_seq_ = 0;
   std::int64_t map_utime_ = 0;
 };

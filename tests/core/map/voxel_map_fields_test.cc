@@ -126,6 +126,35 @@ TEST(VoxelMapFieldsTest, IncrementalEqualsFullRebuildOnRandomAddsAndClears) {
   EXPECT_GT(map.occupancy_3d().CountOccupied(), 0);
 }
 
+// A snapshot's states set at once give the fields the same changes applied one by one give.
+TEST(VoxelMapFieldsTest, ResetStatesEqualsTheSameChangesApplied) {
+  for (const UnknownVoxelPolicy policy : {UnknownVoxelPolicy::kFree, UnknownVoxelPolicy::kOccupied}) {
+    VoxelMapFieldsOptions options = SmallOptions();
+    options.unknown = policy;
+    VoxelMapFields applied(options), reset(options);
+    const GridGeometry3& g = applied.geometry();
+    Rng rng(5);
+    std::vector<VoxelChange> changes =
+        BoxChanges(g, MakeBox({0.2, 0.1, 0.3}, {0.6, 0.4, 0.5}, 0.4), VoxelState::kOccupied);
+    for (int i = 0; i < 400; ++i) {
+      const Eigen::Vector3i v(rng.UniformInt(0, g.dims.x() - 1), rng.UniformInt(0, g.dims.y() - 1),
+                              rng.UniformInt(0, g.dims.z() - 1));
+      changes.push_back({v, rng.Uniform01() < 0.5 ? VoxelState::kFree : VoxelState::kOccupied});
+    }
+    applied.ApplyChanges(changes);
+    reset.ResetStates(applied.states());
+    EXPECT_EQ(BitwiseDifferences(applied.field_3d().values(), reset.field_3d().values()), 0);
+    EXPECT_EQ(BitwiseDifferences(applied.base_field_2d().values(), reset.base_field_2d().values()), 0);
+    EXPECT_TRUE(std::equal(applied.states().begin(), applied.states().end(), reset.states().begin()));
+  }
+  VoxelMapFields map(SmallOptions());
+  std::vector<std::uint8_t> bad(map.states().begin(), map.states().end());
+  bad[3] = 7;
+  EXPECT_THROW(map.ResetStates(bad), std::invalid_argument);
+  bad.pop_back();
+  EXPECT_THROW(map.ResetStates(bad), std::invalid_argument);
+}
+
 TEST(VoxelMapFieldsTest, UpdatesOnlyWindowsNearTheChange) {
   VoxelMapFieldsOptions options = SmallOptions();
   options.bounds_W_m = Eigen::AlignedBox3d(Eigen::Vector3d(-3, -3, 0), Eigen::Vector3d(3, 3, 1.0));

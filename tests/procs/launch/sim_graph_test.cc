@@ -1,7 +1,9 @@
 // The shipped simulation graph (config/graphs/sim.yaml) runs as it is, isolated by default:
 // the logger records the simulator's ROBOT_STATE, BASE_POSE, POINT_CLOUD, SIM_STATUS, HEARTBEAT
-// and the launcher's GRAPH_STATUS into <run>/graph.lcmlog; with --group drive the commands move
-// the robot; with --group perception the mapper publishes MAP_UPDATE and saves its OctoMap.
+// and the launcher's GRAPH_STATUS into <run>/graph.lcmlog; with --group drive the command
+// pattern publishes (the sim, the ideal follower of TRAJECTORY, counts them ignored); with
+// --group perception the mapper publishes MAP_UPDATE and saves its OctoMap; with --group
+// planning the planner waits for goals and reports at the end.
 
 #include <gtest/gtest.h>
 
@@ -16,7 +18,8 @@ TEST(SimGraph, RunsIsolatedAndRecordsTheSimulator) {
   if (!EnterTestNamespace(&why)) GTEST_SKIP() << why;  // the launcher nests its own namespace
   const std::string dir = TestDir("sim_graph");
   const pid_t launcher = StartLauncher(std::string(TOPAY_SOURCE_DIR) + "/config/graphs/sim.yaml", dir,
-                                       {"--duration", "3", "--group", "sim", "--group", "perception", "--group", "drive"});
+                                       {"--duration", "3", "--group", "sim", "--group", "perception", "--group", "drive",
+                                        "--group", "planning"});
   const int status = WaitFor(launcher, 15.0);
   const std::string out = ReadText(dir + "/launcher.out");
   ASSERT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 0) << out;
@@ -38,7 +41,9 @@ TEST(SimGraph, RunsIsolatedAndRecordsTheSimulator) {
   EXPECT_TRUE(std::filesystem::exists(dir + "/map.bt"));
   for (const auto& [channel, c] : summary.channels) EXPECT_EQ(c.decode_failures, 0) << channel;
   EXPECT_NE(ReadText(dir + "/sim.log").find("final: sim time"), std::string::npos);  // counts printed on SIGTERM
-  for (const char* log : {"/sim.log", "/drive-pattern.log", "/logger.log", "/launch.log", "/status.json"}) {
+  ASSERT_TRUE(summary.channels.contains("PLANNER_STATUS")) << loginfo::FormatSummary(summary);
+  EXPECT_NE(ReadText(dir + "/planner.log").find("topay-planner: 0 goals"), std::string::npos);  // report at the end
+  for (const char* log : {"/sim.log", "/drive-pattern.log", "/logger.log", "/launch.log", "/status.json", "/planner.log"}) {
     EXPECT_TRUE(std::filesystem::exists(dir + log)) << log;
   }
 }

@@ -1,0 +1,224 @@
+// The planner in the loop, before the tracker exists: topay-sim (the ideal follower: the robot
+// follows TRAJECTORY exactly), topay-mapper and topay-planner as real processes over real LCM in
+// a private network namespace (skipped, with the reason, where none can be made), in a Tables
+// room the planner has never seen (it knows only what the LiDAR maps). The simulator's
+// collision monitor is the judge: a run counts only with no contact.
+//  - a goal across the room is reached;
+//  - a box that appears on the route (a scripted SIM_EVENT) triggers a replan around it;
+//  - a box that appears close ahead makes the planner publish a stopping trajectory.
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "graph_test_support.h"
+#include "core/collision/scene_clearance.h"
+#include "core/common/random.h"
+#include "core/io/robot_loader.h"
+#include "core/planning/base_reachability.h"
+#include "core/robot/kinematics.h"
+#include "procs/msgs/convert_goal.h"
+#include "procs/msgs/convert_robot_state.h"
+#include "procs/msgs/convert_trajectory.h"
+#include "procs/msgs/trajectory_from_message.h"
+#include "procs/runtime/process_loop.h"
+#include "sim/scenes/scene_json.h"
+#include "sim/world/scene_source.h"
+#include "tests/common/arm_state.h"
+#include "topay/planner_status_t.hpp"
+#include "topay/poly_trajectory_t.hpp"
+#include "topay/robot_state_t.hpp"
+#include "topay/sim_event_t.hpp"
+#include "topay/sim_status_t.hpp"
+
+namespace topay::test {
+namespace {
+
+constexpr const char* kLcmUrl = "udpm://239.255.76.67:7667?ttl=0&recv_buf_size=8388608";
+
+std::string Bin(const std::string& name) { return BinDir() + "/" + name; }
+std::string ConfigFile(const std::string& rel) { return std::string(TOPAY_SOURCE_DIR) + "/config/" + rel; }
+
+struct GraphListener {
+  std::vector<poly_trajectory_t> trajectories;
+  std::vector<planner_status_t> statuses;
+  std::optional<robot_state_t> robot;
+  std::optional<sim_status_t> sim;
+  void OnTrajectory(const lcm::ReceiveBuffer*, const std::string&, const poly_trajectory_t* m) { trajectories.push_back(*m); }
+  void OnStatus(const lcm::ReceiveBuffer*, const std::string&, const planner_status_t* m) { statuses.push_back(*m); }
+  void OnRobot(const lcm::ReceiveBuffer*, const std::string&, const robot_state_t* m) { robot = *m; }
+  void OnSim(const lcm::ReceiveBuffer*, const std::string&, const sim_status_t* m) { sim = *m; }
+  bool Saw(std::int64_t goal_id, std::int8_t state) const {
+    for (const planner_status_t& s : statuses) {
+      if (s.goal_id == goal_id && s.state == state) return true;
+    }
+    return false;
+  }
+  bool SawDetail(const std::string& text) const {
+    for (const planner_status_t& s : statuses) {
+      if (s.detail.find(text) != std::string::npos) return true;
+    }
+    return false;
+  }
+};
+
+class PlannerGraph : public testing::Test {
+ protected:
+  void SetUp() override {
+    std::string why;
+    if (!EnterTestNamespace(&why)) GTEST_SKIP() << why;
+    dir_ = TestDir("graph");
+    // The sim's own room (Tables, seed 3, nothing within 1.2 m of the start), written out so
+    // that this test knows it exactly too.
+    KeepOutRegions keep_out;
+    VerticalCylinder start;
+    start.axis_W_m = Eigen::Vector2d::Zero();
+    start.radius_m = 1.2;
+    start.bottom_z_m = 0.0;
+    start.height_m = 3.0;
+    keep_out.cylinders.push_back(start);
+    scene_ = sim::LoadScene(*sim::ParseSceneArgument("tables", 3), keep_out);
+    WriteSceneJson(dir_ + "/room.json", scene_, nullptr);
+    WriteText(dir_ + "/planner.yaml", "planner_config: " + ConfigFile("planner/topay.yaml") +
+                                          "\ntiming: {from_rest_time_limit_s: 10.0}\n");
+    watcher_ = std::make_unique<HeartbeatWatcher>(kLcmUrl);
+    lcm::LCM& lcm = watcher_->lcm();
+    lcm.subscribe(std::string(channels::TRAJECTORY), &GraphListener::OnTrajectory, &out_);
+    lcm.subscribe(std::string(channels::PLANNER_STATUS), &GraphListener::OnStatus, &out_);
+    lcm.subscribe(std::string(channels::ROBOT_STATE), &GraphListener::OnRobot, &out_);
+    lcm.subscribe(std::string(channels::SIM_STATUS), &GraphListener::OnSim, &out_);
+    pids_.push_back(Spawn({Bin("topay-mapper"), "--config", ConfigFile("mapper/mapper.yaml"), "--name", "mapper",
+                           "--lcm-url", kLcmUrl}, dir_ + "/mapper.txt"));
+    pids_.push_back(Spawn({Bin("topay-planner"), "--config", dir_ + "/planner.yaml", "--name", "planner",
+                           "--lcm-url", kLcmUrl}, dir_ + "/planner.txt"));
+    pids_.push_back(Spawn({Bin("topay-sim"), "--config", ConfigFile("sim/sim.yaml"), "--scene", dir_ + "/room.json",
+                           "--follow", "--name", "sim", "--lcm-url", kLcmUrl}, dir_ + "/sim.txt"));
+    ASSERT_TRUE(watcher_->SpinUntil([&] { return out_.robot.has_value() && watcher_->last.contains("planner") &&
+                                                  watcher_->last.contains("mapper"); }, 15.0))
+        << Logs();
+    watcher_->Spin(1.0);  // a few scans into the map
+  }
+  void TearDown() override {
+    for (pid_t pid : pids_) {
+      if (pid > 0 && launch::ProcessAlive(pid)) {
+        kill(pid, SIGINT);
+        if (WaitFor(pid, 5.0) == -1) kill(pid, SIGKILL), WaitFor(pid, 3.0);
+      }
+    }
+    if (HasFailure()) std::cout << Logs();
+  }
+  std::string Logs() const {
+    return "--- planner\n" + ReadText(dir_ + "/planner.txt") + "--- sim\n" + ReadText(dir_ + "/sim.txt") +
+           "--- mapper\n" + ReadText(dir_ + "/mapper.txt");
+  }
+
+  // A goal configuration 4-6 m from the start, exactly clear of the room by 0.3 m and whose
+  // base the start's base can be proven to reach.
+  WholeBodyState FarGoal(std::uint64_t seed) const {
+    const ProvenBaseRegion region(scene_, kinematics_, Eigen::Vector2d::Zero());
+    const SceneClearanceChecker checker(kinematics_, scene_);
+    Rng rng(seed);
+    for (int k = 0; k < 20000; ++k) {
+      const double r = rng.Uniform(4.0, 6.0), a = rng.Uniform(-M_PI, M_PI);
+      const WholeBodyState s = BentArmState(r * std::cos(a), r * std::sin(a), rng.Uniform(-M_PI, M_PI));
+      if (!region.Reaches({s.x_m, s.y_m})) continue;
+      if (checker.Compute(s).obstacle_m() > 0.3) return s;
+    }
+    ADD_FAILURE() << "no goal found";
+    return BentArmState(0, 0, 0);
+  }
+  void SendGoal(std::int64_t id, const WholeBodyState& goal_state) {
+    msgs::PlanGoal goal;
+    goal.utime = procs::NowUtime();
+    goal.goal_id = id;
+    goal.hint = goal_state;
+    goal.X_WE = kinematics_.EndEffectorPose(goal_state);
+    X_WE_goal_ = goal.X_WE;
+    const goal_t msg = msgs::ToMessage(goal);
+    watcher_->lcm().publish(std::string(channels::GOAL), &msg);
+  }
+  // The robot's end effector vs the goal (m), from the last ROBOT_STATE.
+  double EndEffectorError() const {
+    std::string error;
+    const auto robot = msgs::FromMessage(*out_.robot, &error);
+    return (kinematics_.EndEffectorPose(robot->state).translation() - X_WE_goal_.translation()).norm();
+  }
+  double RobotSpeed() const { return std::abs(out_.robot->velocity.v_mps); }
+  // The base position of trajectory `msg` at t_s after its start.
+  static Eigen::Vector2d BaseAt(const poly_trajectory_t& msg, double t_s) {
+    std::string error;
+    const auto poly = msgs::FromMessage(msg, &error);
+    const auto t = msgs::ToArcYaw(*poly, {}, &error);
+    TrajectorySample p = t->MakePoint();
+    t->Evaluate(t_s, &p);
+    return {p.state.x_m, p.state.y_m};
+  }
+  void AppearBox(const Eigen::Vector2d& p, const Eigen::Vector3d& size) {
+    sim_event_t e{};
+    e.name = "box on the route";
+    e.action = sim_event_t::APPEAR;
+    e.box_id = 1000 + next_box_++;
+    e.has_box = true;
+    e.center_m[0] = p.x();
+    e.center_m[1] = p.y();
+    e.center_m[2] = 0.5 * size.z();
+    for (int a = 0; a < 3; ++a) e.size_m[a] = size(a);
+    e.trigger = sim_event_t::NOW;
+    watcher_->lcm().publish(std::string(channels::SIM_EVENT), &e);
+  }
+  std::int64_t Contacts() const { return out_.sim ? out_.sim->contact_events : -1; }
+
+  RobotModel model_ = LoadRobotModel(ConfigFile("robot/topay_mm.urdf"), ConfigFile("robot/topay_mm.yaml"));
+  Kinematics kinematics_{model_};
+  Scene scene_;
+  std::string dir_;
+  std::vector<pid_t> pids_;
+  std::unique_ptr<HeartbeatWatcher> watcher_;
+  GraphListener out_;
+  Eigen::Isometry3d X_WE_goal_ = Eigen::Isometry3d::Identity();
+  int next_box_ = 0;
+};
+
+TEST_F(PlannerGraph, AGoalAcrossAnUnseenRoomIsReachedWithoutContact) {
+  SendGoal(1, FarGoal(1));
+  ASSERT_TRUE(watcher_->SpinUntil([&] { return out_.Saw(1, planner_status_t::SUCCEEDED); }, 30.0)) << Logs();
+  // Until the planner says the trajectory ended (replans on the way allowed), then at rest.
+  ASSERT_TRUE(watcher_->SpinUntil([&] { return out_.SawDetail("ended"); }, 90.0)) << Logs();
+  watcher_->Spin(0.5);
+  EXPECT_LT(EndEffectorError(), 0.02);
+  EXPECT_LT(RobotSpeed(), 1e-6);
+  EXPECT_EQ(Contacts(), 0);
+  EXPECT_FALSE(out_.Saw(1, planner_status_t::FAILED));
+}
+
+TEST_F(PlannerGraph, ABoxAppearingOnTheRouteTriggersAReplanAroundIt) {
+  SendGoal(2, FarGoal(2));
+  ASSERT_TRUE(watcher_->SpinUntil([&] { return !out_.trajectories.empty(); }, 30.0)) << Logs();
+  const poly_trajectory_t first = out_.trajectories.back();
+  // Where the robot will be 3 s into the trajectory (well ahead of it now): a box there.
+  AppearBox(BaseAt(first, std::min(3.0, 0.7 * first.num_pieces)), {0.4, 0.4, 1.0});
+  ASSERT_TRUE(watcher_->SpinUntil([&] { return out_.SawDetail("collides"); }, 10.0)) << Logs();
+  ASSERT_TRUE(watcher_->SpinUntil([&] { return out_.SawDetail("ended"); }, 90.0)) << Logs();
+  watcher_->Spin(0.5);
+  EXPECT_GT(out_.trajectories.size(), 1u);
+  EXPECT_GE(out_.statuses.back().replans, 1);
+  EXPECT_LT(EndEffectorError(), 0.02);
+  EXPECT_EQ(Contacts(), 0);
+}
+
+TEST_F(PlannerGraph, ABoxAppearingCloseAheadMakesThePlannerStopWithoutContact) {
+  SendGoal(3, FarGoal(3));
+  ASSERT_TRUE(watcher_->SpinUntil([&] { return !out_.trajectories.empty(); }, 30.0)) << Logs();
+  // Once the robot drives at speed, a wide box 1.2 m ahead along its heading.
+  ASSERT_TRUE(watcher_->SpinUntil([&] { return out_.robot && RobotSpeed() > 0.5; }, 20.0)) << Logs();
+  const double yaw = out_.robot->pose.yaw_rad;
+  const Eigen::Vector2d p(out_.robot->pose.x_m, out_.robot->pose.y_m);
+  AppearBox(p + 1.5 * Eigen::Vector2d(std::cos(yaw), std::sin(yaw)), {0.4, 1.2, 1.2});
+  ASSERT_TRUE(watcher_->SpinUntil([&] { return out_.Saw(3, planner_status_t::STOPPING) || out_.SawDetail("collides"); }, 10.0))
+      << Logs();
+  watcher_->Spin(4.0);
+  EXPECT_EQ(Contacts(), 0);
+}
+
+}  // namespace
+}  // namespace topay::test
