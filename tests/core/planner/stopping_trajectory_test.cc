@@ -66,7 +66,7 @@ void ExpectStopsOnThePath(const ArcYawTrajectory& current, double t0,
   EXPECT_LE(worst_ratio, 1.01);
   EXPECT_LE(worst_distance, path_tolerance_m);
   EXPECT_LE(stop.max_path_deviation_m, path_tolerance_m);
-  RecordProperty("worst_distance_m", std::to_string(worst_distance));
+  ::testing::Test::RecordProperty("worst_distance_m", std::to_string(worst_distance));
 }
 
 class StoppingTrajectoryTest : public ::testing::Test {
