@@ -171,9 +171,10 @@ void TimeThePath(const BaseLimits& base, const JointLimits& joints, double fract
     }
     // A moving start: the first run, if it drives the way the base already moves, starts
     // its distance profile at that speed rather than at rest.
-    // (Runs of no motion before it, e.g. a repeated start state, do not count.)
+    // (Runs of no motion before it, e.g. a repeated start state, do not count: they take
+    // under a microsecond.)
     const double drive_sign = a->s(first + 1) - a->s(first);
-    const double initial_rate = a->t(first) == 0.0 && kind(first + 1) == 0 &&
+    const double initial_rate = a->t(first) < 1e-6 && kind(first + 1) == 0 &&
                                         start_speed_mps * drive_sign > 0.0
                                     ? std::abs(start_speed_mps)
                                     : 0.0;

@@ -122,7 +122,7 @@ TEST_F(StoppingTrajectoryTest, StopsC2WithinLimitsOnThePathFromAnyTime) {
 }
 
 TEST_F(StoppingTrajectoryTest, NearTheEndItFollowsTheCurrentTrajectoryToItsEnd) {
-  const double t0 = current_.duration_s() - 0.6;
+  const double t0 = current_.duration_s() - 0.1;  // T / 2 >= 0.15 s: beyond the end
   const StoppingTrajectory stop = MakeStoppingTrajectory(current_, t0, base_, model_.joint_limits);
   ExpectStopsOnThePath(current_, t0, stop, base_, model_.joint_limits);
   EXPECT_TRUE(stop.follows_to_end);
