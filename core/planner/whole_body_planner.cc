@@ -159,17 +159,21 @@ std::string SummariseCandidates(const std::vector<CandidateReport>& candidates) 
 
 // The whole-body path from a moving start: the lead-in's states, then the front end's path
 // from the lead-in's end (its first state, the lead-in's last, kept once). The exact prefix
-// then counts from the start: through the lead-in if the path's own prefix is exact. (The
-// lead-in states that needed the exact check lie within the relief's ramp of the start.)
-// base_path and base_sequence stay the front end's (they begin at the lead-in's end).
-void PrependLeadIn(const LeadIn& lead_in, FrontEndPath* path) {
+// then counts from the start: through the lead-in if the path's own prefix is exact or if
+// some lead-in state passed only the exact check (lead_in_exact). base_path and
+// base_sequence stay the front end's (they begin at the lead-in's end).
+void PrependLeadIn(const LeadIn& lead_in, bool lead_in_exact, FrontEndPath* path) {
   WholeBodyPath& p = path->path;
   const int extra = static_cast<int>(lead_in.states.size()) - 1;
   const double shift_s = lead_in.times_s.back();
   for (double& t : p.times_s) t += shift_s;
   p.states.insert(p.states.begin(), lead_in.states.begin(), lead_in.states.end() - 1);
   p.times_s.insert(p.times_s.begin(), lead_in.times_s.begin(), lead_in.times_s.end() - 1);
-  if (path->exact_prefix_states > 0) path->exact_prefix_states += extra;
+  if (path->exact_prefix_states > 0) {
+    path->exact_prefix_states += extra;
+  } else if (lead_in_exact) {
+    path->exact_prefix_states = extra + 1;  // the start through the lead-in's end
+  }
 }
 
 }  // namespace
@@ -244,12 +248,12 @@ WholeBodyPlanResult WholeBodyPlanner::PlanBy(Clock::time_point deadline,
     result.failure_reason = std::string("moving start: ") + e.what();
     return result;
   }
+  bool lead_in_exact = false;  // some lead-in state passed only the exact check
   if (!lead_in.empty()) {
-    bool used_exact = false;
     const std::string collision =
         CheckLeadIn(lead_in, front_end().validity(), &validator_.checker(),
                     options_.validator.obstacle_margin_m, options_.validator.self_margin_m,
-                    &used_exact);
+                    &lead_in_exact);
     if (!collision.empty()) {
       result.status = PlanStatus::kFrontEndFailed;
       result.front_end.status = FrontEndStatus::kStartInvalid;
@@ -284,7 +288,7 @@ WholeBodyPlanResult WholeBodyPlanner::PlanBy(Clock::time_point deadline,
       if (may_retry) {
         round_limit.emplace(&round_stop, RoundDeadline(end, options_.retry.round_time_share));
       }
-      result = PlanRound(round, level, moving_start, lead_in, X_WE_goal, hint,
+      result = PlanRound(round, level, moving_start, lead_in, lead_in_exact, X_WE_goal, hint,
                          round_stop.get_token(), plan_stop.get_token());
       round_cut = round_stop.stop_requested() && !plan_stop.stop_requested();
       AddTimings(result.timings, &earlier);
@@ -313,6 +317,7 @@ WholeBodyPlanResult WholeBodyPlanner::PlanBy(Clock::time_point deadline,
 
 WholeBodyPlanResult WholeBodyPlanner::PlanRound(int round, int level,
                                                 const MovingState& start, const LeadIn& lead_in,
+                                                bool lead_in_exact,
                                                 const Eigen::Isometry3d& X_WE_goal,
                                                 const std::optional<WholeBodyState>& hint,
                                                 std::stop_token round_stop,
@@ -321,7 +326,9 @@ WholeBodyPlanResult WholeBodyPlanner::PlanRound(int round, int level,
   WholeBodyPlanResult result;
   result.front_end = rounds_[round]->Plan(lead_in.end(), X_WE_goal, hint, round_stop);
   if (result.front_end.success() && !lead_in.empty()) {
-    for (FrontEndPath& path : result.front_end.paths) PrependLeadIn(lead_in, &path);
+    for (FrontEndPath& path : result.front_end.paths) {
+      PrependLeadIn(lead_in, lead_in_exact, &path);
+    }
   }
   const FrontEndStats& stats = result.front_end.stats;
   result.timings.search_ms = stats.goal_ms + stats.topology_ms;

@@ -95,9 +95,11 @@ class WholeBodyPlanner {
  private:
   // One round: the front end of round `round`, then the back end of margin level `level`;
   // `round_stop` ends the round, `plan_stop` (the plan's) also a validation under way.
-  // The front end plans from the lead-in's end; its paths get the lead-in prepended.
+  // The front end plans from the lead-in's end; its paths get the lead-in prepended
+  // (lead_in_exact: some lead-in state passed only the exact check).
   WholeBodyPlanResult PlanRound(int round, int level, const MovingState& start,
-                                const LeadIn& lead_in, const Eigen::Isometry3d& X_WE_goal,
+                                const LeadIn& lead_in, bool lead_in_exact,
+                                const Eigen::Isometry3d& X_WE_goal,
                                 const std::optional<WholeBodyState>& hint,
                                 std::stop_token round_stop, std::stop_token plan_stop) const;
   void OptimizeCandidates(const TrajectoryBackEnd& back_end, const MovingState& start,
