@@ -72,6 +72,12 @@ BackEndSummary FlatnessOptimizer::Optimize(const TrajectoryProblem& problem,
   if (stop.stop_requested()) return run.Finish(BackEndStatus::kCancelled, "cancelled");
   const std::string error = CheckTrajectoryProblem(problem, kinematics_, arm_field_, reach_);
   if (!error.empty()) return run.Finish(BackEndStatus::kInvalidInput, error);
+  // The baseline's head is a rest state (its flat outputs x, y, yaw); it has no moving start.
+  if (!problem.start_rates.IsAtRest()) {
+    return run.Finish(BackEndStatus::kInvalidInput,
+                      "moving start: the flatness baseline plans from rest only (use the arc "
+                      "length-yaw back end)");
+  }
   // Checked like the arc length-yaw back end's, but not used (see the class comment).
   const std::string stretch_error =
       CheckExactPathStretches(problem, static_cast<int>(initial_path.states.size()));

@@ -93,6 +93,20 @@ void TrajectoryObjective::set_terms(const ObjectiveTerms& terms) {
   for (auto& sampler : samplers_) sampler->penalties().set_enabled(terms.penalties);
 }
 
+void TrajectoryObjective::set_start_rates(const WholeBodyRates& rates) {
+  Require(rates.HasJointCount(num_joints_), "start rates must have 0 or " +
+                                                std::to_string(num_joints_) + " joint entries");
+  Require(rates.IsFinite(), "start rates are not finite");
+  // Head velocity and acceleration (paper Sec. III-B: dims [s, yaw, q]; s' = v, yaw' = omega
+  // and s'' = a, yaw'' = beta): the moving-start counterpart of conditions (15)-(17).
+  head_(0, 1) = rates.v_mps;
+  head_(1, 1) = rates.omega_radps;
+  head_.col(1).tail(num_joints_) = rates.JointVelocities(num_joints_);
+  head_(0, 2) = rates.a_mps2;
+  head_(1, 2) = rates.beta_radps2;
+  head_.col(2).tail(num_joints_) = rates.JointAccelerations(num_joints_);
+}
+
 void TrajectoryObjective::set_penalty_scales(const PenaltyValues& scales) {
   for (double scale : scales) {
     Require(std::isfinite(scale) && scale > 0.0, "penalty scales must be finite and > 0");

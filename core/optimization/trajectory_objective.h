@@ -17,6 +17,7 @@
 #include "core/optimization/sample_penalties.h"
 #include "core/robot/kinematics.h"
 #include "core/robot/robot_model.h"
+#include "core/robot/whole_body_rates.h"
 #include "core/robot/whole_body_state.h"
 #include "core/trajectory/arc_yaw_trajectory.h"
 #include "core/trajectory/jerk_energy.h"
@@ -76,7 +77,7 @@ struct ObjectiveBreakdown {
 /// where T_j = T(tau_j) (time map, eq. (21)) and every joint value q = q(xi) (joint map,
 /// eq. (22)) onto the limits less SamplePenaltyOptions::joint_position_margin_rad, so
 /// durations stay positive and joint waypoints and q_f inside their limits with that margin.
-/// The head is the start state at rest (s = 0); the tail's velocity and acceleration are zero
+/// The head is the start state (s = 0), at rest unless set_start_rates says otherwise; the tail's velocity and acceleration are zero
 /// (conditions (15)-(20)).
 ///
 ///   f(x) = jerk energy (W)  +  rho_T sum_j T_j                                    eq. (6)
@@ -124,6 +125,12 @@ class TrajectoryObjective : public LbfgsObjective {
   /// The relief must outlive this object's evaluations.
   void set_endpoint_relief(const EndpointRelief* relief);
   const ObjectiveTerms& terms() const { return terms_; }
+  /// A moving start (issue 18): the head's velocity and acceleration columns become
+  /// [v, omega, qd] and [a, beta, qdd], so every trajectory of x joins the motion under way
+  /// C2-continuously at t = 0. The head is data, not a decision variable: the gradient's form
+  /// is unchanged. Default: at rest. Throws std::invalid_argument for rates that are not
+  /// finite or whose joint vectors are neither empty nor N long.
+  void set_start_rates(const WholeBodyRates& rates);
   /// PHR-ALM multiplier lambda (6) and penalty rho > 0 of the end-effector term.
   void set_multiplier(const Vector6d& lambda, double rho);
   /// Throws std::invalid_argument if the sizes do not match M (K + 1) samples and N joints.

@@ -199,12 +199,13 @@ BackEndSummary TrajectoryOptimizer::Optimize(const TrajectoryProblem& problem,
 bool TrajectoryOptimizer::Prepare(const WholeBodyPath& initial_path, Run* run) const {
   const TrajectoryProblem& problem = run->problem;
   try {
-    run->warm = MakeWarmStart(initial_path, problem.start, problem.base_limits,
-                              kinematics_.model().joint_limits,
+    run->warm = MakeWarmStart(initial_path, problem.start, problem.start_rates,
+                              problem.base_limits, kinematics_.model().joint_limits,
                               options_.objective.panels_per_piece, options_.warm_start);
     run->objective = std::make_unique<TrajectoryObjective>(
         kinematics_, base_field_, arm_field_, problem.base_limits, problem.start,
         problem.X_WE_goal, run->warm.num_pieces, options_.objective);
+    run->objective->set_start_rates(problem.start_rates);  // the head: C2 with the start
     run->x = run->objective->Pack(run->warm.durations_s, run->warm.waypoints, run->warm.end);
     PrepareEndpointRelief(initial_path, run);
   } catch (const std::invalid_argument& e) {

@@ -87,6 +87,13 @@ std::string CheckTrajectoryProblem(const TrajectoryProblem& problem, const Kinem
                                    const ReachHeights& reach) {
   const std::string start_error = CheckStart(problem.start, kinematics.model());
   if (!start_error.empty()) return start_error;
+  if (!problem.start_rates.HasJointCount(kinematics.num_joints())) {
+    return "start rates have joint vectors of " +
+           std::to_string(problem.start_rates.qd_radps.size()) + " / " +
+           std::to_string(problem.start_rates.qdd_radps2.size()) + " entries, the robot " +
+           std::to_string(kinematics.num_joints()) + " joints";
+  }
+  if (!problem.start_rates.IsFinite()) return "start rates are not finite";
   const BaseLimits& l = problem.base_limits;
   for (double limit : {l.v_max_mps, l.a_max_mps2, l.omega_max_radps, l.beta_max_radps2}) {
     if (!(std::isfinite(limit) && limit > 0.0)) return "base limits must be finite and > 0";

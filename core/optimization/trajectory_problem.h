@@ -7,13 +7,19 @@
 #include "core/map/signed_distance_field3.h"
 #include "core/robot/kinematics.h"
 #include "core/robot/robot_model.h"
+#include "core/robot/whole_body_rates.h"
 #include "core/robot/whole_body_state.h"
 
 namespace topay {
 
 /// The problem's inputs besides the fields and the robot (paper Sec. III-C).
 struct TrajectoryProblem {
-  WholeBodyState start;           ///< At rest; s(0) = 0.
+  WholeBodyState start;           ///< s(0) = 0.
+  /// The start's rates (v, omega, a, beta, qd, qdd): the trajectory's head velocity and
+  /// acceleration columns, so that it joins a motion under way C2-continuously (issue 18).
+  /// Default: at rest (conditions (15)-(17) of the paper). The flatness baseline refuses a
+  /// start that is not at rest.
+  WholeBodyRates start_rates;
   Eigen::Isometry3d X_WE_goal = Eigen::Isometry3d::Identity();  ///< p_e of eq. (7).
   BaseLimits base_limits;         ///< Caller-chosen (the benchmark: omega_max 1.25).
   /// Leading and trailing states of the front-end path that were validated exactly rather than
@@ -34,7 +40,7 @@ struct ReachHeights {
 ReachHeights ComputeReachHeights(const Kinematics& kinematics);
 
 /// What every back end checks before it starts: the start state (joint count, finite, joints
-/// within limits), the base limits (finite, > 0), the goal pose (finite, orthonormal), its
+/// within limits), its rates (finite, joint vectors empty or of the robot's joint count), the base limits (finite, > 0), the goal pose (finite, orthonormal), its
 /// height within `reach` and the target not clearly inside an obstacle on the 3D field
 /// (negative by more than a cell). Returns the reason the inputs are unusable, or "".
 std::string CheckTrajectoryProblem(const TrajectoryProblem& problem, const Kinematics& kinematics,

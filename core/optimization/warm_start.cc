@@ -28,6 +28,55 @@ struct Run {
   double total = 0.0;
   double rate = 1.0;
   double accel = 1.0;
+  /// The quantity's rate at the run's first state (> 0 only for a first drive run from a
+  /// moving start: the profile then begins at that speed, FromSpeedProfile).
+  double initial_rate = 0.0;
+};
+
+/// A profile over `total` that begins at initial_rate r0 > 0 and ends at rest, within
+/// rate_max and accel_max (issue 18, a moving start): accelerate from r0 to the peak, cruise,
+/// brake; if braking at accel_max from r0 overshoots `total`, one constant deceleration of
+/// r0^2 / (2 total) instead (the only one that stops there).
+struct FromSpeedProfile {
+  FromSpeedProfile(double total_in, double r0_in, double rate_max, double accel_max)
+      : total(total_in), r0(std::min(r0_in, rate_max)), accel(accel_max) {
+    if (total <= 0.5 * r0 * r0 / accel) {  // braking only: v(t) = r0 - d t
+      braking_only = true;
+      decel = 0.5 * r0 * r0 / std::max(total, kStillStep);
+      duration = r0 / decel;
+      return;
+    }
+    // Ramp r0 -> peak, cruise, peak -> 0: (peak^2 - r0^2) / 2a + peak^2 / 2a <= total.
+    peak = std::min(rate_max, std::sqrt(accel * total + 0.5 * r0 * r0));
+    ramp_up_time = (peak - r0) / accel;
+    ramp_up_length = 0.5 * (peak * peak - r0 * r0) / accel;
+    ramp_down_time = peak / accel;
+    const double cruise_length = total - ramp_up_length - 0.5 * peak * peak / accel;
+    duration = ramp_up_time + std::max(cruise_length, 0.0) / peak + ramp_down_time;
+  }
+  /// The time at which the travel reaches x in [0, total].
+  double Time(double x) const {
+    x = std::clamp(x, 0.0, total);
+    if (braking_only) return (r0 - std::sqrt(std::max(r0 * r0 - 2.0 * decel * x, 0.0))) / decel;
+    if (x <= ramp_up_length) return (std::sqrt(r0 * r0 + 2.0 * accel * x) - r0) / accel;
+    const double braking_length = 0.5 * peak * peak / accel;
+    if (x <= total - braking_length) return ramp_up_time + (x - ramp_up_length) / peak;
+    return duration - std::sqrt(2.0 * (total - x) / accel);
+  }
+  /// The travel at time t (the inverse of Time).
+  double Travel(double t) const {
+    t = std::clamp(t, 0.0, duration);
+    if (braking_only) return std::min(r0 * t - 0.5 * decel * t * t, total);
+    if (t <= ramp_up_time) return r0 * t + 0.5 * accel * t * t;
+    if (t <= duration - ramp_down_time) return ramp_up_length + peak * (t - ramp_up_time);
+    const double left = duration - t;
+    return total - 0.5 * accel * left * left;
+  }
+
+  double total, r0, accel;
+  bool braking_only = false;
+  double decel = 0.0, peak = 0.0, ramp_up_time = 0.0, ramp_up_length = 0.0;
+  double ramp_down_time = 0.0, duration = 0.0;
 };
 
 /// The path as arrays: x, y, s, yaw (unwrapped), q per state; state 0 is the start. progress:
@@ -90,8 +139,10 @@ double RunTime(double total, double rate, double accel) {
 }
 
 /// Times of every state: trapezoids over runs of same-kind steps (see MakeWarmStart).
+/// start_speed_mps: the start's forward speed (0: at rest), used by the first run if it drives
+/// in the speed's direction.
 void TimeThePath(const BaseLimits& base, const JointLimits& joints, double fraction,
-                 PathArrays* a) {
+                 double start_speed_mps, PathArrays* a) {
   const int n = a->size(), num_joints = static_cast<int>(a->q.rows());
   // Per step: 0 = drive, 1 = turn in place / arm only.
   const auto kind = [&](int k) { return std::abs(a->s(k) - a->s(k - 1)) > kStillStep ? 0 : 1; };
@@ -118,23 +169,40 @@ void TimeThePath(const BaseLimits& base, const JointLimits& joints, double fract
     for (int k = first + 1; k <= last; ++k) {
       for (int m = 0; m < num_measures; ++m) total[m] += step_of(m, k);
     }
+    // A moving start: the first run, if it drives the way the base already moves, starts
+    // its distance profile at that speed rather than at rest.
+    // (Runs of no motion before it, e.g. a repeated start state, do not count: they take
+    // under a microsecond.)
+    const double drive_sign = a->s(first + 1) - a->s(first);
+    const double initial_rate = a->t(first) < 1e-6 && kind(first + 1) == 0 &&
+                                        start_speed_mps * drive_sign > 0.0
+                                    ? std::abs(start_speed_mps)
+                                    : 0.0;
     int dominant = 0;
     double run_time = 0.0;
     for (int m = 0; m < num_measures; ++m) {
-      const double time = RunTime(total[m], rate[m], accel[m]);
+      const double time =
+          m == 0 && initial_rate > 0.0 && total[0] > 0.0
+              ? FromSpeedProfile(total[0], initial_rate, rate[0], accel[0]).duration
+              : RunTime(total[m], rate[m], accel[m]);
       if (time > run_time) {
         run_time = time;
         dominant = m;
       }
     }
-    Run run{first, last, a->t(first), run_time, total[dominant], rate[dominant], accel[dominant]};
+    Run run{first, last, a->t(first), run_time, total[dominant], rate[dominant], accel[dominant],
+            dominant == 0 ? initial_rate : 0.0};
     double progress = 0.0;
     for (int k = first + 1; k <= last; ++k) {
       progress += step_of(dominant, k);
       a->progress(k) = progress;
-      a->t(k) = run.start_s + (run_time > 0.0 ? TrapezoidArrivalTime(progress, run.total,
-                                                                    run.rate, run.accel)
-                                              : 0.0);
+      a->t(k) = run.start_s + (run_time <= 0.0 ? 0.0
+                               : run.initial_rate > 0.0
+                                   ? FromSpeedProfile(run.total, run.initial_rate, run.rate,
+                                                      run.accel)
+                                         .Time(progress)
+                                   : TrapezoidArrivalTime(progress, run.total, run.rate,
+                                                          run.accel));
     }
     if (run_time > 0.0) a->runs.push_back(run);
     first = last;
@@ -186,7 +254,11 @@ PathPoint Blend(const PathArrays& a, int k, int k1, double f) {
 PathPoint Interpolate(const PathArrays& a, double t) {
   for (const Run& run : a.runs) {
     if (t > run.start_s + run.duration_s) continue;
-    const double travel = TrapezoidTravel(t - run.start_s, run.total, run.rate, run.accel);
+    const double travel =
+        run.initial_rate > 0.0
+            ? FromSpeedProfile(run.total, run.initial_rate, run.rate, run.accel)
+                  .Travel(t - run.start_s)
+            : TrapezoidTravel(t - run.start_s, run.total, run.rate, run.accel);
     int k = run.first;
     while (k + 1 < run.last && a.progress(k + 1) <= travel) ++k;
     const double span = a.progress(k + 1) - a.progress(k);
@@ -241,9 +313,18 @@ void CheckWarmStartOptions(const WarmStartOptions& options) {
 WarmStart MakeWarmStart(const WholeBodyPath& path, const WholeBodyState& start,
                         const BaseLimits& base_limits, const JointLimits& joint_limits,
                         int panels_per_piece, const WarmStartOptions& options) {
+  return MakeWarmStart(path, start, WholeBodyRates{}, base_limits, joint_limits,
+                       panels_per_piece, options);
+}
+
+WarmStart MakeWarmStart(const WholeBodyPath& path, const WholeBodyState& start,
+                        const WholeBodyRates& start_rates, const BaseLimits& base_limits,
+                        const JointLimits& joint_limits, int panels_per_piece,
+                        const WarmStartOptions& options) {
   CheckInputs(path, start, base_limits, joint_limits, panels_per_piece, options);
+  Require(start_rates.IsFinite(), "the start rates are not finite");
   PathArrays arrays = ToArrays(path, start);
-  TimeThePath(base_limits, joint_limits, options.rate_fraction, &arrays);
+  TimeThePath(base_limits, joint_limits, options.rate_fraction, start_rates.v_mps, &arrays);
   const double profile_s = arrays.t(arrays.size() - 1);
   WarmStart warm;
   warm.path_arc_length_m = arrays.s;

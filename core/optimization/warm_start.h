@@ -5,6 +5,7 @@
 #include "core/optimization/trajectory_objective.h"
 #include "core/planning/whole_body_path.h"
 #include "core/robot/robot_model.h"
+#include "core/robot/whole_body_rates.h"
 #include "core/robot/whole_body_state.h"
 
 namespace topay {
@@ -72,5 +73,17 @@ struct WarmStart {
 WarmStart MakeWarmStart(const WholeBodyPath& path, const WholeBodyState& start,
                         const BaseLimits& base_limits, const JointLimits& joint_limits,
                         int panels_per_piece, const WarmStartOptions& options = {});
+
+/// MakeWarmStart from a moving start (issue 18): as above, except that the first run, if it
+/// drives in the direction of start_rates.v_mps (the front end's lead-in does), is timed by a
+/// profile that begins at |v| (accelerate to the peak, cruise, brake; or brake alone when the
+/// run is shorter than the braking distance), so that the first piece's waypoint lies where
+/// the moving base gets to, not where a base starting at rest would. The other rates (omega,
+/// a, beta, qd, qdd) do not change the timing: they enter the optimizer's head only.
+/// Rest rates give exactly the rest warm start. Throws as above, and for non-finite rates.
+WarmStart MakeWarmStart(const WholeBodyPath& path, const WholeBodyState& start,
+                        const WholeBodyRates& start_rates, const BaseLimits& base_limits,
+                        const JointLimits& joint_limits, int panels_per_piece,
+                        const WarmStartOptions& options = {});
 
 }  // namespace topay

@@ -157,6 +157,25 @@ std::string SummariseCandidates(const std::vector<CandidateReport>& candidates) 
   return out;
 }
 
+// The whole-body path from a moving start: the lead-in's states, then the front end's path
+// from the lead-in's end (its first state, the lead-in's last, kept once). The exact prefix
+// then counts from the start: through the lead-in if the path's own prefix is exact or if
+// some lead-in state passed only the exact check (lead_in_exact). base_path and
+// base_sequence stay the front end's (they begin at the lead-in's end).
+void PrependLeadIn(const LeadIn& lead_in, bool lead_in_exact, FrontEndPath* path) {
+  WholeBodyPath& p = path->path;
+  const int extra = static_cast<int>(lead_in.states.size()) - 1;
+  const double shift_s = lead_in.times_s.back();
+  for (double& t : p.times_s) t += shift_s;
+  p.states.insert(p.states.begin(), lead_in.states.begin(), lead_in.states.end() - 1);
+  p.times_s.insert(p.times_s.begin(), lead_in.times_s.begin(), lead_in.times_s.end() - 1);
+  if (path->exact_prefix_states > 0) {
+    path->exact_prefix_states += extra;
+  } else if (lead_in_exact) {
+    path->exact_prefix_states = extra + 1;  // the start through the lead-in's end
+  }
+}
+
 }  // namespace
 
 std::string TimeLimitPrefix(double time_limit_s, PlanStage stage) {
@@ -195,8 +214,57 @@ WholeBodyPlanResult WholeBodyPlanner::PlanBy(Clock::time_point deadline,
                                              const Eigen::Isometry3d& X_WE_goal,
                                              const std::optional<WholeBodyState>& hint,
                                              std::stop_token stop) const {
+  return PlanBy(deadline, MovingState{start, WholeBodyRates{}}, X_WE_goal, hint, stop);
+}
+
+WholeBodyPlanResult WholeBodyPlanner::Plan(const MovingState& start,
+                                           const Eigen::Isometry3d& X_WE_goal,
+                                           const std::optional<WholeBodyState>& hint,
+                                           std::stop_token stop) const {
+  return PlanBy(Clock::time_point::max(), start, X_WE_goal, hint, stop);
+}
+
+WholeBodyPlanResult WholeBodyPlanner::PlanBy(Clock::time_point deadline,
+                                             const MovingState& moving_start,
+                                             const Eigen::Isometry3d& X_WE_goal,
+                                             const std::optional<WholeBodyState>& hint,
+                                             std::stop_token stop) const {
   const Clock::time_point t0 = Clock::now();
   WholeBodyPlanResult result;
+  // A moving start: the braking lead-in along the current heading, checked before any
+  // search (the front end plans from its end; with rest rates it is the start alone).
+  LeadIn lead_in;
+  lead_in.states = {moving_start.state};
+  lead_in.times_s = {0.0};
+  try {
+    // Rest: the start alone, unchecked here (the front end reports a bad start as before).
+    if (!moving_start.rates.IsAtRest()) {
+      lead_in = MakeLeadIn(moving_start, base_limits_,
+                           validator_.kinematics().model().joint_limits, options_.lead_in);
+    }
+  } catch (const std::invalid_argument& e) {
+    result.status = PlanStatus::kInvalidInput;
+    result.front_end.failure_reason = e.what();
+    result.failure_reason = std::string("moving start: ") + e.what();
+    return result;
+  }
+  bool lead_in_exact = false;  // some lead-in state passed only the exact check
+  if (!lead_in.empty()) {
+    const std::string collision =
+        CheckLeadIn(lead_in, front_end().validity(), &validator_.checker(),
+                    options_.validator.obstacle_margin_m, options_.validator.self_margin_m,
+                    &lead_in_exact);
+    if (!collision.empty()) {
+      result.status = PlanStatus::kFrontEndFailed;
+      result.front_end.status = FrontEndStatus::kStartInvalid;
+      result.front_end.failure_reason = collision;
+      result.failure_reason = collision;
+      result.timings.total_ms = Stopwatch::MillisecondsBetween(t0, Clock::now());
+      return result;
+    }
+  }
+  // The front end's start: the lead-in's end (the start itself when at rest).
+  const WholeBodyState& start = lead_in.end();
   // One stop for the whole plan: the caller's, or the time limit.
   std::stop_source plan_stop;
   const std::stop_callback forward(stop, [&plan_stop] { plan_stop.request_stop(); });
@@ -220,8 +288,8 @@ WholeBodyPlanResult WholeBodyPlanner::PlanBy(Clock::time_point deadline,
       if (may_retry) {
         round_limit.emplace(&round_stop, RoundDeadline(end, options_.retry.round_time_share));
       }
-      result = PlanRound(round, level, start, X_WE_goal, hint, round_stop.get_token(),
-                         plan_stop.get_token());
+      result = PlanRound(round, level, moving_start, lead_in, lead_in_exact, X_WE_goal, hint,
+                         round_stop.get_token(), plan_stop.get_token());
       round_cut = round_stop.stop_requested() && !plan_stop.stop_requested();
       AddTimings(result.timings, &earlier);
       const bool last = !may_retry || plan_stop.stop_requested() || end - Clock::now() < min_left;
@@ -248,14 +316,20 @@ WholeBodyPlanResult WholeBodyPlanner::PlanBy(Clock::time_point deadline,
 }
 
 WholeBodyPlanResult WholeBodyPlanner::PlanRound(int round, int level,
-                                                const WholeBodyState& start,
+                                                const MovingState& start, const LeadIn& lead_in,
+                                                bool lead_in_exact,
                                                 const Eigen::Isometry3d& X_WE_goal,
                                                 const std::optional<WholeBodyState>& hint,
                                                 std::stop_token round_stop,
                                                 std::stop_token plan_stop) const {
   const Clock::time_point t0 = Clock::now();
   WholeBodyPlanResult result;
-  result.front_end = rounds_[round]->Plan(start, X_WE_goal, hint, round_stop);
+  result.front_end = rounds_[round]->Plan(lead_in.end(), X_WE_goal, hint, round_stop);
+  if (result.front_end.success() && !lead_in.empty()) {
+    for (FrontEndPath& path : result.front_end.paths) {
+      PrependLeadIn(lead_in, lead_in_exact, &path);
+    }
+  }
   const FrontEndStats& stats = result.front_end.stats;
   result.timings.search_ms = stats.goal_ms + stats.topology_ms;
   result.timings.sampling_ms = stats.discretisation_ms + stats.acquisition_ms;
@@ -335,8 +409,14 @@ void WholeBodyPlanner::RunCandidate(const TrajectoryBackEnd& back_end,
     try {  // either parameterisation (arc length-yaw, or the flatness baseline)
       // The plan's stop (time limit, caller), not the early-termination window: a
       // validation that has begun finishes unless the plan must end.
-      report->validation = validator_.Validate(report->optimization.Sampled(), problem.start,
-                                               problem.X_WE_goal, plan_stop);
+      // A moving start: the rates at t = 0 are checked too (rest: the rest-start check).
+      report->validation =
+          problem.start_rates.IsAtRest()
+              ? validator_.Validate(report->optimization.Sampled(), problem.start,
+                                    problem.X_WE_goal, plan_stop)
+              : validator_.Validate(report->optimization.Sampled(),
+                                    MovingState{problem.start, problem.start_rates},
+                                    problem.X_WE_goal, plan_stop);
     } catch (const std::exception& e) {  // a malformed summary counts as a failure
       ValidationReport failed;
       failed.ok = false;
@@ -348,7 +428,7 @@ void WholeBodyPlanner::RunCandidate(const TrajectoryBackEnd& back_end,
 }
 
 void WholeBodyPlanner::OptimizeCandidates(const TrajectoryBackEnd& back_end,
-                                          const WholeBodyState& start,
+                                          const MovingState& start,
                                           const Eigen::Isometry3d& X_WE_goal,
                                           std::stop_token round_stop, std::stop_token plan_stop,
                                           WholeBodyPlanResult* result) const {
@@ -357,7 +437,11 @@ void WholeBodyPlanner::OptimizeCandidates(const TrajectoryBackEnd& back_end,
   const int n = std::min<int>(options_.max_candidates, paths.size());
   result->candidates.assign(n, CandidateReport{});
   for (int i = 0; i < n; ++i) result->candidates[i].path_index = i;
-  const TrajectoryProblem problem{start, X_WE_goal, base_limits_};
+  TrajectoryProblem problem;
+  problem.start = start.state;
+  problem.start_rates = start.rates;
+  problem.X_WE_goal = X_WE_goal;
+  problem.base_limits = base_limits_;
 
   // The stage's stop: the round's, or the early-termination window after the first success.
   // A validation that has begun finishes unless the plan (not just the round) must end.

@@ -16,6 +16,8 @@
 #include "core/planner/whole_body_plan_result.h"
 #include "core/planner/whole_body_planner_options.h"
 #include "core/planning/front_end.h"
+#include "core/planning/lead_in.h"
+#include "core/robot/moving_state.h"
 #include "core/robot/kinematics.h"
 #include "core/validate/trajectory_validator.h"
 
@@ -68,6 +70,22 @@ class WholeBodyPlanner {
                              const std::optional<WholeBodyState>& hint = std::nullopt,
                              std::stop_token stop = {}) const;
 
+  /// Plan from a moving start (issue 18): the trajectory starts C2-continuously with
+  /// `start` (x, y, yaw, q and v, omega, a, beta, qd, qdd at t = 0; arc length-yaw back end
+  /// only, the flatness baseline refuses it). When |v| >= options().lead_in.min_speed_mps
+  /// the whole-body path begins with the braking lead-in along the current heading
+  /// (MakeLeadIn) and the front end plans from its end; if the lead-in collides the plan
+  /// fails at once (kFrontEndFailed, front end kStartInvalid, reason "moving start: ...")
+  /// and the caller keeps its stopping trajectory. The validator also checks the rates at
+  /// t = 0 (TrajectoryValidator::Validate with a MovingState). Rest rates: exactly Plan.
+  WholeBodyPlanResult Plan(const MovingState& start, const Eigen::Isometry3d& X_WE_goal,
+                           const std::optional<WholeBodyState>& hint = std::nullopt,
+                           std::stop_token stop = {}) const;
+  WholeBodyPlanResult PlanBy(std::chrono::steady_clock::time_point deadline,
+                             const MovingState& start, const Eigen::Isometry3d& X_WE_goal,
+                             const std::optional<WholeBodyState>& hint = std::nullopt,
+                             std::stop_token stop = {}) const;
+
   const WholeBodyPlannerOptions& options() const { return options_; }
   const BaseLimits& base_limits() const { return base_limits_; }
   /// The first round's front end (PlanRetryOptions: later rounds differ only in their seeds).
@@ -77,11 +95,14 @@ class WholeBodyPlanner {
  private:
   // One round: the front end of round `round`, then the back end of margin level `level`;
   // `round_stop` ends the round, `plan_stop` (the plan's) also a validation under way.
-  WholeBodyPlanResult PlanRound(int round, int level, const WholeBodyState& start,
+  // The front end plans from the lead-in's end; its paths get the lead-in prepended
+  // (lead_in_exact: some lead-in state passed only the exact check).
+  WholeBodyPlanResult PlanRound(int round, int level, const MovingState& start,
+                                const LeadIn& lead_in, bool lead_in_exact,
                                 const Eigen::Isometry3d& X_WE_goal,
                                 const std::optional<WholeBodyState>& hint,
                                 std::stop_token round_stop, std::stop_token plan_stop) const;
-  void OptimizeCandidates(const TrajectoryBackEnd& back_end, const WholeBodyState& start,
+  void OptimizeCandidates(const TrajectoryBackEnd& back_end, const MovingState& start,
                           const Eigen::Isometry3d& X_WE_goal, std::stop_token round_stop,
                           std::stop_token plan_stop, WholeBodyPlanResult* result) const;
   void RunCandidate(const TrajectoryBackEnd& back_end, const TrajectoryProblem& problem,

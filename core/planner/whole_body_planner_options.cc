@@ -10,6 +10,7 @@
 namespace topay {
 
 void CheckWholeBodyPlannerOptions(const WholeBodyPlannerOptions& o) {
+  CheckLeadInOptions(o.lead_in);
   auto require = [](bool ok, const char* field, const char* rule) {
     if (!ok) {
       throw std::invalid_argument(std::string("WholeBodyPlannerOptions::") + field + " must be " +

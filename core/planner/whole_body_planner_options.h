@@ -4,6 +4,7 @@
 
 #include "core/optimization/trajectory_optimizer.h"
 #include "core/planning/front_end_options.h"
+#include "core/planning/lead_in.h"
 #include "core/robot/robot_model.h"
 #include "core/validate/trajectory_validator.h"
 
@@ -48,6 +49,9 @@ struct WholeBodyPlannerOptions {
   TrajectoryOptimizerOptions optimizer;
   /// The independent check of every success (exact boxes, 10 ms samples, limits + 1 %).
   TrajectoryValidatorOptions validator;
+  /// A moving start (issue 18): the braking lead-in along the current heading that the
+  /// whole-body path begins with (core/planning/lead_in.h; defaults there).
+  LeadInOptions lead_in;
   /// Base limits of the whole plan. Unset: the robot model's (the real robot's
   /// omega_max 0.9 rad/s); the benchmark sets the paper's simulation limits.
   std::optional<BaseLimits> base_limits;

@@ -109,7 +109,9 @@ void CheckTrajectoryValidatorOptions(const TrajectoryValidatorOptions& o) {
       {"self_margin_m", o.self_margin_m},
       {"start_position_tolerance_m", o.start_position_tolerance_m},
       {"start_angle_tolerance_rad", o.start_angle_tolerance_rad},
-      {"end_rest_tolerance", o.end_rest_tolerance}};
+      {"end_rest_tolerance", o.end_rest_tolerance},
+      {"start_velocity_tolerance", o.start_velocity_tolerance},
+      {"start_acceleration_tolerance", o.start_acceleration_tolerance}};
   for (const auto& [field, value] : nonnegative) {
     RequireOption(finite_nonnegative(value), field, value, "finite and >= 0");
   }
@@ -132,11 +134,31 @@ ValidationReport TrajectoryValidator::Validate(const SampledTrajectory& trajecto
                                                const WholeBodyState& start,
                                                const Eigen::Isometry3d& X_WE_goal,
                                                std::stop_token stop) const {
+  return Run(trajectory, start, nullptr, X_WE_goal, stop);
+}
+
+ValidationReport TrajectoryValidator::Validate(const SampledTrajectory& trajectory,
+                                               const MovingState& start,
+                                               const Eigen::Isometry3d& X_WE_goal,
+                                               std::stop_token stop) const {
+  return Run(trajectory, start.state, &start.rates, X_WE_goal, stop);
+}
+
+ValidationReport TrajectoryValidator::Run(const SampledTrajectory& trajectory,
+                                          const WholeBodyState& start,
+                                          const WholeBodyRates* start_rates,
+                                          const Eigen::Isometry3d& X_WE_goal,
+                                          std::stop_token stop) const {
   ValidationReport report;
   report.duration_s = trajectory.duration_s;
-  ValidationRun run(*this, start, X_WE_goal, &report);
+  ValidationRun run(*this, start, X_WE_goal, &report, start_rates);
   const int num_joints = kinematics_.num_joints();
-  const std::string input_error = CheckInput(trajectory, start, X_WE_goal, num_joints, options_);
+  std::string input_error = CheckInput(trajectory, start, X_WE_goal, num_joints, options_);
+  if (input_error.empty() && start_rates != nullptr &&
+      !(start_rates->IsFinite() && start_rates->HasJointCount(num_joints))) {
+    input_error = "the start rates are not finite or not sized for " +
+                  std::to_string(num_joints) + " joints";
+  }
   TrajectorySampler sampler;
   if (input_error.empty()) {
     try {

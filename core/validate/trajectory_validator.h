@@ -9,6 +9,7 @@
 #include "core/robot/kinematics.h"
 #include "core/robot/robot_model.h"
 #include "core/robot/self_collision.h"
+#include "core/robot/moving_state.h"
 #include "core/robot/whole_body_state.h"
 #include "core/trajectory/trajectory_sample.h"
 #include "core/validate/validation_report.h"
@@ -36,6 +37,13 @@ struct TrajectoryValidatorOptions {
   /// 2 pi) and every joint within 1 mrad.
   double start_position_tolerance_m = 1e-3;
   double start_angle_tolerance_rad = 1e-3;
+  /// A moving start (Validate with a MovingState, issue 18): at t = 0 the trajectory's v,
+  /// omega and every qd (m/s, rad/s) within start_velocity_tolerance of the start's rates,
+  /// a, beta and every qdd (m/s^2, rad/s^2) within start_acceleration_tolerance. The arc
+  /// length-yaw head imposes them exactly (round-off ~1e-9), so 1e-3 only absorbs sampling
+  /// round-off. A rest start's rates are not checked (as before).
+  double start_velocity_tolerance = 1e-3;
+  double start_acceleration_tolerance = 1e-3;
   /// At the end the robot must be at rest (paper eqs. (18)-(20)): |v| (m/s), |omega| and every
   /// |qd| (rad/s) at most this.
   double end_rest_tolerance = 1e-3;
@@ -83,6 +91,13 @@ class TrajectoryValidator {
   ValidationReport Validate(const SampledTrajectory& trajectory, const WholeBodyState& start,
                             const Eigen::Isometry3d& X_WE_goal, std::stop_token stop = {}) const;
 
+  /// Validates a trajectory from a moving start (issue 18): as above, and at t = 0 also the
+  /// rates v, omega, a, beta, qd, qdd against start.rates (start_velocity_tolerance,
+  /// start_acceleration_tolerance); a failure there is a kStart failure naming the rate.
+  /// Rates whose joint vectors are neither empty nor N long, or not finite, are kInput.
+  ValidationReport Validate(const SampledTrajectory& trajectory, const MovingState& start,
+                            const Eigen::Isometry3d& X_WE_goal, std::stop_token stop = {}) const;
+
   const TrajectoryValidatorOptions& options() const { return options_; }
   const BaseLimits& base_limits() const { return base_limits_; }
   const Kinematics& kinematics() const { return kinematics_; }
@@ -91,6 +106,10 @@ class TrajectoryValidator {
   const SelfCollision& self_collision() const { return self_collision_; }
 
  private:
+  ValidationReport Run(const SampledTrajectory& trajectory, const WholeBodyState& start,
+                       const WholeBodyRates* start_rates, const Eigen::Isometry3d& X_WE_goal,
+                       std::stop_token stop) const;
+
   const Kinematics& kinematics_;
   Scene scene_;  // before checker_, which refers to it
   BaseLimits base_limits_;

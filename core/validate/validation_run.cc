@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 #include <sstream>
+#include <vector>
 
 #include "core/common/angles.h"
 #include "core/validate/limit_ratios.h"
@@ -42,11 +43,13 @@ void Record(double clearance_m, int part, int box, double t_s, ClearanceRecord* 
 }  // namespace
 
 ValidationRun::ValidationRun(const TrajectoryValidator& validator, const WholeBodyState& start,
-                             const Eigen::Isometry3d& X_WE_goal, ValidationReport* report)
+                             const Eigen::Isometry3d& X_WE_goal, ValidationReport* report,
+                             const WholeBodyRates* start_rates)
     : validator_(validator),
       options_(validator.options()),
       model_(validator.kinematics().model()),
       start_(start),
+      start_rates_(start_rates),
       X_WE_goal_(X_WE_goal),
       report_(report),
       workspace_(validator.checker().MakeWorkspace()) {}
@@ -72,6 +75,7 @@ bool ValidationRun::CheckSample(double t_s, const TrajectorySample& sample, bool
   sample_failed_ = false;
   if (!CheckFinite(t_s, sample)) return true;
   if (is_first) CheckStart(t_s, sample.state);
+  if (is_first && start_rates_ != nullptr) CheckStartRates(t_s, sample);
   validator_.kinematics().Update(sample.state, &workspace_.cache);
   CheckObstacles(t_s);
   CheckSelf(t_s);
@@ -110,6 +114,38 @@ bool ValidationRun::CheckFinite(double t_s, const TrajectorySample& sample) {
   Fail(ValidationCheck::kNonFinite, t_s, joint, std::numeric_limits<double>::quiet_NaN(), 0.0,
        message.str());
   return false;
+}
+
+void ValidationRun::CheckStartRates(double t_s, const TrajectorySample& sample) {
+  const WholeBodyRates& r = *start_rates_;
+  const int n = model_.num_joints();
+  struct Quantity {
+    const char* name;
+    double value, expected, tolerance;
+    int joint;
+  };
+  const double velocity_tol = options_.start_velocity_tolerance;
+  const double acceleration_tol = options_.start_acceleration_tolerance;
+  std::vector<Quantity> quantities = {
+      {"forward speed v", sample.v_mps, r.v_mps, velocity_tol, -1},
+      {"yaw rate omega", sample.omega_radps, r.omega_radps, velocity_tol, -1},
+      {"forward acceleration a", sample.a_mps2, r.a_mps2, acceleration_tol, -1},
+      {"yaw acceleration beta", sample.beta_radps2, r.beta_radps2, acceleration_tol, -1}};
+  const Eigen::VectorXd qd = r.JointVelocities(n), qdd = r.JointAccelerations(n);
+  for (int j = 0; j < n; ++j) {
+    quantities.push_back({"velocity", sample.qd_radps(j), qd(j), velocity_tol, j});
+    quantities.push_back({"acceleration", sample.qdd_radps2(j), qdd(j), acceleration_tol, j});
+  }
+  for (const Quantity& q : quantities) {
+    const double error = std::abs(q.value - q.expected);
+    if (error <= q.tolerance) continue;  // a NaN was reported by CheckFinite
+    std::ostringstream message;
+    message << At(t_s) << (q.joint >= 0 ? JointName(q.joint) + " " : std::string()) << q.name
+            << " is " << q.value << ", the moving start's " << q.expected << " (tolerance "
+            << q.tolerance << ")";
+    Fail(ValidationCheck::kStart, t_s, q.joint, error, q.tolerance, message.str());
+    return;
+  }
 }
 
 void ValidationRun::CheckStart(double t_s, const WholeBodyState& state) {

@@ -5,6 +5,7 @@
 #include <Eigen/Geometry>
 
 #include "core/collision/scene_clearance.h"
+#include "core/robot/whole_body_rates.h"
 #include "core/trajectory/trajectory_sample.h"
 #include "core/validate/trajectory_validator.h"
 #include "core/validate/validation_report.h"
@@ -17,8 +18,11 @@ namespace topay {
 /// failure only).
 class ValidationRun {
  public:
+  /// start_rates: a moving start's rates, checked at the first sample (null: a rest start,
+  /// whose rates are not checked there). Must outlive this object.
   ValidationRun(const TrajectoryValidator& validator, const WholeBodyState& start,
-                const Eigen::Isometry3d& X_WE_goal, ValidationReport* report);
+                const Eigen::Isometry3d& X_WE_goal, ValidationReport* report,
+                const WholeBodyRates* start_rates = nullptr);
 
   /// Every check of one sample in ValidationCheck order: finite values, the start (first
   /// sample), obstacle and self clearances, limits, and at the last sample rest and the
@@ -36,6 +40,9 @@ class ValidationRun {
  private:
   bool CheckFinite(double t_s, const TrajectorySample& sample);
   void CheckStart(double t_s, const WholeBodyState& state);
+  /// A moving start: v, omega, qd within start_velocity_tolerance and a, beta, qdd within
+  /// start_acceleration_tolerance of start_rates_.
+  void CheckStartRates(double t_s, const TrajectorySample& sample);
   void CheckObstacles(double t_s);
   void CheckSelf(double t_s);
   void CheckLimits(double t_s, const TrajectorySample& sample);
@@ -50,6 +57,7 @@ class ValidationRun {
   const TrajectoryValidatorOptions& options_;
   const RobotModel& model_;
   const WholeBodyState& start_;
+  const WholeBodyRates* start_rates_;
   const Eigen::Isometry3d& X_WE_goal_;
   ValidationReport* report_;
   SceneClearanceWorkspace workspace_;

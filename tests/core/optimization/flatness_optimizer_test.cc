@@ -283,6 +283,17 @@ TEST_F(FlatnessOptimizerTest, TurnInPlaceReturnsCleanlyWithAReason) {
   EXPECT_EQ(summary.success(), summary.reason.empty()) << summary.reason;
 }
 
+// Issue 18: the baseline plans from rest only; a moving start is refused with the reason.
+TEST_F(FlatnessOptimizerTest, AMovingStartIsRefusedWithAReason) {
+  const WholeBodyState start = MakeState(0.0, 0.0, 0.0, ReadyJoints());
+  const WholeBodyState goal = MakeState(2.0, 0.0, 0.0, ReadyJoints());
+  TrajectoryProblem problem = Problem(start, goal);
+  problem.start_rates.v_mps = 0.5;
+  const BackEndSummary summary = optimizer_.Optimize(problem, StraightPath(start, goal));
+  EXPECT_EQ(summary.status, BackEndStatus::kInvalidInput);
+  EXPECT_EQ(summary.reason.rfind("moving start:", 0), 0u) << summary.reason;
+}
+
 TEST_F(FlatnessOptimizerTest, BadInputFailsCleanlyWithAReason) {
   const WholeBodyState start = MakeState(0.0, 0.0, 0.0, ReadyJoints());
   const WholeBodyState goal = MakeState(2.0, 0.0, 0.0, ReadyJoints());

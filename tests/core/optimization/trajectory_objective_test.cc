@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <stdexcept>
 #include <stop_token>
 #include <string>
 
@@ -163,6 +164,51 @@ TEST_F(TrajectoryObjectiveTest, WholeObjectiveGradient) {
   ExpectGradientMatches(terms, "stage 2 objective");
   terms.path_fit = true;
   ExpectGradientMatches(terms, "everything");
+}
+
+// A moving start (issue 18): the head's velocity and acceleration columns are the start's
+// rates; every term's gradient still matches central differences, and the trajectory
+// starts with those rates.
+TEST_F(TrajectoryObjectiveTest, MovingHeadGradientAndInitialRates) {
+  WholeBodyRates rates;
+  rates.v_mps = 0.25;
+  rates.omega_radps = -0.2;
+  rates.a_mps2 = 0.08;
+  rates.beta_radps2 = 0.05;
+  rates.qd_radps = Eigen::VectorXd::LinSpaced(7, -0.08, 0.08);
+  rates.qdd_radps2 = Eigen::VectorXd::LinSpaced(7, 0.04, -0.04);
+  double rest_cost = 0.0;
+  objective_->set_terms(ObjectiveTerms());
+  ASSERT_TRUE(objective_->Evaluate(x_.data(), &rest_cost, nullptr));
+  objective_->set_start_rates(rates);
+  EXPECT_DOUBLE_EQ(objective_->head()(0, 1), 0.25);
+  EXPECT_DOUBLE_EQ(objective_->head()(1, 2), 0.05);
+  double moving_cost = 0.0;
+  ASSERT_TRUE(objective_->Evaluate(x_.data(), &moving_cost, nullptr));
+  EXPECT_NE(moving_cost, rest_cost);  // the head enters the trajectory
+  TrajectorySample sample = objective_->trajectory().MakePoint();
+  objective_->trajectory().Evaluate(0.0, &sample);
+  EXPECT_NEAR(sample.v_mps, rates.v_mps, 1e-9);
+  EXPECT_NEAR(sample.omega_radps, rates.omega_radps, 1e-9);
+  EXPECT_NEAR(sample.a_mps2, rates.a_mps2, 1e-9);
+  EXPECT_NEAR(sample.beta_radps2, rates.beta_radps2, 1e-9);
+  EXPECT_LT((sample.qd_radps - rates.qd_radps).cwiseAbs().maxCoeff(), 1e-9);
+  EXPECT_LT((sample.qdd_radps2 - rates.qdd_radps2).cwiseAbs().maxCoeff(), 1e-9);
+  for (int t = 0; t < kNumPenaltyTerms; ++t) {
+    ObjectiveTerms terms = NoTerms();
+    terms.penalties = Only(static_cast<PenaltyTerm>(t));
+    ExpectGradientMatches(terms, "moving " + std::string(ToString(static_cast<PenaltyTerm>(t))));
+  }
+  ObjectiveTerms terms;
+  terms.path_fit = true;
+  ExpectGradientMatches(terms, "moving everything");
+  // Rates of the wrong joint count or not finite are refused.
+  WholeBodyRates bad = rates;
+  bad.qd_radps.resize(3);
+  EXPECT_THROW(objective_->set_start_rates(bad), std::invalid_argument);
+  bad = rates;
+  bad.a_mps2 = std::nan("");
+  EXPECT_THROW(objective_->set_start_rates(bad), std::invalid_argument);
 }
 
 TEST_F(TrajectoryObjectiveTest, PenaltyScalesMultiplyTheirTermsOnly) {

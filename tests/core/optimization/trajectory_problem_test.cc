@@ -69,6 +69,16 @@ TEST_F(TrajectoryProblemTest, AGoodProblemPassesAndEachDefectIsNamed) {
   p = problem_;
   p.X_WE_goal.translation() = Eigen::Vector3d(2.0, 0.0, 0.5);  // the box's centre
   expect(p, "target inside an obstacle");
+  // A moving start (issue 18): rates of the robot's joint count (or none) and finite.
+  p = problem_;
+  p.start_rates = WholeBodyRates::Zero(7);
+  p.start_rates.v_mps = 0.8;
+  EXPECT_EQ(Check(p), "");
+  p.start_rates.qdd_radps2.resize(4);
+  expect(p, "start rates have joint vectors");
+  p = problem_;
+  p.start_rates.omega_radps = std::numeric_limits<double>::quiet_NaN();
+  expect(p, "start rates are not finite");
 }
 
 }  // namespace

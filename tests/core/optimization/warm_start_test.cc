@@ -166,3 +166,68 @@ TEST_F(WarmStartTest, RejectsBadInputNamingIt) {
 
 }  // namespace
 }  // namespace topay
+
+namespace topay {
+namespace {
+
+// Issue 18: a moving start. The 6 m straight drive of StraightDriveFollowsOneTrapezoid from
+// 1 m/s needs no ramp up: 4.75 + 0.625 m at 1 m/s then 1.25 s of braking = 6.625 s; from
+// 0.5 m/s: 0.625 s ramp (0.46875 m) + 4.90625 s cruise + 1.25 s brake = 6.78125 s. The
+// first waypoint lies where the moving base gets to.
+class MovingWarmStartTest : public ::testing::Test {
+ protected:
+  MovingWarmStartTest() : model_(testing::LoadTopayModel()) {
+    start_ = testing::MakeState(1.0, 2.0, 0.0, testing::ReadyJoints());
+    goal_ = testing::MakeState(7.0, 2.0, 0.0, testing::ReadyJoints());
+    options_.piece_duration_s = 1.5;
+  }
+  WarmStart Make(double v_mps) const {
+    WholeBodyRates rates;
+    rates.v_mps = v_mps;
+    return MakeWarmStart(testing::StraightPath(start_, goal_), start_, rates, limits_,
+                         model_.joint_limits, kPanels, options_);
+  }
+  RobotModel model_;
+  BaseLimits limits_;
+  WholeBodyState start_, goal_;
+  WarmStartOptions options_;
+};
+
+TEST_F(MovingWarmStartTest, FirstRunStartsAtTheCurrentSpeed) {
+  const WarmStart fast = Make(1.0);
+  EXPECT_NEAR(fast.total_duration_s, 6.625, 1e-9);
+  ASSERT_EQ(fast.num_pieces, 5);  // from the continuous profile, as at rest
+  // s at T = 6.625 / 5 = 1.325 s: cruising at 1 m/s from the start.
+  EXPECT_NEAR(fast.waypoints(0, 0), 1.325, 1e-9);
+  EXPECT_NEAR(fast.path_times_s(fast.path_times_s.size() - 1), 6.625, 1e-9);
+  const WarmStart half = Make(0.5);
+  EXPECT_NEAR(half.total_duration_s, 6.78125, 1e-9);
+  // At T = 6.78125 / 5 = 1.35625 s: 0.46875 m + 0.73125 s at 1 m/s.
+  EXPECT_NEAR(half.waypoints(0, 0), 0.46875 + (1.35625 - 0.625), 1e-9);
+}
+
+TEST_F(MovingWarmStartTest, RestOrOpposingSpeedGivesTheRestWarmStart) {
+  const WarmStart rest = MakeWarmStart(testing::StraightPath(start_, goal_), start_, limits_,
+                                       model_.joint_limits, kPanels, options_);
+  for (double v : {0.0, -0.8}) {  // -0.8: the path drives forwards, the base backwards
+    const WarmStart warm = Make(v);
+    EXPECT_EQ(warm.total_duration_s, rest.total_duration_s) << v;
+    EXPECT_EQ(warm.durations_s, rest.durations_s) << v;
+    EXPECT_EQ(warm.waypoints, rest.waypoints) << v;
+    EXPECT_EQ(warm.reference.p_W, rest.reference.p_W) << v;
+  }
+}
+
+TEST_F(MovingWarmStartTest, ShorterThanTheBrakingDistanceBrakesHarder) {
+  // 0.3 m at 1 m/s: one deceleration of 1 / 0.6 m/s^2 over 0.6 s.
+  goal_.x_m = 1.3;
+  const WarmStart warm = Make(1.0);
+  EXPECT_NEAR(warm.path_times_s(warm.path_times_s.size() - 1), 0.6, 1e-6);
+}
+
+TEST_F(MovingWarmStartTest, NonFiniteRatesThrow) {
+  EXPECT_THROW(Make(std::numeric_limits<double>::quiet_NaN()), std::invalid_argument);
+}
+
+}  // namespace
+}  // namespace topay

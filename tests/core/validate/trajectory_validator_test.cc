@@ -627,3 +627,105 @@ TEST_F(TrajectoryValidatorTest, AStopEndsTheCheckAndIsAFailure) {
 
 }  // namespace
 }  // namespace topay
+
+namespace topay {
+namespace {
+
+// Issue 18: a moving start. A 2 m drive in 8 s whose head moves (v 0.3 m/s, omega 0.1 rad/s,
+// a 0.05, beta -0.02, joint 3 at 0.05 rad/s and 0.02 rad/s^2) passes against its own rates
+// and fails, naming the rate, against others; a rest start's rates are not checked.
+class MovingStartValidationTest : public ::testing::Test {
+ protected:
+  static constexpr int kJoints = 7;
+  MovingStartValidationTest()
+      : model_(LoadRobotModel(std::string(TOPAY_SOURCE_DIR) + "/config/robot/topay_mm.urdf",
+                              std::string(TOPAY_SOURCE_DIR) + "/config/robot/topay_mm.yaml")),
+        kinematics_(model_),
+        trajectory_(kJoints, 1, {}) {
+    rates_ = WholeBodyRates::Zero(kJoints);
+    rates_.v_mps = 0.3;
+    rates_.omega_radps = 0.1;
+    rates_.a_mps2 = 0.05;
+    rates_.beta_radps2 = -0.02;
+    rates_.qd_radps(2) = 0.05;
+    rates_.qdd_radps2(2) = 0.02;
+    Eigen::MatrixXd head = Eigen::MatrixXd::Zero(kJoints + 2, 3);
+    head.col(1) << rates_.v_mps, rates_.omega_radps, rates_.qd_radps;
+    head.col(2) << rates_.a_mps2, rates_.beta_radps2, rates_.qdd_radps2;
+    Eigen::MatrixXd tail = Eigen::MatrixXd::Zero(kJoints + 2, 3);
+    tail(0, 0) = 2.0;
+    tail(1, 0) = 0.3;
+    tail(4, 0) = 0.2;
+    trajectory_.Update(Eigen::Vector2d::Zero(), head, tail,
+                       Eigen::MatrixXd::Zero(kJoints + 2, 0), Eigen::VectorXd::Constant(1, 8.0));
+    start_.q_rad = Eigen::VectorXd::Zero(kJoints);
+    TrajectorySample end = trajectory_.MakePoint();
+    trajectory_.Evaluate(8.0, &end);
+    X_WE_goal_ = kinematics_.EndEffectorPose(end.state);
+  }
+
+  ValidationReport Validate(const WholeBodyRates& rates) const {
+    const TrajectoryValidator validator(kinematics_, Scene(), model_.base_limits);
+    return validator.Validate(SampleArcYaw(trajectory_), MovingState{start_, rates}, X_WE_goal_);
+  }
+
+  RobotModel model_;
+  Kinematics kinematics_;
+  ArcYawTrajectory trajectory_;
+  WholeBodyRates rates_;
+  WholeBodyState start_;
+  Eigen::Isometry3d X_WE_goal_;
+};
+
+TEST_F(MovingStartValidationTest, PassesAgainstItsOwnRates) {
+  const ValidationReport report = Validate(rates_);
+  EXPECT_TRUE(report.ok) << report.Report();
+}
+
+TEST_F(MovingStartValidationTest, EachMismatchedRateFailsTheStartCheckByName) {
+  struct Case {
+    const char* name;
+    void (*change)(WholeBodyRates*);
+  };
+  const Case cases[] = {
+      {"forward speed v", [](WholeBodyRates* r) { r->v_mps += 0.002; }},
+      {"yaw rate omega", [](WholeBodyRates* r) { r->omega_radps -= 0.002; }},
+      {"forward acceleration a", [](WholeBodyRates* r) { r->a_mps2 += 0.002; }},
+      {"yaw acceleration beta", [](WholeBodyRates* r) { r->beta_radps2 += 0.002; }},
+      {"velocity", [](WholeBodyRates* r) { r->qd_radps(2) = 0.0; }},
+      {"acceleration", [](WholeBodyRates* r) { r->qdd_radps2(5) = 0.01; }},
+  };
+  for (const Case& c : cases) {
+    WholeBodyRates rates = rates_;
+    c.change(&rates);
+    const ValidationReport report = Validate(rates);
+    EXPECT_FALSE(report.ok) << c.name;
+    EXPECT_EQ(report.first_failure.check, ValidationCheck::kStart) << c.name;
+    EXPECT_EQ(report.first_failure.t_s, 0.0) << c.name;
+    EXPECT_NE(report.first_failure.message.find(c.name), std::string::npos)
+        << report.first_failure.message;
+  }
+  // Within the tolerance (1e-3 by default) it passes.
+  WholeBodyRates close = rates_;
+  close.v_mps += 5e-4;
+  close.qdd_radps2(2) -= 5e-4;
+  EXPECT_TRUE(Validate(close).ok);
+}
+
+TEST_F(MovingStartValidationTest, RestRatesFailAMovingTrajectoryButTheRestCallDoesNotCheck) {
+  EXPECT_EQ(Validate(WholeBodyRates{}).first_failure.check, ValidationCheck::kStart);
+  const TrajectoryValidator validator(kinematics_, Scene(), model_.base_limits);
+  EXPECT_TRUE(validator.Validate(SampleArcYaw(trajectory_), start_, X_WE_goal_).ok);
+}
+
+TEST_F(MovingStartValidationTest, BadRatesAreBadInput) {
+  WholeBodyRates rates = rates_;
+  rates.qd_radps.resize(3);
+  EXPECT_EQ(Validate(rates).first_failure.check, ValidationCheck::kInput);
+  rates = rates_;
+  rates.beta_radps2 = std::numeric_limits<double>::quiet_NaN();
+  EXPECT_EQ(Validate(rates).first_failure.check, ValidationCheck::kInput);
+}
+
+}  // namespace
+}  // namespace topay
