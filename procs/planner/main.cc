@@ -56,6 +56,7 @@ int main(int argc, char** argv) {
   try {
     options = ResolveOptions(process);
     planner_options = LoadPlannerOptions(options.planner_config);
+    planner_options.validator.obstacle_margin_m += options.map.validator_margin_m;
     model = std::make_unique<RobotModel>(LoadRobotModel(options.robot_urdf, options.robot_yaml));
     kinematics = std::make_unique<Kinematics>(*model);
   } catch (const std::exception& e) {  // ConfigError and the robot files' errors

@@ -19,6 +19,19 @@ Clock::duration Seconds(double s) {
   return std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(s));
 }
 
+// The job's start as the core planner takes it (rates zero from rest).
+MovingState MovingStateOf(const TrajectorySample& s) {
+  MovingState start;
+  start.state = s.state;
+  start.rates.v_mps = s.v_mps;
+  start.rates.omega_radps = s.omega_radps;
+  start.rates.a_mps2 = s.a_mps2;
+  start.rates.beta_radps2 = s.beta_radps2;
+  start.rates.qd_radps = s.qd_radps;
+  start.rates.qdd_radps2 = s.qdd_radps2;
+  return start;
+}
+
 PlanJobOutcome Failed(PlanStatus status, std::string reason) {
   PlanJobOutcome out;
   out.result.status = status;
@@ -114,6 +127,10 @@ void PlanWorker::FlushMap() {
     ++counts_.map_errors;
     return;
   }
+  if (summary.ms > 300.0) {
+    spdlog::info("planner fields: {} voxel changes{} in {:.0f} ms", summary.changes,
+                 summary.reset ? " after a new grid" : "", summary.ms);
+  }
   if (!world_.has_map()) return;
   auto snapshot = std::make_shared<const FieldSnapshot>(
       FieldSnapshot{world_.fields().base_field_2d(), world_.fields().field_3d(), world_.map_seq()});
@@ -199,7 +216,7 @@ PlanJobOutcome PlanWorker::Execute(const PlanJob& job, std::stop_token job_stop)
       options.time_limit_s = job.time_limit_s;
       const WholeBodyPlanner planner(kinematics_, fields->base_field, fields->arm_field, scene, options);
       out.setup_ms = setup.ElapsedMs();
-      out.result = planner.PlanBy(deadline, job.start.state, job.X_WE_goal, job.hint, job_stop);
+      out.result = planner.PlanBy(deadline, MovingStateOf(job.start), job.X_WE_goal, job.hint, job_stop);
     }
     out.fields_map_seq = fields->map_seq;
   }

@@ -102,12 +102,18 @@ void PlannerNode::OnRobotState(const robot_state_t& msg) {
   robot_ = std::move(robot);
   if (!active_ || active_->stopping || active_->EndedBy(robot_->utime) || !goal_ || goal_->done) return;
   if (robot_->state.num_joints() != active_->trajectory->num_joints()) return;
-  const Drift d = MeasureDrift(*active_, *robot_);
+  const ActiveTrajectory* on_ptr = OnAt(robot_->utime);
+  if (on_ptr == nullptr || on_ptr->stopping ||
+      on_ptr->trajectory->num_joints() != robot_->state.num_joints()) {
+    return;
+  }
+  const ActiveTrajectory& on = *on_ptr;
+  const Drift d = MeasureDrift(on, *robot_);
   const ReplanTriggerOptions& t = options_.triggers;
   if (d.position_m > t.drift_position_m || d.yaw_rad > t.drift_yaw_rad || d.joint_rad > t.drift_joint_rad) {
     RequestPlan(PlanTrigger::kDrift,
                 fmt::format("drift from trajectory {}: {:.3f} m, {:.3f} rad yaw, {:.3f} rad joint",
-                            active_->trajectory_id, d.position_m, d.yaw_rad, d.joint_rad));
+                            on.trajectory_id, d.position_m, d.yaw_rad, d.joint_rad));
   }
 }
 
@@ -194,6 +200,8 @@ bool PlannerNode::FillStart(PlanTrigger trigger, std::int64_t now, PlanJob* job,
     job->start.state.q_rad += dt * job->start.qd_radps;
     return true;
   }
+  job->start = MakeTrajectorySample(robot_->state.num_joints());  // at rest: rates zero
+  job->start.state = robot_->state;
   job->from_rest = true;
   job->t0_utime = 0;
   job->time_limit_s = t.from_rest_time_limit_s;
@@ -288,8 +296,9 @@ void PlannerNode::HandleFailure(const PlanJobOutcome& outcome) {
   ++counts_.plans_failed;
   spdlog::warn("goal {}: plan {} failed ({}): {}", outcome.job.goal_id, outcome.job.job_id,
                ToString(r.status), r.failure_reason);
-  if (!goal_->planned_once && (outcome.certified_unreachable || outcome.job.from_rest)) {
-    goal_->done = true;  // the first plan from rest: the goal fails (the mission may resend it)
+  const bool definite = outcome.certified_unreachable || r.status == PlanStatus::kInvalidInput;
+  if (!goal_->planned_once && (definite || ++goal_->failed_attempts >= options_.timing.first_plan_attempts)) {
+    goal_->done = true;  // no trajectory for it after its attempts: FAILED (the mission may resend it)
     PublishStatus(planner_status_t::FAILED, r.failure_reason, outcome.job.trigger, &r);
     return;
   }
@@ -305,7 +314,7 @@ void PlannerNode::PublishTrajectory(const PlanJobOutcome& outcome, std::int64_t 
   active.goal_id = outcome.job.goal_id;
   active.start_utime = outcome.job.from_rest ? now : outcome.job.t0_utime;
   active.trajectory = std::make_shared<const ArcYawTrajectory>(*outcome.result.trajectory);
-  active_ = std::move(active);
+  MakeActive(std::move(active));
   collision_utime_.reset();
   goal_->planned_once = true;
   ++counts_.trajectories;
@@ -328,6 +337,22 @@ void PlannerNode::PublishActive(const char* what) {
                active_->trajectory_id, t.duration_s(), 1e-3 * (active_->start_utime - poly.utime));
 }
 
+void PlannerNode::MakeActive(ActiveTrajectory trajectory) {
+  if (active_) replaced_.push_back(std::move(*active_));
+  // Only the newest that started by the new one's start can still be under way then.
+  while (replaced_.size() > 1 && replaced_[1].start_utime <= trajectory.start_utime) replaced_.pop_front();
+  while (replaced_.size() > 4) replaced_.pop_front();
+  active_ = std::move(trajectory);
+}
+
+const ActiveTrajectory* PlannerNode::OnAt(std::int64_t utime) const {
+  if (active_ && active_->start_utime <= utime) return &*active_;
+  for (auto it = replaced_.rbegin(); it != replaced_.rend(); ++it) {
+    if (it->start_utime <= utime) return &*it;
+  }
+  return nullptr;
+}
+
 void PlannerNode::MaybeSafeStop(std::int64_t now) {
   if (!collision_utime_ || !active_ || active_->stopping || active_->EndedBy(now)) return;
   const std::int64_t begin = now + Micros(options_.stop.latency_s);
@@ -348,7 +373,7 @@ void PlannerNode::MaybeSafeStop(std::int64_t now) {
   s.start_utime = begin;
   s.stopping = true;
   s.trajectory = std::make_shared<const ArcYawTrajectory>(std::move(*stop));
-  active_ = std::move(s);
+  MakeActive(std::move(s));
   ++counts_.stops;
   PublishActive("stopping");
   PublishStatus(planner_status_t::STOPPING, "",

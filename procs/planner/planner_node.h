@@ -12,6 +12,7 @@
 // along the current path and keeps trying.
 
 #include <cstdint>
+#include <deque>
 #include <map>
 #include <optional>
 #include <string>
@@ -71,6 +72,7 @@ class PlannerNode {
     bool planned_once = false;  // a trajectory went out for it
     bool done = false;          // failed, or its trajectory ended
     int replans = 0;
+    int failed_attempts = 0;    // plans that failed before its first trajectory went out
   };
 
   void RequestPlan(PlanTrigger trigger, const std::string& reason);
@@ -86,6 +88,9 @@ class PlannerNode {
   void PublishStatus(std::int8_t state, const std::string& reason, const std::string& detail,
                      const WholeBodyPlanResult* result = nullptr);
   void UpdateHealth();
+  void MakeActive(ActiveTrajectory trajectory);
+  // The trajectory the robot is on at `utime`: the newest one started by then (null: none).
+  const ActiveTrajectory* OnAt(std::int64_t utime) const;
 
   procs::ProcessLoop* loop_;
   PlanWorker* worker_;
@@ -98,6 +103,9 @@ class PlannerNode {
   std::optional<tracker_status_t> tracker_;
   std::optional<GoalRecord> goal_;
   std::optional<ActiveTrajectory> active_;
+  // The trajectories active_ replaced that may still be under way (the newest last): until a
+  // new trajectory's start_utime the robot follows the one before it.
+  std::deque<ActiveTrajectory> replaced_;
   std::optional<std::int64_t> collision_utime_;  // predicted collision on active_, if any
   std::optional<std::pair<PlanTrigger, std::string>> pending_;  // asked for while busy
   std::int64_t retry_at_utime_ = 0;               // 0: no retry scheduled

@@ -24,6 +24,7 @@ void ReadMap(YamlSection s, PlannerMapOptions* o) {
   }
   o->unknown = *policy;
   s.Read("field_update_period_s", &o->field_update_period_s);
+  s.Read("validator_margin_m", &o->validator_margin_m);
   s.Finish();
 }
 
@@ -33,6 +34,7 @@ void ReadTiming(YamlSection s, PlanTimingOptions* o) {
   s.Read("publish_margin_s", &o->publish_margin_s);
   s.Read("rest_speed", &o->rest_speed);
   s.Read("retry_period_s", &o->retry_period_s);
+  s.Read("first_plan_attempts", &o->first_plan_attempts);
   s.Finish();
 }
 
@@ -90,12 +92,16 @@ const char* ToString(UnknownVoxelPolicy policy) {
 
 void CheckPlannerProcessOptions(const PlannerProcessOptions& o, const std::string& source) {
   RequirePositive(o.map.field_update_period_s, source, "map.field_update_period_s");
+  RequireNonNegative(o.map.validator_margin_m, source, "map.validator_margin_m");
   RequirePositive(o.timing.from_rest_time_limit_s, source, "timing.from_rest_time_limit_s");
   RequirePositive(o.timing.publish_margin_s, source, "timing.publish_margin_s");
   RequirePositive(o.timing.replan_budget_s - o.timing.publish_margin_s, source,
                   "timing.replan_budget_s (minus publish_margin_s)");
   RequirePositive(o.timing.rest_speed, source, "timing.rest_speed");
   RequirePositive(o.timing.retry_period_s, source, "timing.retry_period_s");
+  if (o.timing.first_plan_attempts < 1) {
+    throw ConfigError(source, "timing.first_plan_attempts", "must be >= 1");
+  }
   RequirePositive(o.triggers.check.sample_period_s, source, "triggers.check_sample_period_s");
   RequireNonNegative(o.triggers.check.obstacle_margin_m, source, "triggers.check_obstacle_margin_m");
   RequirePositive(o.triggers.drift_position_m, source, "triggers.drift_position_m");

@@ -21,6 +21,12 @@ struct PlannerMapOptions {
   /// always before a plan starts: an update costs tens to hundreds of ms while the robot
   /// drives into unseen space (docs/benchmarks.md), too much for every scan. > 0.
   double field_update_period_s = 1.0;
+  /// Added to the core planner's validator obstacle margin (m) when it validates a plan
+  /// against the map's voxel boxes (the check of the trajectory ahead triggers at
+  /// triggers.check_obstacle_margin_m). 0 by default: the fields do not carry a margin, and
+  /// with 0.02 m most plans in the graph test were rejected by the validator by a fraction of
+  /// a millimetre (as the sensed-map benchmark found for 0.05 m, docs/benchmarks.md). >= 0.
+  double validator_margin_m = 0.0;
 };
 
 /// When a plan starts and how long it may take.
@@ -31,13 +37,17 @@ struct PlanTimingOptions {
   /// A replan while the robot moves starts at t0 = now + this budget (s) on the current
   /// trajectory, so it must be on the bus before t0: its time limit is the budget less
   /// publish_margin_s, and a result that comes after t0 is dropped. > publish_margin_s.
-  double replan_budget_s = 0.5;
+  double replan_budget_s = 1.0;
   double publish_margin_s = 0.05;
   /// Below this base speed (m/s) and yaw rate (rad/s) and every joint rate (rad/s) the robot
   /// counts as at rest (a plan from rest starts at its measured state).
   double rest_speed = 0.02;
   /// A failed replan is retried after this long (s) while the goal stands.
   double retry_period_s = 0.3;
+  /// A goal fails (FAILED) after this many plans without a trajectory for it (a target the
+  /// certificate proves unreachable, or bad input, at once): in a room seen for the first
+  /// time a first plan is often overtaken by the next scan. >= 1.
+  int first_plan_attempts = 3;
 };
 
 /// What makes the planner replan (each counted and logged with its reason).

@@ -1,6 +1,7 @@
 #include "procs/planner/planner_world.h"
 
 #include <stdexcept>
+#include <unordered_map>
 
 #include "core/common/stopwatch.h"
 #include "core/map/voxel_boxes.h"
@@ -64,21 +65,57 @@ MapFlushSummary PlannerWorld::Flush() {
   return summary;
 }
 
+namespace {
+
+// The class of a voxel state as the fields see it under `unknown`: free, blocked, or (only
+// under kOccupiedInBaseBands, where unknown differs from both) unknown.
+int FieldClass(VoxelState s, UnknownVoxelPolicy unknown) {
+  if (s != VoxelState::kUnknown) return s == VoxelState::kOccupied ? 1 : 0;
+  switch (unknown) {
+    case UnknownVoxelPolicy::kFree: return 0;
+    case UnknownVoxelPolicy::kOccupied: return 1;
+    case UnknownVoxelPolicy::kOccupiedInBaseBands: return 2;
+  }
+  return 2;
+}
+
+}  // namespace
+
 void PlannerWorld::ApplyChanges(const std::vector<MapWork>& queue, std::size_t first,
                                 std::int64_t num_changes) {
-  if (num_changes <= kRebuildAboveChanges) {
-    for (std::size_t k = first; k < queue.size(); ++k) fields_->ApplyChanges(queue[k].changes);
+  // Only the changes the fields can see (most of a scan's changes are unknown -> free,
+  // nothing to the fields under the default policy): each voxel's last state in the batch,
+  // kept if its class differs from the fields' (bad changes are kept: ApplyChanges names them).
+  const GridGeometry3& g = fields_->geometry();
+  std::unordered_map<std::int64_t, VoxelChange> last;
+  last.reserve(static_cast<std::size_t>(num_changes));
+  std::vector<VoxelChange> seen;
+  for (std::size_t k = first; k < queue.size(); ++k) {
+    for (const VoxelChange& c : queue[k].changes) {
+      const bool inside = (c.voxel.array() >= 0).all() && (c.voxel.array() < g.dims.array()).all();
+      if (!inside || static_cast<std::uint8_t>(c.state) > static_cast<std::uint8_t>(VoxelState::kUnknown)) {
+        seen.push_back(c);
+      } else {
+        last[g.Index(c.voxel.x(), c.voxel.y(), c.voxel.z())] = c;
+      }
+    }
+  }
+  for (const auto& [index, c] : last) {
+    if (FieldClass(fields_->state(c.voxel.x(), c.voxel.y(), c.voxel.z()), unknown_) != FieldClass(c.state, unknown_)) {
+      seen.push_back(c);
+    }
+  }
+  if (static_cast<std::int64_t>(seen.size()) <= kRebuildAboveChanges) {
+    fields_->ApplyChanges(seen);
     return;
   }
   // Many changes (a first scan, a long batch): their windows cover much of the map, and
   // recomputing window after window costs far more than one full rebuild (docs/benchmarks.md).
   std::vector<std::uint8_t> states(fields_->states().begin(), fields_->states().end());
-  const GridGeometry3& g = fields_->geometry();
-  for (std::size_t k = first; k < queue.size(); ++k) {
-    for (const VoxelChange& c : queue[k].changes) {
-      if ((c.voxel.array() < 0).any() || (c.voxel.array() >= g.dims.array()).any()) throw std::invalid_argument("planner map: a change outside the grid");
-      states[g.Index(c.voxel.x(), c.voxel.y(), c.voxel.z())] = static_cast<std::uint8_t>(c.state);
-    }
+  for (const VoxelChange& c : seen) {
+    const bool inside = (c.voxel.array() >= 0).all() && (c.voxel.array() < g.dims.array()).all();
+    if (!inside) throw std::invalid_argument("planner map: a change outside the grid");
+    states[g.Index(c.voxel.x(), c.voxel.y(), c.voxel.z())] = static_cast<std::uint8_t>(c.state);
   }
   fields_->ResetStates(states);
 }

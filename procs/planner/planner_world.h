@@ -30,11 +30,12 @@ class PlannerWorld {
   void Queue(MapWork work);
   bool pending() const { return !queue_.empty(); }
 
-  /// More voxel changes than this in one flush rebuild the fields whole (about 0.4 s for a
+  /// More voxel changes the fields can see (their class under the unknown policy changes)
+  /// than this in one flush rebuild the fields whole (about 0.4 s for a
   /// 20 x 20 m map, docs/benchmarks.md) instead of window by window: the first scan of a
   /// room changes ~200 k voxels, whose windows cover most of the map, and took 10 s
-  /// incrementally.
-  static constexpr std::int64_t kRebuildAboveChanges = 20'000;
+  /// incrementally; a second of driving changes thousands, spread over the view.
+  static constexpr std::int64_t kRebuildAboveChanges = 5'000;
 
   /// Applies the queued work to the fields in order (work before the last reset is skipped:
   /// the reset replaces it). A reset builds new fields over the map's grid (the planner's field
