@@ -5,6 +5,10 @@ namespace topay {
 MovingState ArcYawStateAt(const ArcYawTrajectory& trajectory, double t_s) {
   TrajectorySample sample = trajectory.MakePoint();
   trajectory.Evaluate(t_s, &sample);
+  return MovingStateOf(sample);
+}
+
+MovingState MovingStateOf(const TrajectorySample& sample) {
   MovingState out;
   out.state = sample.state;
   out.rates.v_mps = sample.v_mps;

@@ -12,4 +12,7 @@ namespace topay {
 /// or a trajectory not yet updated (ArcYawTrajectory::Evaluate). Allocates.
 MovingState ArcYawStateAt(const ArcYawTrajectory& trajectory, double t_s);
 
+/// The state and rates of a trajectory sample (its jerk and arc length dropped).
+MovingState MovingStateOf(const TrajectorySample& sample);
+
 }  // namespace topay

@@ -9,6 +9,7 @@
 #include "core/map/voxel_boxes.h"
 #include "core/planner/whole_body_planner.h"
 #include "core/planning/base_reachability.h"
+#include "core/trajectory/arc_yaw_state_at.h"
 
 namespace topay::planner {
 namespace {
@@ -17,19 +18,6 @@ using Clock = std::chrono::steady_clock;
 
 Clock::duration Seconds(double s) {
   return std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(s));
-}
-
-// The job's start as the core planner takes it (rates zero from rest).
-MovingState MovingStateOf(const TrajectorySample& s) {
-  MovingState start;
-  start.state = s.state;
-  start.rates.v_mps = s.v_mps;
-  start.rates.omega_radps = s.omega_radps;
-  start.rates.a_mps2 = s.a_mps2;
-  start.rates.beta_radps2 = s.beta_radps2;
-  start.rates.qd_radps = s.qd_radps;
-  start.rates.qdd_radps2 = s.qdd_radps2;
-  return start;
 }
 
 PlanJobOutcome Failed(PlanStatus status, std::string reason) {

@@ -13,6 +13,8 @@
 
 #include <gtest/gtest.h>
 
+#include "tests/common/expect_same_motion.h"
+
 #include "core/common/random.h"
 #include "core/common/sample_statistics.h"
 #include "core/io/robot_loader.h"
@@ -77,16 +79,7 @@ class MovingStartTest : public ::testing::Test {
     TrajectorySample a = old.MakePoint(), b = next.MakePoint();
     old.Evaluate(t0, &a);
     next.Evaluate(0.0, &b);
-    EXPECT_NEAR(b.state.x_m, a.state.x_m, 1e-9);
-    EXPECT_NEAR(b.state.y_m, a.state.y_m, 1e-9);
-    EXPECT_NEAR(b.state.yaw_rad, a.state.yaw_rad, 1e-9);
-    EXPECT_NEAR(b.v_mps, a.v_mps, 1e-8);
-    EXPECT_NEAR(b.a_mps2, a.a_mps2, 1e-8);
-    EXPECT_NEAR(b.omega_radps, a.omega_radps, 1e-8);
-    EXPECT_NEAR(b.beta_radps2, a.beta_radps2, 1e-8);
-    EXPECT_LT((b.state.q_rad - a.state.q_rad).cwiseAbs().maxCoeff(), 1e-9);
-    EXPECT_LT((b.qd_radps - a.qd_radps).cwiseAbs().maxCoeff(), 1e-8);
-    EXPECT_LT((b.qdd_radps2 - a.qdd_radps2).cwiseAbs().maxCoeff(), 1e-8);
+    testing::ExpectSameMotion(a, b, 1e-9, 1e-8);
     // Across the join: first and second central differences of s, yaw, q, x, y from the old
     // trajectory at t0 - h and the new one at +h match the rates at the join (O(h^2) + jerk
     // and snap jumps of O(h)).
