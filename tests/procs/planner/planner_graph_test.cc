@@ -5,7 +5,8 @@
 // collision monitor is the judge: a run counts only with no contact.
 //  - driving towards a goal across the room (replanning as the room is seen) touches nothing;
 //  - a box that appears on the route (a SIM_EVENT) triggers a replan;
-//  - a box that appears close ahead makes the planner publish a stopping trajectory.
+//  - a box that appears on the path 2.5 m ahead of the driving robot makes the planner publish
+//    a stopping trajectory at once.
 // (Whether the goal is reached within the time is printed, and checked when it is: reaching
 // it every time is not yet the case, docs/planner.md.)
 
@@ -229,11 +230,23 @@ TEST_F(PlannerGraph, ABoxAppearingOnTheRouteTriggersAReplan) {
 TEST_F(PlannerGraph, ABoxAppearingCloseAheadMakesThePlannerStopWithoutContact) {
   SendGoal(3, FarGoal(3));
   ASSERT_TRUE(watcher_->SpinUntil([&] { return !out_.trajectories.empty(); }, 30.0)) << Logs();
-  // Once the robot drives at speed, a wide box 1.5 m ahead along its heading.
+  // Once the robot drives at speed, a box on its path 2.5 m ahead: seen at once, too close for
+  // a replan to come first (the stop is decided in the next 10 ms), far enough to stop before.
   ASSERT_TRUE(watcher_->SpinUntil([&] { return out_.robot && RobotSpeed() > 0.4; }, 20.0)) << Logs();
-  const double yaw = out_.robot->pose.yaw_rad;
-  const Eigen::Vector2d p(out_.robot->pose.x_m, out_.robot->pose.y_m);
-  AppearBox(p + 1.5 * Eigen::Vector2d(std::cos(yaw), std::sin(yaw)), {0.4, 1.2, 1.2});
+  const poly_trajectory_t& on = out_.trajectories.back();
+  const Eigen::Vector2d robot = BaseOf(*out_.robot);
+  double duration_s = 0.0;
+  for (int p = 0; p < on.num_pieces; ++p) duration_s += on.durations_s[p];
+  const double t_now = 1e-6 * static_cast<double>(procs::NowUtime() - on.start_utime);
+  double t_box = duration_s;
+  for (double t = std::max(0.0, t_now); t < duration_s; t += 0.05) {
+    if ((BaseAt(on, t) - robot).norm() >= 2.5) {
+      t_box = t;
+      break;
+    }
+  }
+  ASSERT_LT(t_box, duration_s) << "the trajectory never gets 2.5 m from the robot";
+  AppearBox(BaseAt(on, t_box), {0.8, 0.8, 1.2});
   ASSERT_TRUE(watcher_->SpinUntil([&] { return out_.Saw(3, planner_status_t::STOPPING); }, 10.0)) << Logs();
   watcher_->Spin(4.0);
   EXPECT_EQ(Contacts(), 0) << Logs();
