@@ -32,8 +32,7 @@ struct Flags {
 
 MapperOptions ResolveOptions(const procs::ProcessOptions& process, const Flags& f) {
   MapperOptions o = process.config_path.empty() ? MapperOptions{} : LoadMapperOptions(process.config_path);
-  const char* env = std::getenv("TOPAY_CONFIG_DIR");
-  const std::string config_dir = env != nullptr && *env != '\0' ? env : TOPAY_CONFIG_DIR;
+  const std::string config_dir = procs::ConfigDir(TOPAY_CONFIG_DIR);
   if (o.robot_urdf.empty()) o.robot_urdf = config_dir + "/robot/topay_mm.urdf";
   if (o.robot_yaml.empty()) o.robot_yaml = config_dir + "/robot/topay_mm.yaml";
   if (!f.robot_urdf.empty()) o.robot_urdf = f.robot_urdf;

@@ -27,17 +27,13 @@ using namespace topay::planner;
 
 namespace {
 
-std::string ConfigDir() {
-  const char* env = std::getenv("TOPAY_CONFIG_DIR");
-  return env != nullptr && *env != '\0' ? env : TOPAY_CONFIG_DIR;
-}
-
 PlannerProcessOptions ResolveOptions(const procs::ProcessOptions& process) {
   PlannerProcessOptions o =
       process.config_path.empty() ? PlannerProcessOptions{} : LoadPlannerProcessOptions(process.config_path);
-  if (o.robot_urdf.empty()) o.robot_urdf = ConfigDir() + "/robot/topay_mm.urdf";
-  if (o.robot_yaml.empty()) o.robot_yaml = ConfigDir() + "/robot/topay_mm.yaml";
-  if (o.planner_config.empty()) o.planner_config = ConfigDir() + "/planner/topay.yaml";
+  const std::string config_dir = procs::ConfigDir(TOPAY_CONFIG_DIR);
+  if (o.robot_urdf.empty()) o.robot_urdf = config_dir + "/robot/topay_mm.urdf";
+  if (o.robot_yaml.empty()) o.robot_yaml = config_dir + "/robot/topay_mm.yaml";
+  if (o.planner_config.empty()) o.planner_config = config_dir + "/planner/topay.yaml";
   return o;
 }
 

@@ -4,6 +4,31 @@
 
 namespace topay::planner {
 
+int ClearBaseFootprint(const GridGeometry3& geometry, const Eigen::Vector2d& p_WB_m,
+                       const BaseCylinder& base, UnknownVoxelPolicy unknown,
+                       std::vector<std::uint8_t>* states) {
+  const Eigen::Vector3d r(base.radius_m, base.radius_m, 0.0);
+  const Eigen::Vector3d p(p_WB_m.x(), p_WB_m.y(), 0.0);
+  const CellBox cells = VoxelsOverlapping(
+      geometry, {p - r, p + r + Eigen::Vector3d(0.0, 0.0, base.height_m)});
+  int cleared = 0;
+  for (int iz = cells.begin.z(); iz < cells.end.z(); ++iz) {
+    for (int iy = cells.begin.y(); iy < cells.end.y(); ++iy) {
+      for (int ix = cells.begin.x(); ix < cells.end.x(); ++ix) {
+        const Eigen::Vector3d c = geometry.CellCenter(ix, iy, iz);
+        std::uint8_t& state = (*states)[geometry.Index(ix, iy, iz)];
+        if (c.z() > base.height_m || (c.head<2>() - p_WB_m).norm() > base.radius_m ||
+            !VoxelBlocksPlanner(static_cast<VoxelState>(state), unknown)) {
+          continue;
+        }
+        state = static_cast<std::uint8_t>(VoxelState::kFree);
+        ++cleared;
+      }
+    }
+  }
+  return cleared;
+}
+
 bool SameGeometry(const GridGeometry3& a, const GridGeometry3& b) {
   return a.origin_W_m == b.origin_W_m && a.resolution_m == b.resolution_m && a.dims == b.dims;
 }

@@ -14,6 +14,7 @@
 #include "core/geometry/oriented_box.h"
 #include "core/map/grid_geometry.h"
 #include "core/map/voxel_map_fields.h"
+#include "core/robot/robot_model.h"
 #include "procs/msgs/map_receiver.h"
 #include "topay/map_update_t.hpp"
 
@@ -55,6 +56,14 @@ class MapIntake {
   std::vector<std::uint8_t> forwarded_;  // what the planning thread will hold after our work
   GridGeometry3 forwarded_geometry_;
 };
+
+/// Sets free every blocked voxel (VoxelBlocksPlanner) whose centre lies inside the base
+/// cylinder standing at p_WB: the robot stands there, so what the map holds inside its own
+/// base is its own body seen by the LiDAR or a stale voxel (a plan from where the robot is must
+/// not fail on it; costmaps clear the footprint the same way). Returns the voxels cleared.
+int ClearBaseFootprint(const GridGeometry3& geometry, const Eigen::Vector2d& p_WB_m,
+                       const BaseCylinder& base, UnknownVoxelPolicy unknown,
+                       std::vector<std::uint8_t>* states);
 
 /// True if `a` and `b` are the same grid (origin, resolution, dims).
 bool SameGeometry(const GridGeometry3& a, const GridGeometry3& b);

@@ -194,7 +194,9 @@ PlanJobOutcome PlanWorker::Execute(const PlanJob& job, std::stop_token job_stop)
     if (job.certify_reachability) {
       const BaseReachability cert = CertifyTargetUnreachable(
           scene, kinematics_, {job.start.state.x_m, job.start.state.y_m}, job.X_WE_goal);
-      if (cert.certified_unreachable) {
+      // A start the certificate does not allow (a noisy voxel at the robot's base on a sensed
+      // map) proves nothing about the target: the plan itself reports its start.
+      if (cert.certified_unreachable && cert.component_cells > 0) {
         out = Failed(PlanStatus::kFrontEndFailed, "target unreachable: " + cert.reason);
         out.certified_unreachable = true;
       }

@@ -155,7 +155,7 @@ void PlannerNode::CheckActiveAgainstMap(std::int64_t now) {
   counts_.map_check_ms_sum += ms;
   counts_.map_check_ms_max = std::max(counts_.map_check_ms_max, ms);
   if (!hit) {
-    collision_utime_.reset();
+    ClearPredictedCollision();
     return;
   }
   const std::int64_t at = active_->start_utime + Micros(hit->t_s);
@@ -230,9 +230,14 @@ void PlannerNode::RequestPlan(PlanTrigger trigger, const std::string& reason) {
   job.hint = goal_->goal.hint;
   job.certify_reachability = !goal_->planned_once && options_.goals.certify_reachability;
   if (map_.has_map()) {
-    const std::span<const std::uint8_t> states = map_.receiver().states();
-    job.map_states = std::make_shared<const std::vector<std::uint8_t>>(states.begin(), states.end());
+    const std::span<const std::uint8_t> received = map_.receiver().states();
+    std::vector<std::uint8_t> states(received.begin(), received.end());
     job.map_geometry = map_.receiver().geometry();
+    if (job.from_rest) {  // the robot stands there: its own footprint is free
+      ClearBaseFootprint(job.map_geometry, {job.start.state.x_m, job.start.state.y_m},
+                         kinematics_.model().base_cylinder, options_.map.unknown, &states);
+    }
+    job.map_states = std::make_shared<const std::vector<std::uint8_t>>(std::move(states));
     job.map_seq = map_.receiver().map_seq();
   }
   if (trigger == PlanTrigger::kMapCollision) worker_->UpdateFieldsSoon();
@@ -315,7 +320,6 @@ void PlannerNode::PublishTrajectory(const PlanJobOutcome& outcome, std::int64_t 
   active.start_utime = outcome.job.from_rest ? now : outcome.job.t0_utime;
   active.trajectory = std::make_shared<const ArcYawTrajectory>(*outcome.result.trajectory);
   MakeActive(std::move(active));
-  collision_utime_.reset();
   goal_->planned_once = true;
   ++counts_.trajectories;
   PublishActive("plan");
@@ -337,7 +341,16 @@ void PlannerNode::PublishActive(const char* what) {
                active_->trajectory_id, t.duration_s(), 1e-3 * (active_->start_utime - poly.utime));
 }
 
+void PlannerNode::ClearPredictedCollision() {
+  collision_utime_.reset();
+  last_stop_duration_s_.reset();
+  stop_error_logged_ = false;
+}
+
 void PlannerNode::MakeActive(ActiveTrajectory trajectory) {
+  // A new plan was checked against the newest map; a stopping trajectory keeps the collision
+  // it stops for (the status says STOPPING while replans fail).
+  if (!trajectory.stopping) ClearPredictedCollision();
   if (active_) replaced_.push_back(std::move(*active_));
   // Only the newest that started by the new one's start can still be under way then.
   while (replaced_.size() > 1 && replaced_[1].start_utime <= trajectory.start_utime) replaced_.pop_front();
@@ -355,16 +368,24 @@ const ActiveTrajectory* PlannerNode::OnAt(std::int64_t utime) const {
 
 void PlannerNode::MaybeSafeStop(std::int64_t now) {
   if (!collision_utime_ || !active_ || active_->stopping || active_->EndedBy(now)) return;
+  const double until_collision_s = 1e-6 * (*collision_utime_ - now);
+  const double lead_s = options_.stop.latency_s + options_.stop.margin_s;
+  // Far from the collision the last stopping trajectory's duration (with a quarter second to
+  // spare for a faster robot) says no stop is due yet: not worth making one every tick.
+  constexpr double kSlack_s = 0.25;
+  if (last_stop_duration_s_ && until_collision_s > *last_stop_duration_s_ + lead_s + kSlack_s) return;
   const std::int64_t begin = now + Micros(options_.stop.latency_s);
   std::string why;
   std::optional<ArcYawTrajectory> stop =
       stop_planner_.Make(*active_->trajectory, active_->TimeAt(begin), &why);
-  const double until_collision_s = 1e-6 * (*collision_utime_ - now);
-  const double needed_s = (stop ? stop->duration_s() : 0.0) + options_.stop.latency_s + options_.stop.margin_s;
-  if (until_collision_s > needed_s) return;
+  last_stop_duration_s_ = stop ? stop->duration_s() : 0.0;
+  if (until_collision_s > *last_stop_duration_s_ + lead_s) return;
   if (!stop) {
-    spdlog::error("goal {}: collision {:.2f} s ahead and no stopping trajectory: {}", active_->goal_id,
-                  until_collision_s, why);
+    if (!stop_error_logged_) {
+      spdlog::error("goal {}: collision {:.2f} s ahead and no stopping trajectory: {}", active_->goal_id,
+                    until_collision_s, why);
+    }
+    stop_error_logged_ = true;
     return;
   }
   ActiveTrajectory s;
@@ -412,10 +433,12 @@ void PlannerNode::UpdateHealth() {
   static constexpr const char* kStates[] = {"IDLE", "PLANNING", "SUCCEEDED", "FAILED", "CANCELLED", "STOPPING"};
   const int s = std::clamp<int>(status_.state, 0, 5);
   const PlanWorkerCounts w = worker_->counts();
+  const std::string tracker =
+      tracker_ ? fmt::format("; tracker on {}", tracker_->trajectory_id) : std::string("; no TRACKER_STATUS");
   loop_->SetHealth(status_.state == planner_status_t::STOPPING ? heartbeat_t::WARN : heartbeat_t::OK,
-                   fmt::format("goal {} {}; trajectory {}; replans {}; map seq {}; field update {:.0f} ms",
+                   fmt::format("goal {} {}; trajectory {}; replans {}; map seq {}; field update {:.0f} ms{}",
                                status_.goal_id, kStates[s], status_.trajectory_id, status_.replans,
-                               map_.receiver().map_seq(), w.last_flush_ms));
+                               map_.receiver().map_seq(), w.last_flush_ms, tracker));
 }
 
 std::string PlannerNode::Report() const {

@@ -89,6 +89,7 @@ class PlannerNode {
                      const WholeBodyPlanResult* result = nullptr);
   void UpdateHealth();
   void MakeActive(ActiveTrajectory trajectory);
+  void ClearPredictedCollision();
   // The trajectory the robot is on at `utime`: the newest one started by then (null: none).
   const ActiveTrajectory* OnAt(std::int64_t utime) const;
 
@@ -100,13 +101,15 @@ class PlannerNode {
   ReachHeights reach_;
   MapIntake map_;
   std::optional<msgs::RobotStateEstimate> robot_;
-  std::optional<tracker_status_t> tracker_;
+  std::optional<tracker_status_t> tracker_;  // the last TRACKER_STATUS (heartbeat status line)
   std::optional<GoalRecord> goal_;
   std::optional<ActiveTrajectory> active_;
   // The trajectories active_ replaced that may still be under way (the newest last): until a
   // new trajectory's start_utime the robot follows the one before it.
   std::deque<ActiveTrajectory> replaced_;
   std::optional<std::int64_t> collision_utime_;  // predicted collision on active_, if any
+  std::optional<double> last_stop_duration_s_;   // of the last stopping trajectory made for it
+  bool stop_error_logged_ = false;
   std::optional<std::pair<PlanTrigger, std::string>> pending_;  // asked for while busy
   std::int64_t retry_at_utime_ = 0;               // 0: no retry scheduled
   std::int64_t job_seq_ = 0, latest_job_ = 0;

@@ -7,6 +7,11 @@
 
 namespace topay::procs {
 
+std::string ConfigDir(const std::string& built_in) {
+  const char* env = std::getenv("TOPAY_CONFIG_DIR");
+  return env != nullptr && *env != '\0' ? env : built_in;
+}
+
 void AddCommonFlags(CLI::App* app, const std::string& default_name, ProcessOptions* options) {
   const char* env_name = std::getenv("TOPAY_PROCESS_NAME");
   options->name = (env_name != nullptr && *env_name != '\0') ? env_name : default_name;

@@ -35,6 +35,10 @@ struct ProcessOptions {
 /// when no name is given.
 void AddCommonFlags(CLI::App* app, const std::string& default_name, ProcessOptions* options);
 
+/// The configuration folder: $TOPAY_CONFIG_DIR if set and not empty, else `built_in` (the
+/// source tree's config/, compiled into each process).
+std::string ConfigDir(const std::string& built_in);
+
 /// Parses argv with `app`. Returns nullopt to go on, or the exit code to return from main:
 /// 0 after --help (printed), 2 after a usage error (printed with the usage hint).
 std::optional<int> ParseFlags(CLI::App* app, int argc, char** argv);

@@ -6,6 +6,8 @@
 
 #include <gtest/gtest.h>
 
+#include "tests/common/expect_same_motion.h"
+
 #include <cmath>
 
 namespace topay::msgs {
@@ -49,17 +51,8 @@ PolyTrajectory MakePoly(const Eigen::Vector2d& p0_W_m) {
 }
 
 void ExpectSamplesEqual(const TrajectorySample& a, const TrajectorySample& b, double tolerance) {
-  EXPECT_NEAR(a.state.x_m, b.state.x_m, tolerance);
-  EXPECT_NEAR(a.state.y_m, b.state.y_m, tolerance);
-  EXPECT_NEAR(a.state.yaw_rad, b.state.yaw_rad, tolerance);
+  topay::testing::ExpectSameMotion(a, b, tolerance, tolerance);
   EXPECT_NEAR(a.s_m, b.s_m, tolerance);
-  EXPECT_NEAR(a.v_mps, b.v_mps, tolerance);
-  EXPECT_NEAR(a.omega_radps, b.omega_radps, tolerance);
-  EXPECT_NEAR(a.a_mps2, b.a_mps2, tolerance);
-  EXPECT_NEAR(a.beta_radps2, b.beta_radps2, tolerance);
-  EXPECT_LE((a.state.q_rad - b.state.q_rad).cwiseAbs().maxCoeff(), tolerance);
-  EXPECT_LE((a.qd_radps - b.qd_radps).cwiseAbs().maxCoeff(), tolerance);
-  EXPECT_LE((a.qdd_radps2 - b.qdd_radps2).cwiseAbs().maxCoeff(), tolerance);
   EXPECT_LE((a.jerk - b.jerk).cwiseAbs().maxCoeff(), tolerance);
 }
 

@@ -74,5 +74,27 @@ TEST(MapIntakeTest, BlockedBoxesNearCoverTheOccupiedVoxelsOfTheRegionOnly) {
   EXPECT_TRUE(intake.NearBlocked({0.0, 0.0, 0.9}, 0.2));
 }
 
+TEST(MapIntakeTest, ClearBaseFootprintFreesOnlyBlockedVoxelsInsideTheBase) {
+  const GridGeometry3 g = testing::RoomGeometry();
+  // A small box inside the base at (1, 1), one just outside it, one above it.
+  std::vector<std::uint8_t> states = testing::StatesOf(
+      g, {MakeBox({1.1, 1.0, 0.05}, {0.1, 0.1, 0.1}), MakeBox({1.6, 1.0, 0.05}, {0.1, 0.1, 0.1}),
+          MakeBox({1.0, 1.0, 0.5}, {0.1, 0.1, 0.1})});
+  const std::vector<std::uint8_t> before = states;
+  const BaseCylinder base;  // radius 0.40 m, height 0.155 m
+  EXPECT_EQ(ClearBaseFootprint(g, {1.0, 1.0}, base, UnknownVoxelPolicy::kFree, &states), 8);
+  const auto at = [&](double x, double y, double z) {
+    const Eigen::Vector3i c = g.CellOf({x, y, z});
+    return static_cast<VoxelState>(states[g.Index(c.x(), c.y(), c.z())]);
+  };
+  EXPECT_EQ(at(1.1, 1.0, 0.05), VoxelState::kFree);
+  EXPECT_EQ(at(1.6, 1.0, 0.05), VoxelState::kOccupied);
+  EXPECT_EQ(at(1.0, 1.0, 0.5), VoxelState::kOccupied);
+  // Nothing else changed.
+  int changed = 0;
+  for (std::size_t i = 0; i < states.size(); ++i) changed += states[i] != before[i];
+  EXPECT_EQ(changed, 8);
+}
+
 }  // namespace
 }  // namespace topay::planner
