@@ -116,8 +116,11 @@ void PlanWorker::FlushMap() {
     return;
   }
   if (summary.ms > 300.0) {
-    spdlog::info("planner fields: {} voxel changes{} in {:.0f} ms", summary.changes,
-                 summary.reset ? " after a new grid" : "", summary.ms);
+    const VoxelMapUpdateSummary& u = summary.update;
+    spdlog::info("planner fields: {} voxel changes{} in {:.0f} ms ({} for the fields{}; 3D {:.0f} ms, {} windows, {} cells; "
+                 "2D {:.0f} ms, {} windows, {} cells)", summary.changes, summary.reset ? " after a new grid" : "", summary.ms,
+                 summary.field_changes, summary.rebuilt ? ", rebuilt whole" : "", 1e3 * u.field_3d_s, u.num_windows_3d,
+                 u.num_cells_3d, 1e3 * u.field_2d_s, u.num_windows_2d, u.num_cells_2d);
   }
   if (!world_.has_map()) return;
   auto snapshot = std::make_shared<const FieldSnapshot>(

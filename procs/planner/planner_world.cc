@@ -54,7 +54,7 @@ MapFlushSummary PlannerWorld::Flush() {
   }
   std::int64_t num_changes = 0;
   for (std::size_t k = first; k < queue.size(); ++k) num_changes += static_cast<std::int64_t>(queue[k].changes.size());
-  if (fields_ != nullptr && num_changes > 0) ApplyChanges(queue, first, num_changes);
+  if (fields_ != nullptr && num_changes > 0) ApplyChanges(queue, first, num_changes, &summary);
   summary.changes = num_changes;
   summary.works = static_cast<int>(queue.size());
   if (!queue.empty()) {
@@ -82,7 +82,7 @@ int FieldClass(VoxelState s, UnknownVoxelPolicy unknown) {
 }  // namespace
 
 void PlannerWorld::ApplyChanges(const std::vector<MapWork>& queue, std::size_t first,
-                                std::int64_t num_changes) {
+                                std::int64_t num_changes, MapFlushSummary* summary) {
   // Only the changes the fields can see (most of a scan's changes are unknown -> free,
   // nothing to the fields under the default policy): each voxel's last state in the batch,
   // kept if its class differs from the fields' (bad changes are kept: ApplyChanges names them).
@@ -105,10 +105,12 @@ void PlannerWorld::ApplyChanges(const std::vector<MapWork>& queue, std::size_t f
       seen.push_back(c);
     }
   }
-  if (static_cast<std::int64_t>(seen.size()) <= kRebuildAboveChanges) {
-    fields_->ApplyChanges(seen);
+  summary->field_changes = static_cast<std::int64_t>(seen.size());
+  if (summary->field_changes <= kRebuildAboveChanges) {
+    summary->update = fields_->ApplyChanges(seen);
     return;
   }
+  summary->rebuilt = true;
   // Many changes (a first scan, a long batch): their windows cover much of the map, and
   // recomputing window after window costs far more than one full rebuild (docs/benchmarks.md).
   std::vector<std::uint8_t> states(fields_->states().begin(), fields_->states().end());

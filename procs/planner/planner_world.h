@@ -18,6 +18,9 @@ struct MapFlushSummary {
   int works = 0;          ///< MapWork items applied (resets and change lists)
   bool reset = false;     ///< a new grid was built
   std::int64_t changes = 0;  ///< voxel changes applied
+  std::int64_t field_changes = 0;  ///< ... of them, changes the fields can see (their class changed)
+  bool rebuilt = false;   ///< the fields were rebuilt whole (more than kRebuildAboveChanges)
+  VoxelMapUpdateSummary update;  ///< the incremental update (when not rebuilt)
   double ms = 0.0;        ///< wall time of the whole flush
 };
 
@@ -51,7 +54,8 @@ class PlannerWorld {
 
  private:
   void Reset(const MapWork& work);
-  void ApplyChanges(const std::vector<MapWork>& queue, std::size_t first, std::int64_t num_changes);
+  void ApplyChanges(const std::vector<MapWork>& queue, std::size_t first, std::int64_t num_changes,
+                    MapFlushSummary* summary);
 
   const Kinematics& kinematics_;
   UnknownVoxelPolicy unknown_;
