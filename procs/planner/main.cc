@@ -65,7 +65,8 @@ int main(int argc, char** argv) {
     return procs::kExitConfigError;
   }
   const StopPlanner stop_planner(*model, planner_options.base_limits.value_or(model->base_limits));
-  PlanWorker worker(*kinematics, planner_options, options.map.unknown, options.map.field_update_period_s);
+  PlanWorker worker(*kinematics, planner_options, options.map.unknown, options.map.field_update_period_s,
+                    options.map.slice_m);
   PlannerNode node(&loop, &worker, *kinematics, stop_planner, options);
   spdlog::info("{}: robot {}, planner {}, unknown voxels {}, replanning budget {:.2f} s", process.name,
                model->name, options.planner_config, ToString(options.map.unknown),

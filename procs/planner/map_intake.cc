@@ -17,7 +17,8 @@ int ClearBaseFootprint(const GridGeometry3& geometry, const Eigen::Vector2d& p_W
       for (int ix = cells.begin.x(); ix < cells.end.x(); ++ix) {
         const Eigen::Vector3d c = geometry.CellCenter(ix, iy, iz);
         std::uint8_t& state = (*states)[geometry.Index(ix, iy, iz)];
-        if (c.z() > base.height_m || (c.head<2>() - p_WB_m).norm() > base.radius_m ||
+        // Every voxel reaching into the cylinder's height (one straddling its top too).
+        if (c.z() - 0.5 * geometry.resolution_m >= base.height_m || (c.head<2>() - p_WB_m).norm() > base.radius_m ||
             !VoxelBlocksPlanner(static_cast<VoxelState>(state), unknown)) {
           continue;
         }

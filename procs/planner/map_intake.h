@@ -57,8 +57,9 @@ class MapIntake {
   GridGeometry3 forwarded_geometry_;
 };
 
-/// Sets free every blocked voxel (VoxelBlocksPlanner) whose centre lies inside the base
-/// cylinder standing at p_WB: the robot stands there, so what the map holds inside its own
+/// Sets free every blocked voxel (VoxelBlocksPlanner) whose centre lies within the base
+/// cylinder's radius of p_WB and which reaches below the cylinder's top (a voxel straddling
+/// the top, too): the robot stands there, so what the map holds inside its own
 /// base is its own body seen by the LiDAR or a stale voxel (a plan from where the robot is must
 /// not fail on it; costmaps clear the footprint the same way). Returns the voxels cleared.
 int ClearBaseFootprint(const GridGeometry3& geometry, const Eigen::Vector2d& p_WB_m,

@@ -27,41 +27,41 @@ PlanJobOutcome Failed(PlanStatus status, std::string reason) {
   return out;
 }
 
+// A slow flush in the log: what it applied and what the 3D and 2D updates cost.
+void LogFlush(const char* what, const MapFlushSummary& s) {
+  const VoxelMapUpdateSummary& u = s.update;
+  spdlog::info("planner fields ({}): {} changes{}{} in {:.0f} ms, {} left (3D {:.0f} ms, {} windows, {} cells; "
+               "2D {:.0f} ms, {} windows, {} cells)", what, s.field_changes, s.reset ? " after a new grid" : "",
+               s.rebuilt ? ", rebuilt whole" : "", s.ms, s.left_pending, 1e3 * u.field_3d_s, u.num_windows_3d,
+               u.num_cells_3d, 1e3 * u.field_2d_s, u.num_windows_2d, u.num_cells_2d);
+}
+
 }  // namespace
 
 PlanWorker::PlanWorker(const Kinematics& kinematics, const WholeBodyPlannerOptions& options,
-                       UnknownVoxelPolicy unknown, double field_update_period_s)
+                       UnknownVoxelPolicy unknown, double field_update_period_s, double slice_m)
     : kinematics_(kinematics),
       options_(options),
       unknown_(unknown),
       field_update_period_s_(field_update_period_s),
-      world_(kinematics, unknown),
-      field_thread_([this](std::stop_token stop) { RunFields(stop); }),
-      plan_thread_([this](std::stop_token stop) { RunPlans(stop); }) {}
+      world_(kinematics, unknown, slice_m),
+      thread_([this](std::stop_token stop) { Run(stop); }) {}
 
 PlanWorker::~PlanWorker() {
   {
     std::lock_guard lock(mutex_);
     job_stop_.request_stop();
   }
-  plan_thread_.request_stop();
-  field_thread_.request_stop();
-  wake_plans_.notify_all();
-  wake_fields_.notify_all();
-  fields_ready_.notify_all();
+  thread_.request_stop();
+  wake_.notify_all();
 }
 
 void PlanWorker::SubmitMap(MapWork work) {
-  std::lock_guard lock(mutex_);
-  maps_.push_back(std::move(work));
-}
-
-void PlanWorker::UpdateFieldsSoon() {
   {
     std::lock_guard lock(mutex_);
-    fields_soon_ = true;
+    maps_.push_back(std::move(work));
   }
-  wake_fields_.notify_all();
+  wake_.notify_all();
 }
 
 void PlanWorker::SubmitPlan(PlanJob job) {
@@ -70,7 +70,7 @@ void PlanWorker::SubmitPlan(PlanJob job) {
     if (running_) job_stop_.request_stop();
     queued_ = std::move(job);
   }
-  wake_plans_.notify_all();
+  wake_.notify_all();
 }
 
 void PlanWorker::Cancel() {
@@ -87,6 +87,15 @@ std::optional<PlanJobOutcome> PlanWorker::TakeResult() {
   return out;
 }
 
+std::optional<PlanJobOutcome> PlanWorker::WaitForResult(double timeout_s) {
+  std::unique_lock lock(mutex_);
+  results_ready_.wait_for(lock, Seconds(timeout_s), [this] { return !results_.empty(); });
+  if (results_.empty()) return std::nullopt;
+  PlanJobOutcome out = std::move(results_.front());
+  results_.pop_front();
+  return out;
+}
+
 bool PlanWorker::busy() const {
   std::lock_guard lock(mutex_);
   return running_ || queued_.has_value();
@@ -97,102 +106,95 @@ PlanWorkerCounts PlanWorker::counts() const {
   return counts_;
 }
 
-void PlanWorker::FlushMap() {
-  {
-    std::lock_guard lock(mutex_);
-    while (!maps_.empty()) {
-      world_.Queue(std::move(maps_.front()));
-      maps_.pop_front();
-    }
-  }
-  if (!world_.pending()) return;
-  MapFlushSummary summary;
+template <typename Flush>
+bool PlanWorker::FlushCounted(Flush flush, MapFlushSummary* summary) {
   try {
-    summary = world_.Flush();
+    *summary = flush();
+    return true;
   } catch (const std::exception& e) {  // work that does not fit the grid: a bug upstream
     spdlog::error("planner map: {}", e.what());
     std::lock_guard lock(mutex_);
     ++counts_.map_errors;
+    return false;
+  }
+}
+
+void PlanWorker::RecordFlush(const MapFlushSummary& summary, bool fresh) {
+  if (summary.ms > (fresh ? 100.0 : 300.0)) LogFlush(fresh ? "before a plan" : "background", summary);
+  std::lock_guard lock(mutex_);
+  counts_.pending_changes = world_.pending_changes();
+  if (fresh) {
+    counts_.max_fresh_ms = std::max(counts_.max_fresh_ms, summary.ms);
     return;
   }
-  if (summary.ms > 300.0) {
-    const VoxelMapUpdateSummary& u = summary.update;
-    spdlog::info("planner fields: {} voxel changes{} in {:.0f} ms ({} for the fields{}; 3D {:.0f} ms, {} windows, {} cells; "
-                 "2D {:.0f} ms, {} windows, {} cells)", summary.changes, summary.reset ? " after a new grid" : "", summary.ms,
-                 summary.field_changes, summary.rebuilt ? ", rebuilt whole" : "", 1e3 * u.field_3d_s, u.num_windows_3d,
-                 u.num_cells_3d, 1e3 * u.field_2d_s, u.num_windows_2d, u.num_cells_2d);
-  }
-  if (!world_.has_map()) return;
-  auto snapshot = std::make_shared<const FieldSnapshot>(
-      FieldSnapshot{world_.fields().base_field_2d(), world_.fields().field_3d(), world_.map_seq()});
-  std::lock_guard lock(mutex_);
-  fields_ = std::move(snapshot);
   ++counts_.flushes;
   counts_.last_flush_ms = summary.ms;
   counts_.max_flush_ms = std::max(counts_.max_flush_ms, summary.ms);
-  fields_ready_.notify_all();
 }
 
-void PlanWorker::RunFields(std::stop_token thread_stop) {
+void PlanWorker::Run(std::stop_token thread_stop) {
   while (!thread_stop.stop_requested()) {
-    {
-      std::unique_lock lock(mutex_);
-      wake_fields_.wait_for(lock, thread_stop, Seconds(field_update_period_s_),
-                            [this] { return fields_soon_; });
-      fields_soon_ = false;
-    }
-    if (thread_stop.stop_requested()) return;
-    FlushMap();
-  }
-}
-
-std::shared_ptr<const FieldSnapshot> PlanWorker::Fields(Clock::time_point deadline, std::stop_token stop) {
-  std::unique_lock lock(mutex_);
-  if (!fields_) {
-    fields_soon_ = true;
-    wake_fields_.notify_all();
-    fields_ready_.wait_until(lock, stop, deadline, [this] { return fields_ != nullptr; });
-  }
-  return fields_;
-}
-
-void PlanWorker::RunPlans(std::stop_token thread_stop) {
-  while (!thread_stop.stop_requested()) {
-    PlanJob job;
+    std::deque<MapWork> maps;
+    std::optional<PlanJob> job;
     std::stop_token job_token;
     {
       std::unique_lock lock(mutex_);
-      wake_plans_.wait(lock, thread_stop, [this] { return queued_.has_value(); });
+      const std::optional<Clock::time_point> oldest = world_.OldestPending();
+      const Clock::time_point due =
+          oldest ? (*oldest == Clock::time_point::min() ? Clock::now() : *oldest + Seconds(field_update_period_s_))
+                 : Clock::now() + Seconds(3600.0);
+      wake_.wait_until(lock, thread_stop, due, [this] { return queued_.has_value() || !maps_.empty(); });
       if (thread_stop.stop_requested()) return;
-      job = std::move(*queued_);
-      queued_.reset();
-      job_stop_ = std::stop_source();
-      job_token = job_stop_.get_token();
-      running_ = true;
+      maps.swap(maps_);
+      if (queued_) {
+        job = std::move(*queued_);
+        queued_.reset();
+        job_stop_ = std::stop_source();
+        job_token = job_stop_.get_token();
+        running_ = true;
+      }
     }
-    PlanJobOutcome outcome = Execute(job, job_token);
-    std::lock_guard lock(mutex_);
-    running_ = false;
-    ++counts_.plans;
-    if (outcome.result.status == PlanStatus::kCancelled) ++counts_.cancelled;
-    results_.push_back(std::move(outcome));
+    for (MapWork& work : maps) world_.Queue(std::move(work));
+    if (job) {
+      PlanJobOutcome outcome = Execute(*job, job_token);
+      std::lock_guard lock(mutex_);
+      running_ = false;
+      ++counts_.plans;
+      if (outcome.result.status == PlanStatus::kCancelled) ++counts_.cancelled;
+      results_.push_back(std::move(outcome));
+      results_ready_.notify_all();
+      continue;
+    }
+    const std::optional<Clock::time_point> oldest = world_.OldestPending();
+    if (oldest && (*oldest == Clock::time_point::min() || Clock::now() >= *oldest + Seconds(field_update_period_s_))) {
+      MapFlushSummary summary;
+      if (FlushCounted([this] { return world_.FlushOldestSlice(); }, &summary)) RecordFlush(summary, false);
+    }
   }
 }
 
 PlanJobOutcome PlanWorker::Execute(const PlanJob& job, std::stop_token job_stop) {
   const auto deadline = Clock::now() + Seconds(job.time_limit_s);
   const Stopwatch setup;
+  MapFlushSummary fresh;
+  const bool flushed = FlushCounted(
+      [&] { return job.flush_all_map ? world_.Flush() : world_.FlushWithin(job.fresh_regions_xy_W_m); }, &fresh);
+  if (flushed) RecordFlush(fresh, true);
   PlanJobOutcome out;
-  const std::shared_ptr<const FieldSnapshot> fields = job.map_states ? Fields(deadline, job_stop) : nullptr;
-  if (job.map_states == nullptr) {
+  if (!world_.has_map()) {
     out = Failed(PlanStatus::kInvalidInput, "no map yet (no MAP_UPDATE snapshot received)");
-  } else if (fields == nullptr) {
-    out = Failed(job_stop.stop_requested() ? PlanStatus::kCancelled : PlanStatus::kTimeLimit,
-                 "the planner's fields were not built within the time limit");
   } else {
+    const GridGeometry3& geometry = world_.fields().geometry();
     Scene scene;
-    scene.boxes = BlockedVoxelBoxes(job.map_geometry, *job.map_states, unknown_);
-    scene.bounds_W_m = GridBounds(job.map_geometry);
+    if (job.from_rest) {  // the robot stands there: its own footprint is free
+      std::vector<std::uint8_t> states(world_.states().begin(), world_.states().end());
+      ClearBaseFootprint(geometry, {job.start.state.x_m, job.start.state.y_m}, kinematics_.model().base_cylinder,
+                         unknown_, &states);
+      scene.boxes = BlockedVoxelBoxes(geometry, states, unknown_);
+    } else {
+      scene.boxes = BlockedVoxelBoxes(geometry, world_.states(), unknown_);
+    }
+    scene.bounds_W_m = GridBounds(geometry);
     scene.kind = "map";
     if (job.certify_reachability) {
       const BaseReachability cert = CertifyTargetUnreachable(
@@ -207,12 +209,15 @@ PlanJobOutcome PlanWorker::Execute(const PlanJob& job, std::stop_token job_stop)
     if (!out.certified_unreachable) {
       WholeBodyPlannerOptions options = options_;
       options.time_limit_s = job.time_limit_s;
-      const WholeBodyPlanner planner(kinematics_, fields->base_field, fields->arm_field, scene, options);
+      const VoxelMapFields& fields = world_.fields();
+      const WholeBodyPlanner planner(kinematics_, fields.base_field_2d(), fields.field_3d(), scene, options);
       out.setup_ms = setup.ElapsedMs();
       out.result = planner.PlanBy(deadline, MovingStateOf(job.start), job.X_WE_goal, job.hint, job_stop);
     }
-    out.fields_map_seq = fields->map_seq;
   }
+  out.fields_map_seq = world_.map_seq();
+  out.changes_left = world_.pending_changes();
+  out.fresh_ms = fresh.ms;
   out.job = job;
   return out;
 }

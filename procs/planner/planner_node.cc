@@ -87,6 +87,7 @@ void PlannerNode::OnGoal(const goal_t& msg) {
     return;
   }
   goal_ = GoalRecord{*goal};
+  collision_points_.clear();
   pending_.reset();
   retry_at_utime_ = 0;
   RequestPlan(PlanTrigger::kGoal, fmt::format("new goal {}", goal->goal_id));
@@ -161,6 +162,7 @@ void PlannerNode::CheckActiveAgainstMap(std::int64_t now) {
   const std::int64_t at = active_->start_utime + Micros(hit->t_s);
   const bool first = !collision_utime_;
   collision_utime_ = at;
+  RememberCollision(*active_->trajectory, hit->t_s);
   if (active_->stopping) return;  // braking already; the replans go on (retry)
   const std::string reason =
       fmt::format("map seq {}: trajectory {} collides {:.2f} s ahead (clearance {:.3f} m)",
@@ -229,18 +231,8 @@ void PlannerNode::RequestPlan(PlanTrigger trigger, const std::string& reason) {
   job.X_WE_goal = goal_->goal.X_WE;
   job.hint = goal_->goal.hint;
   job.certify_reachability = !goal_->planned_once && options_.goals.certify_reachability;
-  if (map_.has_map()) {
-    const std::span<const std::uint8_t> received = map_.receiver().states();
-    std::vector<std::uint8_t> states(received.begin(), received.end());
-    job.map_geometry = map_.receiver().geometry();
-    if (job.from_rest) {  // the robot stands there: its own footprint is free
-      ClearBaseFootprint(job.map_geometry, {job.start.state.x_m, job.start.state.y_m},
-                         kinematics_.model().base_cylinder, options_.map.unknown, &states);
-    }
-    job.map_states = std::make_shared<const std::vector<std::uint8_t>>(std::move(states));
-    job.map_seq = map_.receiver().map_seq();
-  }
-  if (trigger == PlanTrigger::kMapCollision) worker_->UpdateFieldsSoon();
+  job.map_seq = map_.receiver().map_seq();
+  job.fresh_regions_xy_W_m = FreshRegions(job.start);
   ++counts_.triggers[trigger];
   if (trigger != PlanTrigger::kGoal && trigger != PlanTrigger::kRetry) ++goal_->replans;
   retry_at_utime_ = 0;
@@ -285,14 +277,42 @@ void PlannerNode::HandleOutcome(PlanJobOutcome outcome) {
     RequestPlan(PlanTrigger::kRetry, "the last plan came too late");
     return;
   }
-  // The map may have changed while it planned: check it against the newest.
-  if (const auto hit = CheckAhead(*outcome.result.trajectory, 0.0)) {
-    ++counts_.results_colliding;
-    RequestPlan(PlanTrigger::kMapCollision,
-                fmt::format("plan {} collides with the newer map at {:.2f} s", outcome.job.job_id, hit->t_s));
+  // The fields it planned on may lag the map away from its start, and the map may have
+  // changed while it planned: check it against the newest.
+  const std::optional<PredictedCollision> hit = CheckAhead(*outcome.result.trajectory, 0.0);
+  if (!hit) {
+    PublishTrajectory(outcome, now);
     return;
   }
-  PublishTrajectory(outcome, now);
+  ++counts_.results_colliding;
+  RememberCollision(*outcome.result.trajectory, hit->t_s);
+  const std::int64_t start = outcome.job.from_rest ? now : outcome.job.t0_utime;
+  const std::int64_t at = start + Micros(hit->t_s);
+  const std::string reason =
+      fmt::format("plan {} collides with the newer map at {:.2f} s", outcome.job.job_id, hit->t_s);
+  if (1e-6 * (at - now) > options_.timing.publish_collision_horizon_s) {
+    // Far enough ahead to replan before a stop could be due: out it goes, replanned at once.
+    PublishTrajectory(outcome, now);
+    collision_utime_ = at;
+  }
+  RequestPlan(PlanTrigger::kMapCollision, reason);
+}
+
+void PlannerNode::RememberCollision(const ArcYawTrajectory& trajectory, double t_s) {
+  TrajectorySample p = trajectory.MakePoint();
+  trajectory.Evaluate(std::clamp(t_s, 0.0, trajectory.duration_s()), &p);
+  collision_points_.push_back({p.state.x_m, p.state.y_m});
+  constexpr std::size_t kKeep = 6;  // the newest collisions: where the map keeps changing
+  if (collision_points_.size() > kKeep) collision_points_.erase(collision_points_.begin());
+}
+
+std::vector<Eigen::AlignedBox2d> PlannerNode::FreshRegions(const TrajectorySample& start) const {
+  const auto square = [](const Eigen::Vector2d& c, double half) {
+    return Eigen::AlignedBox2d(c - Eigen::Vector2d::Constant(half), c + Eigen::Vector2d::Constant(half));
+  };
+  std::vector<Eigen::AlignedBox2d> regions{square({start.state.x_m, start.state.y_m}, options_.map.fresh_radius_m)};
+  for (const Eigen::Vector2d& p : collision_points_) regions.push_back(square(p, options_.map.fresh_collision_radius_m));
+  return regions;
 }
 
 void PlannerNode::HandleFailure(const PlanJobOutcome& outcome) {
@@ -436,9 +456,9 @@ void PlannerNode::UpdateHealth() {
   const std::string tracker =
       tracker_ ? fmt::format("; tracker on {}", tracker_->trajectory_id) : std::string("; no TRACKER_STATUS");
   loop_->SetHealth(status_.state == planner_status_t::STOPPING ? heartbeat_t::WARN : heartbeat_t::OK,
-                   fmt::format("goal {} {}; trajectory {}; replans {}; map seq {}; field update {:.0f} ms{}",
-                               status_.goal_id, kStates[s], status_.trajectory_id, status_.replans,
-                               map_.receiver().map_seq(), w.last_flush_ms, tracker));
+                   fmt::format("goal {} {}; trajectory {}; replans {}; map seq {}; field slice {:.0f} ms, {} changes "
+                               "pending{}", status_.goal_id, kStates[s], status_.trajectory_id, status_.replans,
+                               map_.receiver().map_seq(), w.last_flush_ms, w.pending_changes, tracker));
 }
 
 std::string PlannerNode::Report() const {
@@ -452,11 +472,11 @@ std::string PlannerNode::Report() const {
   out += "  triggers:";
   for (const auto& [trigger, n] : counts_.triggers) out += fmt::format(" {} {}", ToString(trigger), n);
   out += fmt::format("\n  map: {} checks of the trajectory ahead (mean {:.2f} ms, max {:.2f} ms), {} rejected; "
-                     "{} field updates (last {:.0f} ms, max {:.0f} ms)\n",
+                     "{} background field updates (last {:.0f} ms, max {:.0f} ms), before a plan max {:.0f} ms\n",
                      counts_.map_checks,
                      counts_.map_checks > 0 ? counts_.map_check_ms_sum / counts_.map_checks : 0.0,
                      counts_.map_check_ms_max, counts_.maps_rejected, w.flushes, w.last_flush_ms,
-                     w.max_flush_ms);
+                     w.max_flush_ms, w.max_fresh_ms);
   return out;
 }
 

@@ -16,6 +16,9 @@
 #include <map>
 #include <optional>
 #include <string>
+#include <vector>
+
+#include <Eigen/Geometry>
 
 #include "core/optimization/trajectory_problem.h"
 #include "core/robot/kinematics.h"
@@ -83,6 +86,11 @@ class PlannerNode {
   void PublishActive(const char* what);
   std::optional<PredictedCollision> CheckAhead(const ArcYawTrajectory& trajectory, double t_from_s) const;
   void CheckActiveAgainstMap(std::int64_t now);
+  // Keeps the base position at t_s on `trajectory` (a predicted collision) for FreshRegions.
+  void RememberCollision(const ArcYawTrajectory& trajectory, double t_s);
+  // Where a plan from `start` needs the newest map in its fields: around its start and the
+  // recent collisions.
+  std::vector<Eigen::AlignedBox2d> FreshRegions(const TrajectorySample& start) const;
   void MaybeSafeStop(std::int64_t now);
   void MaybeFinishGoal(std::int64_t now);
   void PublishStatus(std::int8_t state, const std::string& reason, const std::string& detail,
@@ -108,6 +116,7 @@ class PlannerNode {
   // new trajectory's start_utime the robot follows the one before it.
   std::deque<ActiveTrajectory> replaced_;
   std::optional<std::int64_t> collision_utime_;  // predicted collision on active_, if any
+  std::vector<Eigen::Vector2d> collision_points_;  // base xy at the newest predicted collisions
   std::optional<double> last_stop_duration_s_;   // of the last stopping trajectory made for it
   bool stop_error_logged_ = false;
   std::optional<std::pair<PlanTrigger, std::string>> pending_;  // asked for while busy

@@ -24,6 +24,9 @@ void ReadMap(YamlSection s, PlannerMapOptions* o) {
   }
   o->unknown = *policy;
   s.Read("field_update_period_s", &o->field_update_period_s);
+  s.Read("slice_m", &o->slice_m);
+  s.Read("fresh_radius_m", &o->fresh_radius_m);
+  s.Read("fresh_collision_radius_m", &o->fresh_collision_radius_m);
   s.Read("validator_margin_m", &o->validator_margin_m);
   s.Finish();
 }
@@ -32,6 +35,7 @@ void ReadTiming(YamlSection s, PlanTimingOptions* o) {
   s.Read("from_rest_time_limit_s", &o->from_rest_time_limit_s);
   s.Read("replan_budget_s", &o->replan_budget_s);
   s.Read("publish_margin_s", &o->publish_margin_s);
+  s.Read("publish_collision_horizon_s", &o->publish_collision_horizon_s);
   s.Read("rest_speed", &o->rest_speed);
   s.Read("retry_period_s", &o->retry_period_s);
   s.Read("first_plan_attempts", &o->first_plan_attempts);
@@ -92,11 +96,15 @@ const char* ToString(UnknownVoxelPolicy policy) {
 
 void CheckPlannerProcessOptions(const PlannerProcessOptions& o, const std::string& source) {
   RequirePositive(o.map.field_update_period_s, source, "map.field_update_period_s");
+  RequirePositive(o.map.slice_m, source, "map.slice_m");
+  RequirePositive(o.map.fresh_radius_m, source, "map.fresh_radius_m");
+  RequirePositive(o.map.fresh_collision_radius_m, source, "map.fresh_collision_radius_m");
   RequireNonNegative(o.map.validator_margin_m, source, "map.validator_margin_m");
   RequirePositive(o.timing.from_rest_time_limit_s, source, "timing.from_rest_time_limit_s");
   RequirePositive(o.timing.publish_margin_s, source, "timing.publish_margin_s");
   RequirePositive(o.timing.replan_budget_s - o.timing.publish_margin_s, source,
                   "timing.replan_budget_s (minus publish_margin_s)");
+  RequirePositive(o.timing.publish_collision_horizon_s, source, "timing.publish_collision_horizon_s");
   RequirePositive(o.timing.rest_speed, source, "timing.rest_speed");
   RequirePositive(o.timing.retry_period_s, source, "timing.retry_period_s");
   if (o.timing.first_plan_attempts < 1) {

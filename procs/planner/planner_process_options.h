@@ -17,10 +17,18 @@ struct PlannerMapOptions {
   /// "free" (default: plan through unseen space; every scan is checked against the trajectory
   /// ahead, so what appears there triggers a replan), "occupied", "occupied_in_base_bands".
   UnknownVoxelPolicy unknown = UnknownVoxelPolicy::kFree;
-  /// Map changes reach the planner's distance fields in batches, at most this often (s), and
-  /// always before a plan starts: an update costs tens to hundreds of ms while the robot
-  /// drives into unseen space (docs/benchmarks.md), too much for every scan. > 0.
+  /// Map changes reach the planner's distance fields in the background, a square slice of the
+  /// map (slice_m wide) at a time, once the slice's oldest change is this old (s), while no
+  /// plan runs: updating the whole map costs ~0.4 s while the robot drives into unseen space
+  /// (docs/benchmarks.md), too much for every scan, and a slice ~50 ms. > 0.
   double field_update_period_s = 1.0;
+  double slice_m = 5.0;
+  /// Before a plan starts, the changes within fresh_radius_m (m, an xy square's half side) of
+  /// its start and within fresh_collision_radius_m of each collision it replans for reach the
+  /// fields at once (so a replan sees the obstacle that triggered it, in tens of ms); the rest
+  /// may lag by field_update_period_s plus the slices' work. > 0.
+  double fresh_radius_m = 3.0;
+  double fresh_collision_radius_m = 2.0;
   /// Added to the core planner's validator obstacle margin (m) when it validates a plan
   /// against the map's voxel boxes (the check of the trajectory ahead triggers at
   /// triggers.check_obstacle_margin_m). 0 by default: the fields do not carry a margin, and
@@ -39,6 +47,12 @@ struct PlanTimingOptions {
   /// publish_margin_s, and a result that comes after t0 is dropped. > publish_margin_s.
   double replan_budget_s = 1.0;
   double publish_margin_s = 0.05;
+  /// A finished plan is checked against the newest map before it goes out (its fields may
+  /// lag the map away from its start). If its first collision is more than this (s) from now,
+  /// it goes out all the same and a replan starts at once (time enough to replan before any
+  /// stop could be due: more than a stop's duration + stop.latency_s + stop.margin_s);
+  /// sooner, it is dropped and replanned. > 0.
+  double publish_collision_horizon_s = 5.0;
   /// Below this base speed (m/s) and yaw rate (rad/s) and every joint rate (rad/s) the robot
   /// counts as at rest (a plan from rest starts at its measured state).
   double rest_speed = 0.02;

@@ -37,11 +37,8 @@ class PlanWorkerTest : public ::testing::Test {
     return work;
   }
 
-  PlanJob Job(std::int64_t id, const WholeBodyState& start, const WholeBodyState& goal,
-              const std::vector<OrientedBox>& boxes = testing::RoomBoxes()) const {
+  PlanJob Job(std::int64_t id, const WholeBodyState& start, const WholeBodyState& goal) const {
     PlanJob job;
-    job.map_geometry = testing::RoomGeometry();
-    job.map_states = std::make_shared<const std::vector<std::uint8_t>>(testing::StatesOf(job.map_geometry, boxes));
     job.map_seq = 1;
     job.job_id = id;
     job.goal_id = 7;
@@ -95,7 +92,7 @@ TEST_F(PlanWorkerTest, TargetBehindAWallIsCertifiedUnreachableWithoutPlanning) {
   boxes.push_back(MakeBox({1.0, 0.0, 0.6}, {0.1, 8.0, 1.2}));  // splits the room in two
   PlanWorker worker(kinematics_, Options(), UnknownVoxelPolicy::kFree, 1.0);
   worker.SubmitMap(RoomWork(boxes));
-  worker.SubmitPlan(Job(1, BentArmState(-2.5, -2.5, 0.0), BentArmState(3.0, 0.0, 0.0), boxes));
+  worker.SubmitPlan(Job(1, BentArmState(-2.5, -2.5, 0.0), BentArmState(3.0, 0.0, 0.0)));
   const PlanJobOutcome out = WaitForResult(&worker);
   EXPECT_FALSE(out.result.success());
   EXPECT_TRUE(out.certified_unreachable);
@@ -105,7 +102,6 @@ TEST_F(PlanWorkerTest, TargetBehindAWallIsCertifiedUnreachableWithoutPlanning) {
 TEST_F(PlanWorkerTest, WithoutAMapThePlanFailsAndSaysSo) {
   PlanWorker worker(kinematics_, Options(), UnknownVoxelPolicy::kFree, 1.0);
   PlanJob job = Job(1, BentArmState(-2.5, -2.5, 0.0), BentArmState(2.3, 2.0, 1.0));
-  job.map_states = nullptr;
   worker.SubmitPlan(job);
   const PlanJobOutcome out = WaitForResult(&worker);
   EXPECT_FALSE(out.result.success());
