@@ -160,7 +160,11 @@ void PlannerNode::CheckActiveAgainstMap(std::int64_t now) {
     return;
   }
   const std::int64_t at = active_->start_utime + Micros(hit->t_s);
+  // A collision not predicted before (or a new one, sooner): a plan in progress was asked for
+  // without it and is replaced at once rather than awaited.
+  constexpr double kSooner_s = 0.25;
   const bool first = !collision_utime_;
+  const bool sooner = collision_utime_ && at < *collision_utime_ - Micros(kSooner_s);
   collision_utime_ = at;
   RememberCollision(*active_->trajectory, hit->t_s);
   if (active_->stopping) return;  // braking already; the replans go on (retry)
@@ -168,8 +172,8 @@ void PlannerNode::CheckActiveAgainstMap(std::int64_t now) {
       fmt::format("map seq {}: trajectory {} collides {:.2f} s ahead (clearance {:.3f} m)",
                   map_.receiver().map_seq(), active_->trajectory_id, 1e-6 * (at - now),
                   hit->clearance.obstacle_m());
-  if (first) spdlog::info("{}", reason);
-  RequestPlan(PlanTrigger::kMapCollision, reason);
+  if (first || sooner) spdlog::info("{}", reason);
+  RequestPlan(PlanTrigger::kMapCollision, reason, /*preempt=*/first || sooner);
 }
 
 bool PlannerNode::FillStart(PlanTrigger trigger, std::int64_t now, PlanJob* job, std::string* error) const {
@@ -210,9 +214,9 @@ bool PlannerNode::FillStart(PlanTrigger trigger, std::int64_t now, PlanJob* job,
   return true;
 }
 
-void PlannerNode::RequestPlan(PlanTrigger trigger, const std::string& reason) {
+void PlannerNode::RequestPlan(PlanTrigger trigger, const std::string& reason, bool preempt) {
   if (!goal_ || goal_->done) return;
-  if (trigger != PlanTrigger::kGoal && worker_->busy()) {
+  if (trigger != PlanTrigger::kGoal && !preempt && worker_->busy()) {
     pending_ = {trigger, reason};  // after the plan in progress
     return;
   }

@@ -78,7 +78,9 @@ class PlannerNode {
     int failed_attempts = 0;    // plans that failed before its first trajectory went out
   };
 
-  void RequestPlan(PlanTrigger trigger, const std::string& reason);
+  // Starts a plan now (a goal, or `preempt`: cancelling the one in progress) or after the plan
+  // in progress.
+  void RequestPlan(PlanTrigger trigger, const std::string& reason, bool preempt = false);
   bool FillStart(PlanTrigger trigger, std::int64_t now, PlanJob* job, std::string* error) const;
   void HandleOutcome(PlanJobOutcome outcome);
   void HandleFailure(const PlanJobOutcome& outcome);

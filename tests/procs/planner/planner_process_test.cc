@@ -58,14 +58,24 @@ class PlannerProcess : public testing::Test {
     watcher_->lcm().subscribe(std::string(channels::PLANNER_STATUS), &PlannerListener::OnStatus, &out_);
     boxes_ = planner::testing::RoomBoxes();
     boxes_.push_back(MakeBox({1.0, 0.0, 0.6}, {0.1, 8.0, 1.2}));  // splits the room at x = 1
+    StartPlanner();
+  }
+  // Starts the planner with dir_/planner.yaml and sends it the room's map.
+  void StartPlanner() {
     planner_ = Spawn({BinDir() + "/topay-planner", "--config", dir_ + "/planner.yaml", "--name", "planner",
                       "--lcm-url", kLcmUrl},
                      dir_ + "/planner.txt");
-    ASSERT_TRUE(watcher_->SpinUntil([&] { return watcher_->last.contains("planner"); }, 10.0))
+    ASSERT_TRUE(watcher_->SpinUntil([&] { return watcher_->last.contains("planner") &&
+                                                  watcher_->last["planner"].pid == planner_; }, 10.0))
         << ReadText(dir_ + "/planner.txt");
     const GridGeometry3 g = planner::testing::RoomGeometry();
     const map_update_t map = msgs::EncodeFullMap(g, planner::testing::StatesOf(g, boxes_), 1, 1);
     watcher_->lcm().publish(std::string(channels::MAP_UPDATE), &map);
+  }
+  void RestartPlanner() {
+    kill(planner_, SIGKILL);
+    WaitFor(planner_, 3.0);
+    StartPlanner();
   }
   void TearDown() override {
     if (planner_ > 0 && launch::ProcessAlive(planner_)) {
@@ -110,6 +120,45 @@ class PlannerProcess : public testing::Test {
     return msgs::ToMessage(goal);
   }
   void Send(const goal_t& goal) { watcher_->lcm().publish(std::string(channels::GOAL), &goal); }
+  // The base position at t_s: x, y integrated numerically from p0 along s and yaw.
+  static Eigen::Vector2d BaseAt(const msgs::PolyTrajectory& t, double t_s) {
+    Eigen::Vector2d p = t.p0_W_m;
+    const int n = 2000;
+    for (int k = 0; k < n; ++k) {
+      const Eigen::VectorXd a = t.Evaluate(t_s * k / n), b = t.Evaluate(t_s * (k + 1) / n);
+      const double yaw = 0.5 * (a(1) + b(1));
+      p += (b(0) - a(0)) * Eigen::Vector2d(std::cos(yaw), std::sin(yaw));
+    }
+    return p;
+  }
+  // A 0.3 x 0.3 x 1.0 m pillar at p, as a map delta with sequence number `seq`.
+  void SendPillar(const Eigen::Vector2d& p, std::int64_t seq) {
+    const GridGeometry3 g = planner::testing::RoomGeometry();
+    std::vector<VoxelChange> pillar;
+    const CellBox cells = VoxelsOverlapping(g, {Eigen::Vector3d(p.x() - kPillarHalf_m, p.y() - kPillarHalf_m, 0.0),
+                                                Eigen::Vector3d(p.x() + kPillarHalf_m, p.y() + kPillarHalf_m, 1.0)});
+    for (int iz = cells.begin.z(); iz < cells.end.z(); ++iz)
+      for (int iy = cells.begin.y(); iy < cells.end.y(); ++iy)
+        for (int ix = cells.begin.x(); ix < cells.end.x(); ++ix) pillar.push_back({{ix, iy, iz}, VoxelState::kOccupied});
+    const map_update_t delta = msgs::EncodeMapDelta(g, pillar, procs::NowUtime(), seq);
+    watcher_->lcm().publish(std::string(channels::MAP_UPDATE), &delta);
+  }
+  // The least distance (m) from the trajectory's base axis to the pillar at p (its square).
+  static double BaseDistanceToPillar(const msgs::PolyTrajectory& t, const Eigen::Vector2d& p) {
+    double least = std::numeric_limits<double>::infinity();
+    const double duration = t.durations_s.sum();
+    Eigen::Vector2d base = t.p0_W_m;
+    const int n = 4000;
+    for (int k = 0; k < n; ++k) {
+      const Eigen::VectorXd a = t.Evaluate(duration * k / n), b = t.Evaluate(duration * (k + 1) / n);
+      const double yaw = 0.5 * (a(1) + b(1));
+      base += (b(0) - a(0)) * Eigen::Vector2d(std::cos(yaw), std::sin(yaw));
+      const Eigen::Vector2d outside = ((base - p).cwiseAbs().array() - kPillarHalf_m).max(0.0);
+      least = std::min(least, outside.norm());
+    }
+    return least;
+  }
+  static constexpr double kPillarHalf_m = 0.15;
 
   RobotModel model_ = LoadRobotModel(TOPAY_SOURCE_DIR "/config/robot/topay_mm.urdf",
                                      TOPAY_SOURCE_DIR "/config/robot/topay_mm.yaml");
@@ -175,25 +224,8 @@ TEST_F(PlannerProcess, ABoxOnTheRouteTriggersAReplanThatAvoidsIt) {
   ASSERT_TRUE(first.has_value()) << error;
   // A pillar where the first trajectory's base is 60 % of the way (still ahead of the robot,
   // which the planner believes is driving it).
-  const double t_mid = 0.6 * first->durations_s.sum();
-  // The base position there: integrate x, y numerically from p0 along s and yaw.
-  Eigen::Vector2d p = first->p0_W_m;
-  const int n = 2000;
-  for (int k = 0; k < n; ++k) {
-    const double ta = t_mid * k / n, tb = t_mid * (k + 1) / n;
-    const Eigen::VectorXd a = first->Evaluate(ta), b = first->Evaluate(tb);
-    const double yaw = 0.5 * (a(1) + b(1));
-    p += (b(0) - a(0)) * Eigen::Vector2d(std::cos(yaw), std::sin(yaw));
-  }
-  const GridGeometry3 g = planner::testing::RoomGeometry();
-  std::vector<VoxelChange> pillar;
-  const CellBox cells = VoxelsOverlapping(g, {Eigen::Vector3d(p.x() - 0.15, p.y() - 0.15, 0.0),
-                                              Eigen::Vector3d(p.x() + 0.15, p.y() + 0.15, 1.0)});
-  for (int iz = cells.begin.z(); iz < cells.end.z(); ++iz)
-    for (int iy = cells.begin.y(); iy < cells.end.y(); ++iy)
-      for (int ix = cells.begin.x(); ix < cells.end.x(); ++ix) pillar.push_back({{ix, iy, iz}, VoxelState::kOccupied});
-  const map_update_t delta = msgs::EncodeMapDelta(g, pillar, procs::NowUtime(), 2);
-  watcher_->lcm().publish(std::string(channels::MAP_UPDATE), &delta);
+  const Eigen::Vector2d p = BaseAt(*first, 0.6 * first->durations_s.sum());
+  SendPillar(p, 2);
   const std::size_t before = out_.trajectories.size();
   ASSERT_TRUE(SpinWithRobot([&] { return out_.trajectories.size() > before; }, 30.0)) << ReadText(dir_ + "/planner.txt");
   const poly_trajectory_t& second = out_.trajectories.back();
@@ -203,6 +235,41 @@ TEST_F(PlannerProcess, ABoxOnTheRouteTriggersAReplanThatAvoidsIt) {
   for (const planner_status_t& s : out_.statuses) said_why |= s.detail.find("collides") != std::string::npos;
   EXPECT_TRUE(said_why);
   EXPECT_GE(out_.statuses.back().replans, 1);
+}
+
+// A plan whose fields do not yet hold an obstacle far from its start (the background has not got
+// to it, and it is outside the plan's fresh region) is checked against the newest map before it
+// goes out: it collides, so the planner replans with the obstacle's surroundings brought into
+// its fields (going out first if the collision is far enough ahead), and the robot's last
+// trajectory goes around it.
+TEST_F(PlannerProcess, AnObstacleTheFieldsLackIsCaughtBeforeThePlanGoesOutAndAvoided) {
+  WriteText(dir_ + "/planner.yaml", ReadText(dir_ + "/planner.yaml") +
+                                        "map: {fresh_radius_m: 1.0, field_update_period_s: 60.0}\n");
+  RestartPlanner();
+  Send(ReachableGoal(41));
+  ASSERT_TRUE(SpinWithRobot([&] { return !out_.trajectories.empty(); }, 60.0)) << ReadText(dir_ + "/planner.txt");
+  std::string error;
+  const auto first = msgs::FromMessage(out_.trajectories.back(), &error);
+  ASSERT_TRUE(first.has_value()) << error;
+  // A pillar where that route's base is 70 % of the way, far beyond the fresh region (1 m).
+  const Eigen::Vector2d p = BaseAt(*first, 0.7 * first->durations_s.sum());
+  ASSERT_GT((p - Eigen::Vector2d(start_.x_m, start_.y_m)).norm(), 2.0);
+  // A fresh planner (no trajectory under way to check the pillar against), its fields built
+  // from the room's map; then the pillar, pending (the background waits 60 s), then the goal.
+  RestartPlanner();
+  SpinWithRobot([] { return false; }, 1.5);
+  SendPillar(p, 2);
+  SpinWithRobot([] { return false; }, 0.2);
+  Send(ReachableGoal(42));
+  const auto avoided = [&] {
+    if (out_.trajectories.empty() || out_.trajectories.back().goal_id != 42) return false;
+    const auto t = msgs::FromMessage(out_.trajectories.back(), &error);
+    return t && BaseDistanceToPillar(*t, p) > model_.base_cylinder.radius_m;
+  };
+  ASSERT_TRUE(SpinWithRobot(avoided, 60.0)) << ReadText(dir_ + "/planner.txt");
+  bool caught = false;
+  for (const planner_status_t& s : out_.statuses) caught |= s.detail.find("collides with the newer map") != std::string::npos;
+  EXPECT_TRUE(caught) << "the first plan for goal 42 was not caught colliding\n" << ReadText(dir_ + "/planner.txt");
 }
 
 TEST_F(PlannerProcess, AGoalFloodLeavesTheLoopResponsiveAndTheLastGoalPlanned) {
