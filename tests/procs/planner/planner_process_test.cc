@@ -120,17 +120,18 @@ class PlannerProcess : public testing::Test {
     return msgs::ToMessage(goal);
   }
   void Send(const goal_t& goal) { watcher_->lcm().publish(std::string(channels::GOAL), &goal); }
-  // The base position at t_s: x, y integrated numerically from p0 along s and yaw.
-  static Eigen::Vector2d BaseAt(const msgs::PolyTrajectory& t, double t_s) {
-    Eigen::Vector2d p = t.p0_W_m;
-    const int n = 2000;
+  // The base positions at n + 1 times evenly over [0, t_end]: x, y integrated numerically from
+  // p0 along s and yaw.
+  static std::vector<Eigen::Vector2d> BasePath(const msgs::PolyTrajectory& t, double t_end, int n) {
+    std::vector<Eigen::Vector2d> path{t.p0_W_m};
     for (int k = 0; k < n; ++k) {
-      const Eigen::VectorXd a = t.Evaluate(t_s * k / n), b = t.Evaluate(t_s * (k + 1) / n);
+      const Eigen::VectorXd a = t.Evaluate(t_end * k / n), b = t.Evaluate(t_end * (k + 1) / n);
       const double yaw = 0.5 * (a(1) + b(1));
-      p += (b(0) - a(0)) * Eigen::Vector2d(std::cos(yaw), std::sin(yaw));
+      path.push_back(path.back() + (b(0) - a(0)) * Eigen::Vector2d(std::cos(yaw), std::sin(yaw)));
     }
-    return p;
+    return path;
   }
+  static Eigen::Vector2d BaseAt(const msgs::PolyTrajectory& t, double t_s) { return BasePath(t, t_s, 2000).back(); }
   // A 0.3 x 0.3 x 1.0 m pillar at p, as a map delta with sequence number `seq`.
   void SendPillar(const Eigen::Vector2d& p, std::int64_t seq) {
     const GridGeometry3 g = planner::testing::RoomGeometry();
@@ -146,15 +147,8 @@ class PlannerProcess : public testing::Test {
   // The least distance (m) from the trajectory's base axis to the pillar at p (its square).
   static double BaseDistanceToPillar(const msgs::PolyTrajectory& t, const Eigen::Vector2d& p) {
     double least = std::numeric_limits<double>::infinity();
-    const double duration = t.durations_s.sum();
-    Eigen::Vector2d base = t.p0_W_m;
-    const int n = 4000;
-    for (int k = 0; k < n; ++k) {
-      const Eigen::VectorXd a = t.Evaluate(duration * k / n), b = t.Evaluate(duration * (k + 1) / n);
-      const double yaw = 0.5 * (a(1) + b(1));
-      base += (b(0) - a(0)) * Eigen::Vector2d(std::cos(yaw), std::sin(yaw));
-      const Eigen::Vector2d outside = ((base - p).cwiseAbs().array() - kPillarHalf_m).max(0.0);
-      least = std::min(least, outside.norm());
+    for (const Eigen::Vector2d& base : BasePath(t, t.durations_s.sum(), 4000)) {
+      least = std::min(least, Eigen::Vector2d(((base - p).cwiseAbs().array() - kPillarHalf_m).max(0.0)).norm());
     }
     return least;
   }
