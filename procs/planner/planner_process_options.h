@@ -27,8 +27,8 @@ struct PlannerMapOptions {
   /// its start and within fresh_collision_radius_m of each collision it replans for reach the
   /// fields at once (so a replan sees the obstacle that triggered it, in tens of ms); the rest
   /// may lag by field_update_period_s plus the slices' work. > 0.
-  double fresh_radius_m = 3.0;
-  double fresh_collision_radius_m = 2.0;
+  double fresh_radius_m = 2.0;
+  double fresh_collision_radius_m = 1.5;
   /// Added to the core planner's validator obstacle margin (m) when it validates a plan
   /// against the map's voxel boxes (the check of the trajectory ahead triggers at
   /// triggers.check_obstacle_margin_m). 0 by default: the fields do not carry a margin, and
