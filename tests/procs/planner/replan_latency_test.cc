@@ -232,7 +232,11 @@ struct Listener {
   void OnStatus(const lcm::ReceiveBuffer*, const std::string&, const planner_status_t* m) {
     statuses.push_back({*m, procs::NowUtime()});
     const bool fresh = seen_details.insert(m->detail).second;
-    if (watch == nullptr || watch->scan_utime == 0 || watch->trigger_utime != 0) return;
+    // The trigger of this event comes after its scan and before its reaction (a status after
+    // the reaction is another trigger's).
+    if (watch == nullptr || watch->scan_utime == 0 || watch->trigger_utime != 0 || watch->traj_recv_utime != 0) {
+      return;
+    }
     if (fresh && m->detail.find("collides") != std::string::npos && m->utime >= watch->scan_utime) {
       watch->trigger_utime = m->utime;
       watch->trigger_detail = m->detail;
@@ -307,36 +311,70 @@ class ReplanLatency : public testing::Test {
     lcm.subscribe(std::string(channels::POINT_CLOUD), &Listener::OnCloud, &in_);
     lcm.subscribe(std::string(channels::ROBOT_STATE), &Listener::OnRobot, &in_);
     lcm.subscribe(std::string(channels::SIM_STATUS), &Listener::OnSim, &in_);
-    pids_.push_back(Spawn({Bin("topay-mapper"), "--config", ConfigFile("mapper/mapper.yaml"), "--name", "mapper",
-                           "--lcm-url", kLcmUrl}, dir_ + "/mapper.txt"));
-    pids_.push_back(Spawn({Bin("topay-planner"), "--config", dir_ + "/planner.yaml", "--name", "planner",
-                           "--lcm-url", kLcmUrl}, dir_ + "/planner.txt"));
-    pids_.push_back(Spawn({Bin("topay-sim"), "--config", ConfigFile("sim/sim.yaml"), "--scene", dir_ + "/room.json",
-                           "--follow", "--name", "sim", "--lcm-url", kLcmUrl}, dir_ + "/sim.txt"));
-    ASSERT_TRUE(watcher_->SpinUntil([&] { return in_.robot.has_value() && watcher_->last.contains("planner") &&
-                                                  watcher_->last.contains("mapper"); }, 15.0))
-        << Logs();
-    watcher_->Spin(1.0);  // a few scans into the map
+    ASSERT_TRUE(StartGraph()) << Logs();
   }
   void TearDown() override {
     in_.watch = nullptr;
+    StopGraph();
+    if (HasFailure()) std::cout << Logs();
+  }
+
+  // sim + mapper + planner, logs into <dir>/{mapper,planner,sim}[.<run>].txt; true once all are up.
+  bool StartGraph() {
+    ++runs_;
+    const std::string run = RunSuffix(runs_);
+    watcher_->last.clear();
+    pids_.push_back(Spawn({Bin("topay-mapper"), "--config", ConfigFile("mapper/mapper.yaml"), "--name", "mapper",
+                           "--lcm-url", kLcmUrl}, dir_ + "/mapper" + run + ".txt"));
+    pids_.push_back(Spawn({Bin("topay-planner"), "--config", dir_ + "/planner.yaml", "--name", "planner",
+                           "--lcm-url", kLcmUrl}, dir_ + "/planner" + run + ".txt"));
+    pids_.push_back(Spawn({Bin("topay-sim"), "--config", ConfigFile("sim/sim.yaml"), "--scene", dir_ + "/room.json",
+                           "--follow", "--name", "sim", "--lcm-url", kLcmUrl}, dir_ + "/sim" + run + ".txt"));
+    const bool up = watcher_->SpinUntil([&] { return in_.robot.has_value() && watcher_->last.contains("planner") &&
+                                                     watcher_->last.contains("mapper"); }, 15.0);
+    watcher_->Spin(1.0);  // a few scans into the map
+    return up;
+  }
+  static std::string RunSuffix(int run) { return run == 1 ? "" : "." + std::to_string(run); }
+  void StopGraph() {
     for (pid_t pid : pids_) {
       if (pid > 0 && launch::ProcessAlive(pid)) {
         kill(pid, SIGINT);
         if (WaitFor(pid, 5.0) == -1) kill(pid, SIGKILL), WaitFor(pid, 3.0);
       }
     }
-    if (HasFailure()) std::cout << Logs();
+    pids_.clear();
+  }
+  /// A fresh graph (the robot back at the start, an empty map) when the robot is stuck; the
+  /// contacts counted so far are kept.
+  bool RestartGraph() {
+    contacts_before_ += std::max<std::int64_t>(0, in_.sim ? in_.sim->contact_events : 0);
+    StopGraph();
+    in_.trajectories.clear();
+    in_.statuses.clear();
+    in_.seen_details.clear();
+    in_.robot.reset();
+    in_.sim.reset();
+    ++restarts_;
+    std::cout << "restart " << restarts_ << ": the robot stood still through 3 goals" << std::endl;
+    return StartGraph();
+  }
+  std::string PlannerLogs() const {
+    std::string text;
+    for (int r = 1; r <= runs_; ++r) text += ReadText(dir_ + "/planner" + RunSuffix(r) + ".txt");
+    return text;
   }
   std::string Logs() const {
-    return "--- planner (tail)\n" + Tail(ReadText(dir_ + "/planner.txt")) + "--- sim (tail)\n" +
-           Tail(ReadText(dir_ + "/sim.txt"));
+    return "--- planner (tail)\n" + Tail(PlannerLogs()) + "--- sim (tail)\n" + Tail(ReadText(dir_ + "/sim.txt"));
   }
-  static std::string Tail(const std::string& text) { return text.size() > 6000 ? text.substr(text.size() - 6000) : text; }
+  static std::string Tail(const std::string& text) {
+    return text.size() > 6000 ? text.substr(text.size() - 6000) : text;
+  }
 
   Eigen::Vector2d Robot() const { return {in_.robot->pose.x_m, in_.robot->pose.y_m}; }
   double RobotSpeed() const { return std::abs(in_.robot->velocity.v_mps); }
-  std::int64_t Contacts() const { return in_.sim ? in_.sim->contact_events : -1; }
+  /// Contacts counted by the simulator's collision monitor, over every graph run (-1: no status).
+  std::int64_t Contacts() const { return in_.sim ? contacts_before_ + in_.sim->contact_events : -1; }
 
   // A goal 5-8 m from the robot, exactly clear of the room by 0.3 m, whose base the robot's base
   // can be proven to reach.
@@ -425,14 +463,21 @@ class ReplanLatency : public testing::Test {
   std::optional<Event> WaitForPlace(double timeout_s) {
     const Clock::time_point start = Clock::now();
     std::optional<Clock::time_point> slow_since;
+    int goals_standing_still = 0;
     while (SecondsSince(start) < timeout_s) {
-      if (RobotSpeed() >= 0.05) {
+      if (in_.robot && RobotSpeed() >= 0.05) {
         slow_since.reset();
+        goals_standing_still = 0;
       } else if (!slow_since) {
         slow_since = Clock::now();
       }
       if (goal_id_ == 0 || GoalOver() || (slow_since && SecondsSince(*slow_since) > 12.0)) {
+        if (goals_standing_still >= 3) {  // e.g. its start blocked by voxels it cannot clear
+          if (!RestartGraph()) return std::nullopt;
+          goals_standing_still = 0;
+        }
         SendGoal();
+        if (slow_since) ++goals_standing_still;
         slow_since.reset();
       }
       watcher_->Spin(0.1);
@@ -473,6 +518,9 @@ class ReplanLatency : public testing::Test {
   Listener in_;
   Rng rng_{static_cast<std::uint64_t>(EnvInt("TOPAY_REPLAN_SEED", 18))};
   std::int64_t goal_id_ = 0;
+  int runs_ = 0;
+  int restarts_ = 0;
+  std::int64_t contacts_before_ = 0;
 };
 
 /// Each seen event's first logged collision in [t_scan, its trajectory (or t_scan + the timeout)].
@@ -510,66 +558,95 @@ nlohmann::json ToJson(const Summary& s) {
   return {{"n", s.n}, {"median_ms", num(s.median)}, {"p95_ms", num(s.p95)}, {"max_ms", num(s.max)}};
 }
 
-void ReplanLatency::Report(const std::vector<Event>& events) const {
-  std::ofstream csv(out_dir_ + "/events.csv");
-  csv << "event,ahead_m,speed_mps,box_side_m,scan_points,scan_delivery_ms,scan_to_detect_log_ms,scan_to_trigger_ms,trigger_to_traj_ms,"
-         "scan_to_traj_ms,scan_received_to_traj_ms,kind,traj_id,traj_base_clearance_m,trajectories_still_hitting,contacts_after,miss\n";
-  std::ostringstream table;
-  table << "event  ahead  speed  points  deliv  scan->det  scan->trig  trig->traj  scan->traj  kind  clear  miss\n";
-  std::vector<double> scan_traj, scan_det, scan_trig, trig_traj, delivery, recv_traj;
-  int misses = 0;
+/// The figures summarized over the events (NaN entries, i.e. misses, left out), in report order.
+struct Figure {
+  const char* key;
+  const char* name;
+  double (Event::*ms)() const;
+};
+constexpr Figure kFigures[] = {
+    {"scan_to_trajectory", "scan -> trajectory clear of the box", &Event::ScanToTrajMs},
+    {"scan_to_detect_log", "scan -> collision logged by the planner", &Event::ScanToDetectMs},
+    {"scan_to_trigger", "scan -> planner trigger (status \"collides\")", &Event::ScanToTriggerMs},
+    {"trigger_to_trajectory", "planner trigger -> trajectory", &Event::TriggerToTrajMs},
+    {"scan_delivery", "scan capture -> scan received (sim delivery)", &Event::ScanDeliveryMs},
+    {"scan_received_to_trajectory", "scan received -> trajectory", &Event::ReceivedToTrajMs},
+};
+
+Summary SummarizeFigure(const std::vector<Event>& events, const Figure& figure) {
+  std::vector<double> values;
+  for (const Event& e : events) values.push_back((e.*figure.ms)());
+  return Summarize(values);
+}
+
+int CountKind(const std::vector<Event>& events, const std::string& kind) {
+  return static_cast<int>(std::count_if(events.begin(), events.end(), [&](const Event& e) { return e.kind == kind; }));
+}
+
+int CountMisses(const std::vector<Event>& events) {
+  return static_cast<int>(std::count_if(events.begin(), events.end(), [](const Event& e) { return !e.miss.empty(); }));
+}
+
+void WriteCsv(const std::vector<Event>& events, const std::string& path) {
+  std::ofstream csv(path);
+  csv << "event,ahead_m,speed_mps,box_side_m,scan_points,scan_delivery_ms,scan_to_detect_log_ms,scan_to_trigger_ms,"
+         "trigger_to_traj_ms,scan_to_traj_ms,scan_received_to_traj_ms,kind,traj_id,traj_base_clearance_m,"
+         "trajectories_still_hitting,contacts_after,miss\n";
   for (const Event& e : events) {
     csv << e.index << ',' << e.ahead_m << ',' << e.robot_speed_mps << ',' << e.box.size_m.x() << ',' << e.scan_points
         << ',' << Fixed(e.ScanDeliveryMs(), 1) << ',' << Fixed(e.ScanToDetectMs(), 1) << ','
-        << Fixed(e.ScanToTriggerMs(), 1) << ','
-        << Fixed(e.TriggerToTrajMs(), 1) << ',' << Fixed(e.ScanToTrajMs(), 1) << ','
-        << Fixed(e.ReceivedToTrajMs(), 1) << ',' << e.kind << ',' << e.traj_id
-        << ',' << Fixed(e.traj_clearance_m, 3) << ',' << e.trajectories_rejected << ',' << e.contacts_after << ",\""
+        << Fixed(e.ScanToTriggerMs(), 1) << ',' << Fixed(e.TriggerToTrajMs(), 1) << ',' << Fixed(e.ScanToTrajMs(), 1)
+        << ',' << Fixed(e.ReceivedToTrajMs(), 1) << ',' << e.kind << ',' << e.traj_id << ','
+        << Fixed(e.traj_clearance_m, 3) << ',' << e.trajectories_rejected << ',' << e.contacts_after << ",\""
         << e.miss << "\"\n";
-    table << std::setw(5) << e.index << std::setw(7) << Fixed(e.ahead_m, 2) << std::setw(7)
-          << Fixed(e.robot_speed_mps, 2) << std::setw(8) << e.scan_points << std::setw(7)
-          << Fixed(e.ScanDeliveryMs()) << std::setw(11) << Fixed(e.ScanToDetectMs()) << std::setw(12)
-          << Fixed(e.ScanToTriggerMs()) << std::setw(12)
-          << Fixed(e.TriggerToTrajMs()) << std::setw(12) << Fixed(e.ScanToTrajMs()) << std::setw(6)
-          << (e.kind.empty() ? "-" : e.kind) << std::setw(7) << Fixed(e.traj_clearance_m, 2) << "  " << e.miss
-          << "\n";
-    if (!e.miss.empty()) ++misses;
-    scan_traj.push_back(e.ScanToTrajMs());
-    scan_det.push_back(e.ScanToDetectMs());
-    scan_trig.push_back(e.ScanToTriggerMs());
-    trig_traj.push_back(e.TriggerToTrajMs());
-    delivery.push_back(e.ScanDeliveryMs());
-    recv_traj.push_back(e.ReceivedToTrajMs());
   }
-  const Summary a = Summarize(scan_traj), b = Summarize(scan_trig), c = Summarize(trig_traj),
-                d = Summarize(delivery), f = Summarize(scan_det),
-                g = Summarize(recv_traj);
-  const int stops = static_cast<int>(std::count_if(events.begin(), events.end(), [](const Event& e) { return e.kind == "stop"; }));
-  const int plans = static_cast<int>(std::count_if(events.begin(), events.end(), [](const Event& e) { return e.kind == "plan"; }));
-  table << "\nsummary over " << events.size() << " events (" << plans << " plans, " << stops << " stops, " << misses
-        << " misses), ms:         n  median     p95     max\n";
-  const auto line = [&](const char* name, const Summary& s) {
-    table << "  " << std::left << std::setw(44) << name << std::right << std::setw(4) << s.n << std::setw(8)
-          << Fixed(s.median) << std::setw(8) << Fixed(s.p95) << std::setw(8) << Fixed(s.max) << "\n";
-  };
-  line("scan -> trajectory clear of the box", a);
-  line("scan -> collision logged by the planner", f);
-  line("scan -> planner trigger (status \"collides\")", b);
-  line("planner trigger -> trajectory", c);
-  line("scan capture -> scan received (sim delivery)", d);
-  line("scan received -> trajectory (without delivery)", g);
-  table << "contacts (SIM_STATUS contact_events): " << Contacts() << "; load average (1, 5, 15 min): "
-        << LoadAverage() << "\n";
-  std::cout << table.str() << "written: " << out_dir_ << "/events.csv, summary.json\n";
-  std::ofstream(out_dir_ + "/table.txt") << table.str();
-  const nlohmann::json summary = {{"events", events.size()},       {"plans", plans},
-                                  {"stops", stops},                {"misses", misses},
-                                  {"contacts", Contacts()},        {"scan_to_trajectory", ToJson(a)},
-                                  {"scan_to_trigger", ToJson(b)},  {"scan_to_detect_log", ToJson(f)},  {"trigger_to_trajectory", ToJson(c)},
-                                  {"scan_delivery", ToJson(d)},    {"scan_received_to_trajectory", ToJson(g)},
-                                  {"load_average", LoadAverage()},    {"goals_sent", goal_id_},
-                                  {"utc_unix_s", procs::NowUtime() / 1000000}};
-  std::ofstream(out_dir_ + "/summary.json") << summary.dump(2) << "\n";
+}
+
+std::string EventTable(const std::vector<Event>& events) {
+  std::ostringstream t;
+  t << "event  ahead  speed  points  deliv  scan->det  scan->trig  trig->traj  scan->traj  kind  clear  miss\n";
+  for (const Event& e : events) {
+    t << std::setw(5) << e.index << std::setw(7) << Fixed(e.ahead_m, 2) << std::setw(7) << Fixed(e.robot_speed_mps, 2)
+      << std::setw(8) << e.scan_points << std::setw(7) << Fixed(e.ScanDeliveryMs()) << std::setw(11)
+      << Fixed(e.ScanToDetectMs()) << std::setw(12) << Fixed(e.ScanToTriggerMs()) << std::setw(12)
+      << Fixed(e.TriggerToTrajMs()) << std::setw(12) << Fixed(e.ScanToTrajMs()) << std::setw(6)
+      << (e.kind.empty() ? "-" : e.kind) << std::setw(7) << Fixed(e.traj_clearance_m, 2) << "  " << e.miss << "\n";
+  }
+  return t.str();
+}
+
+std::string SummaryTable(const std::vector<Event>& events, std::int64_t contacts, int restarts) {
+  std::ostringstream t;
+  t << "summary over " << events.size() << " events (" << CountKind(events, "plan") << " plans, "
+    << CountKind(events, "stop") << " stops, " << CountMisses(events) << " misses), ms:"
+    << std::setw(11) << "n" << std::setw(8) << "median" << std::setw(8) << "p95" << std::setw(8) << "max\n";
+  for (const Figure& f : kFigures) {
+    const Summary s = SummarizeFigure(events, f);
+    t << "  " << std::left << std::setw(52) << f.name << std::right << std::setw(4) << s.n << std::setw(8)
+      << Fixed(s.median) << std::setw(8) << Fixed(s.p95) << std::setw(8) << Fixed(s.max) << "\n";
+  }
+  t << "contacts (SIM_STATUS contact_events): " << contacts << "; graph restarts (robot stuck): " << restarts
+    << "; load average (1, 5, 15 min): " << LoadAverage()
+    << "\n";
+  return t.str();
+}
+
+nlohmann::json SummaryJson(const std::vector<Event>& events, std::int64_t contacts, std::int64_t goals,
+                           int restarts) {
+  nlohmann::json j = {{"events", events.size()},       {"plans", CountKind(events, "plan")},
+                      {"stops", CountKind(events, "stop")}, {"misses", CountMisses(events)},
+                      {"contacts", contacts},          {"goals_sent", goals},            {"graph_restarts", restarts},
+                      {"load_average", LoadAverage()}, {"utc_unix_s", procs::NowUtime() / 1000000}};
+  for (const Figure& f : kFigures) j[f.key] = ToJson(SummarizeFigure(events, f));
+  return j;
+}
+
+void ReplanLatency::Report(const std::vector<Event>& events) const {
+  const std::string text = EventTable(events) + "\n" + SummaryTable(events, Contacts(), restarts_);
+  std::cout << text << "written: " << out_dir_ << "/{events.csv,summary.json,table.txt}\n";
+  std::ofstream(out_dir_ + "/table.txt") << text;
+  WriteCsv(events, out_dir_ + "/events.csv");
+  std::ofstream(out_dir_ + "/summary.json") << SummaryJson(events, Contacts(), goal_id_, restarts_).dump(2) << "\n";
 }
 
 TEST_F(ReplanLatency, BoxesAppearingAheadAreAvoidedOrStoppedFor) {
@@ -584,9 +661,9 @@ TEST_F(ReplanLatency, BoxesAppearingAheadAreAvoidedOrStoppedFor) {
     RunEvent(&*e);
     events.push_back(*e);
     std::cout << "event " << e->index << ": scan -> trajectory " << Fixed(e->ScanToTrajMs()) << " ms ("
-              << (e->miss.empty() ? e->kind : e->miss) << ")\n";
+              << (e->miss.empty() ? e->kind : e->miss) << ")" << std::endl;
   }
-  AddLogDetections(CollisionLogUtimes(ReadText(dir_ + "/planner.txt")), &events);
+  AddLogDetections(CollisionLogUtimes(PlannerLogs()), &events);
   Report(events);
   // Structure, not speed: every event happened and was seen, each measured latency is finite
   // and positive, the planner reacted at least once, and nothing was touched.
