@@ -10,7 +10,9 @@
 //   t_traj    the receive time of the first TRAJECTORY after t_scan whose whole base path keeps
 //             the base cylinder clear of the box (a replan around it, or a stop before it).
 // The box disappears a few seconds after the reaction; new goals come when a goal is reached
-// or fails. Events without a reaction within 5 s are misses (reported, never dropped).
+// or fails. Events without a reaction within 5 s are misses (reported, never dropped). When the
+// robot stands still through 3 goals (its plans from rest all failing) the graph is restarted,
+// and counted; contacts are summed over the restarts.
 //
 // ctest runs the smoke version (TOPAY_REPLAN_EVENTS unset: 3 events): it checks the structure
 // (events placed and seen, latencies finite, no contact), never the speed. The benchmark
