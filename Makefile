@@ -1,7 +1,7 @@
 # Two commands on a fresh Debian 12 machine:
 #   make demo   install what is missing, build, run the main job
 #   make test   install what is missing, build (with assertions), run every test
-.PHONY: all deps build build-test test test-fast demo graph bench clean
+.PHONY: all deps build build-test test test-fast demo graph bench bench-replan clean
 
 BUILD_DIR      ?= build
 TEST_BUILD_DIR ?= build-test
@@ -47,6 +47,18 @@ demo: build
 # namespace; Ctrl-C stops it. Run folder: out/runs/<date-time>/ (docs/running.md).
 graph: build
 	$(BUILD_DIR)/bin/topay-launch config/graphs/sim.yaml $(GRAPH_ARGS)
+
+# The replanning-latency benchmark of issue 18 (docs/benchmarks.md): sim + mapper + planner in a
+# private network namespace, REPLAN_EVENTS boxes appearing on the path ahead of the driving
+# robot; scan -> new trajectory, median and p95. Builds only what it runs, in the test build.
+# `make test` runs the same program's 3-event smoke case (structure only, never the speed).
+REPLAN_EVENTS ?= 20
+REPLAN_SEED   ?= 18
+bench-replan: deps
+	@cmake -S . -B $(TEST_BUILD_DIR) -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo \
+	  -DTOPAY_BUILD_BENCHMARKS=OFF >/dev/null
+	@cmake --build $(TEST_BUILD_DIR) -j $(JOBS) --target replan_latency_test topay-sim topay-mapper topay-planner
+	TOPAY_REPLAN_EVENTS=$(REPLAN_EVENTS) TOPAY_REPLAN_SEED=$(REPLAN_SEED) $(TEST_BUILD_DIR)/bin/replan_latency_test
 
 clean:
 	rm -rf $(BUILD_DIR) $(TEST_BUILD_DIR)
