@@ -17,8 +17,11 @@ int ClearBaseFootprint(const GridGeometry3& geometry, const Eigen::Vector2d& p_W
       for (int ix = cells.begin.x(); ix < cells.end.x(); ++ix) {
         const Eigen::Vector3d c = geometry.CellCenter(ix, iy, iz);
         std::uint8_t& state = (*states)[geometry.Index(ix, iy, iz)];
-        // Every voxel reaching into the cylinder's height (one straddling its top too).
-        if (c.z() - 0.5 * geometry.resolution_m >= base.height_m || (c.head<2>() - p_WB_m).norm() > base.radius_m ||
+        // Every voxel reaching into the cylinder: its bottom below the top, its square nearer
+        // the axis than the radius.
+        const double half = 0.5 * geometry.resolution_m;
+        const Eigen::Vector2d outside = ((c.head<2>() - p_WB_m).cwiseAbs().array() - half).max(0.0);
+        if (c.z() - half >= base.height_m || outside.norm() >= base.radius_m ||
             !VoxelBlocksPlanner(static_cast<VoxelState>(state), unknown)) {
           continue;
         }

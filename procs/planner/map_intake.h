@@ -57,11 +57,13 @@ class MapIntake {
   GridGeometry3 forwarded_geometry_;
 };
 
-/// Sets free every blocked voxel (VoxelBlocksPlanner) whose centre lies within the base
-/// cylinder's radius of p_WB and which reaches below the cylinder's top (a voxel straddling
-/// the top, too): the robot stands there, so what the map holds inside its own
-/// base is its own body seen by the LiDAR or a stale voxel (a plan from where the robot is must
-/// not fail on it; costmaps clear the footprint the same way). Returns the voxels cleared.
+/// Sets free every blocked voxel (VoxelBlocksPlanner) that reaches into the base cylinder
+/// standing at p_WB (its square nearer the axis than the radius, its bottom below the top):
+/// the robot stands there, so what the map holds inside its own base is its own body seen by
+/// the LiDAR, a stale voxel, or the conservative voxel of an obstacle touching the base's
+/// surface within a voxel (a plan from where the robot is must not fail on it; costmaps clear
+/// the footprint the same way). Only the exact check loses them: the fields keep them, so the
+/// optimizer still keeps its margins from them. Returns the voxels cleared.
 int ClearBaseFootprint(const GridGeometry3& geometry, const Eigen::Vector2d& p_WB_m,
                        const BaseCylinder& base, UnknownVoxelPolicy unknown,
                        std::vector<std::uint8_t>* states);

@@ -76,14 +76,16 @@ TEST(MapIntakeTest, BlockedBoxesNearCoverTheOccupiedVoxelsOfTheRegionOnly) {
 
 TEST(MapIntakeTest, ClearBaseFootprintFreesOnlyBlockedVoxelsInsideTheBase) {
   const GridGeometry3 g = testing::RoomGeometry();
-  // A small box inside the base at (1, 1), one just outside it, one above it, and a voxel
-  // straddling the base's top (z 0.15-0.20 m, the top at 0.155 m).
+  // A small box inside the base at (1, 1), one just outside it, one above it, a voxel
+  // straddling the base's top (z 0.15-0.20 m, the top at 0.155 m), and one whose centre is
+  // outside the radius (0.426 m from the axis, diagonally) while its square reaches 0.01 m into it.
   std::vector<std::uint8_t> states = testing::StatesOf(
       g, {MakeBox({1.1, 1.0, 0.05}, {0.1, 0.1, 0.1}), MakeBox({1.6, 1.0, 0.05}, {0.1, 0.1, 0.1}),
-          MakeBox({1.0, 1.0, 0.5}, {0.1, 0.1, 0.1}), MakeBox({0.725, 1.025, 0.175}, {0.05, 0.05, 0.05})});
+          MakeBox({1.0, 1.0, 0.5}, {0.1, 0.1, 0.1}), MakeBox({0.725, 1.025, 0.175}, {0.05, 0.05, 0.05}),
+          MakeBox({1.275, 1.325, 0.075}, {0.05, 0.05, 0.05})});
   const std::vector<std::uint8_t> before = states;
   const BaseCylinder base;  // radius 0.40 m, height 0.155 m
-  EXPECT_EQ(ClearBaseFootprint(g, {1.0, 1.0}, base, UnknownVoxelPolicy::kFree, &states), 9);
+  EXPECT_EQ(ClearBaseFootprint(g, {1.0, 1.0}, base, UnknownVoxelPolicy::kFree, &states), 10);
   const auto at = [&](double x, double y, double z) {
     const Eigen::Vector3i c = g.CellOf({x, y, z});
     return static_cast<VoxelState>(states[g.Index(c.x(), c.y(), c.z())]);
@@ -92,10 +94,11 @@ TEST(MapIntakeTest, ClearBaseFootprintFreesOnlyBlockedVoxelsInsideTheBase) {
   EXPECT_EQ(at(1.6, 1.0, 0.05), VoxelState::kOccupied);
   EXPECT_EQ(at(1.0, 1.0, 0.5), VoxelState::kOccupied);
   EXPECT_EQ(at(0.725, 1.025, 0.175), VoxelState::kFree);
+  EXPECT_EQ(at(1.275, 1.325, 0.075), VoxelState::kFree);
   // Nothing else changed.
   int changed = 0;
   for (std::size_t i = 0; i < states.size(); ++i) changed += states[i] != before[i];
-  EXPECT_EQ(changed, 9);
+  EXPECT_EQ(changed, 10);
 }
 
 }  // namespace
