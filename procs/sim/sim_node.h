@@ -28,7 +28,7 @@ namespace topay::simproc {
 struct SimNodeOptions {
   std::int64_t start_utime = 0;     ///< utime of sim time 0 (0: the wall clock when stepping starts)
   double rate = 1.0;                ///< real-time factor (0: as fast as possible)
-  int max_catch_up_steps = 50;
+  int max_catch_up_steps = 500;
   double status_rate_hz = 10.0;     ///< SIM_STATUS and the health, Hz (wall)
   double duration_s = 0.0;          ///< stop after this much sim time (0: run until stopped)
   std::string lidar_frame = "lidar";

@@ -18,7 +18,9 @@ struct SimOptions {
   std::uint64_t seed = 1;          ///< master seed: plant slip, pose noise, LiDAR, event jitter
   std::int64_t start_utime = 0;    ///< utime of sim time 0, us since the Unix epoch (0: wall clock at start)
   double rate = 1.0;               ///< real-time factor of the pacing (0: as fast as possible)
-  int max_catch_up_steps = 50;     ///< most plant steps run at one wake-up when late (then it lags)
+  int max_catch_up_steps = 500;    ///< most plant steps run at one wake-up when late (then it lags): 1 s, so a
+                                   ///< process stalled by a loaded machine catches up (the planner and the
+                                   ///< follower share the clock) instead of lagging for good
   std::string robot_urdf;          ///< robot URDF (empty: the shipped TopAY robot, config/robot/)
   std::string robot_yaml;          ///< robot YAML (empty: the shipped one)
   std::string scene = "tables";    ///< "tables", "cuboids" (generated) or a scene JSON file
