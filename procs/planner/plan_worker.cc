@@ -87,6 +87,15 @@ std::optional<PlanJobOutcome> PlanWorker::TakeResult() {
   return out;
 }
 
+std::optional<PlanJobOutcome> PlanWorker::WaitForResult(double timeout_s) {
+  std::unique_lock lock(mutex_);
+  result_ready_.wait_for(lock, Seconds(timeout_s), [this] { return !results_.empty(); });
+  if (results_.empty()) return std::nullopt;
+  PlanJobOutcome out = std::move(results_.front());
+  results_.pop_front();
+  return out;
+}
+
 bool PlanWorker::busy() const {
   std::lock_guard lock(mutex_);
   return running_ || queued_.has_value();
@@ -156,6 +165,16 @@ std::shared_ptr<const FieldSnapshot> PlanWorker::Fields(Clock::time_point deadli
   return fields_;
 }
 
+std::shared_ptr<const FieldSnapshot> PlanWorker::FieldsWithMap(std::int64_t map_seq, Clock::time_point deadline,
+                                                               std::stop_token stop) {
+  std::unique_lock lock(mutex_);
+  fields_soon_ = true;
+  wake_fields_.notify_all();
+  const auto has_map = [&] { return fields_ != nullptr && fields_->map_seq >= map_seq; };
+  fields_ready_.wait_until(lock, stop, deadline, has_map);
+  return has_map() ? fields_ : nullptr;
+}
+
 void PlanWorker::RunPlans(std::stop_token thread_stop) {
   while (!thread_stop.stop_requested()) {
     PlanJob job;
@@ -176,6 +195,7 @@ void PlanWorker::RunPlans(std::stop_token thread_stop) {
     ++counts_.plans;
     if (outcome.result.status == PlanStatus::kCancelled) ++counts_.cancelled;
     results_.push_back(std::move(outcome));
+    result_ready_.notify_all();
   }
 }
 
@@ -183,7 +203,10 @@ PlanJobOutcome PlanWorker::Execute(const PlanJob& job, std::stop_token job_stop)
   const auto deadline = Clock::now() + Seconds(job.time_limit_s);
   const Stopwatch setup;
   PlanJobOutcome out;
-  const std::shared_ptr<const FieldSnapshot> fields = job.map_states ? Fields(deadline, job_stop) : nullptr;
+  const std::shared_ptr<const FieldSnapshot> fields =
+      job.map_states == nullptr ? nullptr
+      : job.flush_all_map       ? FieldsWithMap(job.map_seq, deadline, job_stop)
+                                : Fields(deadline, job_stop);
   if (job.map_states == nullptr) {
     out = Failed(PlanStatus::kInvalidInput, "no map yet (no MAP_UPDATE snapshot received)");
   } else if (fields == nullptr) {

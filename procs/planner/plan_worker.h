@@ -54,6 +54,11 @@ struct PlanJob {
   std::shared_ptr<const std::vector<std::uint8_t>> map_states;
   GridGeometry3 map_geometry;
   std::int64_t map_seq = 0;
+  /// The plan waits until its fields include every map update submitted before it (a field
+  /// snapshot with map_seq >= this job's map_seq), asking the field thread to update at once,
+  /// instead of planning on the newest snapshot (deterministic mode: the fields then depend on
+  /// the messages, not on the field thread's timing).
+  bool flush_all_map = false;
 };
 
 /// The planner's fields after one update, shared read-only with the plans that use them.
@@ -104,6 +109,8 @@ class PlanWorker {
   void Cancel();
   /// The next finished job, if any (oldest first).
   std::optional<PlanJobOutcome> TakeResult();
+  /// Like TakeResult, but blocks up to timeout_s until a result is there.
+  std::optional<PlanJobOutcome> WaitForResult(double timeout_s);
   /// True while a job is queued or running.
   bool busy() const;
   PlanWorkerCounts counts() const;
@@ -116,6 +123,11 @@ class PlanWorker {
   std::shared_ptr<const FieldSnapshot> Fields(std::chrono::steady_clock::time_point deadline,
                                               std::stop_token stop);
   void FlushMap();
+  // The first snapshot whose map_seq >= `map_seq`, asking the field thread to update at once,
+  // waiting until `deadline` (null: none by then).
+  std::shared_ptr<const FieldSnapshot> FieldsWithMap(std::int64_t map_seq,
+                                                     std::chrono::steady_clock::time_point deadline,
+                                                     std::stop_token stop);
 
   const Kinematics& kinematics_;
   WholeBodyPlannerOptions options_;
@@ -124,7 +136,7 @@ class PlanWorker {
   PlannerWorld world_;  // the field thread's only
 
   mutable std::mutex mutex_;
-  std::condition_variable_any wake_plans_, wake_fields_, fields_ready_;
+  std::condition_variable_any wake_plans_, wake_fields_, fields_ready_, result_ready_;
   std::deque<MapWork> maps_;
   bool fields_soon_ = false;
   std::shared_ptr<const FieldSnapshot> fields_;

@@ -10,12 +10,15 @@
 // replanning budget and joins it there C2-continuously. If the trajectory ahead collides and
 // no new one comes before the robot must start braking, it publishes a stopping trajectory
 // along the current path and keeps trying.
+// In deterministic mode (options.deterministic) its clock is message time and its plans are
+// synchronous: messages wait in an inbox while a plan runs (docs/planner.md#replay).
 
 #include <cstdint>
 #include <deque>
 #include <map>
 #include <optional>
 #include <string>
+#include <variant>
 
 #include "core/optimization/trajectory_problem.h"
 #include "core/robot/kinematics.h"
@@ -25,6 +28,7 @@
 #include "procs/planner/goal_screen.h"
 #include "procs/planner/map_intake.h"
 #include "procs/planner/plan_worker.h"
+#include "procs/planner/planner_clock.h"
 #include "procs/planner/planner_process_options.h"
 #include "procs/planner/stop_planner.h"
 #include "procs/runtime/process_loop.h"
@@ -48,7 +52,12 @@ struct PlannerNodeCounts {
   std::int64_t plans_failed = 0, results_dropped_late = 0, results_colliding = 0;
   std::int64_t maps_rejected = 0, map_checks = 0;
   double map_check_ms_max = 0.0, map_check_ms_sum = 0.0;
+  /// Deterministic mode: messages handled from the inbox, and the most that waited at once.
+  std::int64_t inbox_handled = 0, inbox_max = 0;
 };
+
+/// A message of the planner's inputs, as it waits in the deterministic mode's inbox.
+using PlannerInput = std::variant<goal_t, robot_state_t, map_update_t, tracker_status_t>;
 
 class PlannerNode {
  public:
@@ -60,8 +69,12 @@ class PlannerNode {
   void OnRobotState(const robot_state_t& msg);
   void OnMap(const map_update_t& msg);
   void OnTrackerStatus(const tracker_status_t& msg);
-  /// Every 10 ms: plan results, the safe stop, retries, the periodic status.
+  /// Every 10 ms: plan results, the safe stop, retries, the periodic status. In deterministic
+  /// mode only the result of the plan the inbox waits for: the rest is decided per message.
   void Tick();
+  /// A message from the bus: handled at once on the wall clock; in deterministic mode queued
+  /// and handled in order, at its message time, as soon as no plan is running (HandleInbox).
+  void Receive(PlannerInput msg);
 
   const PlannerNodeCounts& counts() const { return counts_; }
   std::string Report() const;
@@ -75,6 +88,15 @@ class PlannerNode {
     int failed_attempts = 0;    // plans that failed before its first trajectory went out
   };
 
+  void Dispatch(const PlannerInput& msg);
+  // Deterministic mode: the queued messages in order, each followed by the decisions at its
+  // time (DecideAt), until one starts a plan (the others wait for its result: Tick).
+  void HandleInbox();
+  // The decisions that depend on time alone: the safe stop, the goal's end, a pending or
+  // retried plan, the periodic status.
+  void DecideAt(std::int64_t now);
+  // A failed or unusable plan: tried again after timing.retry_period_s while the goal stands.
+  void ScheduleRetry(std::int64_t now, const std::string& detail, const WholeBodyPlanResult* result);
   void RequestPlan(PlanTrigger trigger, const std::string& reason);
   bool FillStart(PlanTrigger trigger, std::int64_t now, PlanJob* job, std::string* error) const;
   void HandleOutcome(PlanJobOutcome outcome);
@@ -98,6 +120,9 @@ class PlannerNode {
   const Kinematics& kinematics_;
   const StopPlanner& stop_planner_;
   PlannerProcessOptions options_;
+  PlannerClock clock_;
+  std::deque<PlannerInput> inbox_;  // deterministic mode: messages waiting for the running plan
+  bool awaiting_plan_ = false;      // deterministic mode: a plan runs, the inbox waits for it
   ReachHeights reach_;
   MapIntake map_;
   std::optional<msgs::RobotStateEstimate> robot_;
