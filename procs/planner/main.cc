@@ -73,6 +73,8 @@ int main(int argc, char** argv) {
                options.deterministic.enabled ? "; DETERMINISTIC mode (message time, synchronous plans: replay "
                                                "and tests, not the robot)" : "");
   const int code = loop.Run();
+  // Deterministic mode: every message received gets its outputs, however soon it is stopped.
+  if (options.deterministic.enabled) node.FinishInbox();
   std::printf("%s", node.Report().c_str());
   std::fflush(stdout);
   return code;

@@ -59,10 +59,18 @@ PlannerNode::PlannerNode(procs::ProcessLoop* loop, PlanWorker* worker, const Kin
       map_(options.map.unknown) {
   const std::string goal(channels::GOAL), state(channels::ROBOT_STATE), map(channels::MAP_UPDATE),
       tracker(channels::TRACKER_STATUS);
-  loop->Subscribe<goal_t>(goal, [this](const goal_t& m) { Receive(m); });
-  loop->Subscribe<robot_state_t>(state, [this](const robot_state_t& m) { Receive(m); });
-  loop->Subscribe<map_update_t>(map, [this](const map_update_t& m) { Receive(m); });
-  loop->Subscribe<tracker_status_t>(tracker, [this](const tracker_status_t& m) { Receive(m); });
+  const std::vector<lcm::Subscription*> subscriptions = {
+      loop->Subscribe<goal_t>(goal, [this](const goal_t& m) { Receive(m); }),
+      loop->Subscribe<robot_state_t>(state, [this](const robot_state_t& m) { Receive(m); }),
+      loop->Subscribe<map_update_t>(map, [this](const map_update_t& m) { Receive(m); }),
+      loop->Subscribe<tracker_status_t>(tracker, [this](const tracker_status_t& m) { Receive(m); })};
+  if (clock_.message_time()) {
+    // Every input counts: LCM's default queue (30 messages not yet handled) would drop some
+    // while the loop works through a backlog.
+    for (lcm::Subscription* s : subscriptions) {
+      if (s != nullptr) s->setQueueCapacity(0);  // 0: no limit
+    }
+  }
   loop->AddTimer(0.01, [this] { Tick(); });
   status_.state = planner_status_t::IDLE;
   loop->SetHealth(heartbeat_t::OK, "waiting for a goal");
@@ -86,14 +94,21 @@ void PlannerNode::Dispatch(const PlannerInput& msg) {
 }
 
 void PlannerNode::HandleInbox() {
-  while (!awaiting_plan_ && !inbox_.empty()) {
+  // A long backlog is worked through in slices (the rest in the next Tick), so that the loop
+  // keeps reading the bus and heartbeating; only when a message is handled depends on the
+  // wall clock, never what is decided.
+  constexpr double kSliceMs = 50.0;
+  const Stopwatch slice;
+  while (!awaiting_plan_ && !inbox_.empty() && slice.ElapsedMs() < kSliceMs) {
     const PlannerInput msg = std::move(inbox_.front());
     inbox_.pop_front();
     ++counts_.inbox_handled;
+    ++counts_.inbox_handled_by_channel[msg.index()];
     clock_.OnMessage(std::visit([](const auto& m) { return m.utime; }, msg));
     Dispatch(msg);
     if (!awaiting_plan_) DecideAt(clock_.Now());  // else after its result (Tick)
   }
+  UpdateHealth();  // the heartbeat says how far it is (a replay waits for "0 waiting")
 }
 
 void PlannerNode::OnGoal(const goal_t& msg) {
@@ -295,17 +310,39 @@ void PlannerNode::RequestPlan(PlanTrigger trigger, const std::string& reason) {
 
 void PlannerNode::Tick() {
   if (clock_.message_time()) {
-    if (!awaiting_plan_) return;
-    std::optional<PlanJobOutcome> outcome = worker_->TakeResult();
-    if (!outcome) return;
-    awaiting_plan_ = false;
-    HandleOutcome(std::move(*outcome));
-    if (!awaiting_plan_) DecideAt(clock_.Now());  // what the message that asked for it left
-    HandleInbox();
+    if (!awaiting_plan_) {
+      HandleInbox();  // the rest of a backlog
+    } else if (std::optional<PlanJobOutcome> outcome = worker_->TakeResult()) {
+      HandleAwaitedOutcome(std::move(*outcome));
+    }
     return;
   }
   while (std::optional<PlanJobOutcome> outcome = worker_->TakeResult()) HandleOutcome(std::move(*outcome));
   DecideAt(clock_.Now());
+}
+
+void PlannerNode::HandleAwaitedOutcome(PlanJobOutcome outcome) {
+  awaiting_plan_ = false;
+  HandleOutcome(std::move(outcome));
+  if (!awaiting_plan_) DecideAt(clock_.Now());  // what the message that asked for it left
+  HandleInbox();
+}
+
+std::size_t PlannerNode::FinishInbox() {
+  HandleInbox();
+  while (awaiting_plan_ || !inbox_.empty()) {
+    if (!awaiting_plan_) {
+      HandleInbox();
+      continue;
+    }
+    std::optional<PlanJobOutcome> outcome = worker_->WaitForResult(options_.deterministic.time_limit_s + 5.0);
+    if (!outcome) {
+      spdlog::error("deterministic mode: no plan result at the end: {} messages left unhandled", inbox_.size());
+      break;
+    }
+    HandleAwaitedOutcome(std::move(*outcome));
+  }
+  return inbox_.size();
 }
 
 void PlannerNode::DecideAt(std::int64_t now) {
@@ -500,10 +537,14 @@ void PlannerNode::UpdateHealth() {
   const PlanWorkerCounts w = worker_->counts();
   const std::string tracker =
       tracker_ ? fmt::format("; tracker on {}", tracker_->trajectory_id) : std::string("; no TRACKER_STATUS");
+  const std::string inbox =
+      clock_.message_time() ? fmt::format("; inputs {} handled, {} waiting{}", counts_.inbox_handled, inbox_.size(),
+                                          awaiting_plan_ ? ", a plan running" : "")
+                            : std::string();
   loop_->SetHealth(status_.state == planner_status_t::STOPPING ? heartbeat_t::WARN : heartbeat_t::OK,
-                   fmt::format("goal {} {}; trajectory {}; replans {}; map seq {}; field update {:.0f} ms{}",
+                   fmt::format("goal {} {}; trajectory {}; replans {}; map seq {}; field update {:.0f} ms{}{}",
                                status_.goal_id, kStates[s], status_.trajectory_id, status_.replans,
-                               map_.receiver().map_seq(), w.last_flush_ms, tracker));
+                               map_.receiver().map_seq(), w.last_flush_ms, tracker, inbox));
 }
 
 std::string PlannerNode::Report() const {
@@ -523,8 +564,10 @@ std::string PlannerNode::Report() const {
                      counts_.map_check_ms_max, counts_.maps_rejected, w.flushes, w.last_flush_ms,
                      w.max_flush_ms);
   if (clock_.message_time()) {
-    out += fmt::format("  deterministic: {} messages handled in message time, at most {} waiting for a plan\n",
-                       counts_.inbox_handled, counts_.inbox_max);
+    const auto& n = counts_.inbox_handled_by_channel;
+    out += fmt::format("  deterministic: {} messages handled in message time (GOAL {}, ROBOT_STATE {}, MAP_UPDATE {}, "
+                       "TRACKER_STATUS {}), at most {} waiting for a plan\n",
+                       counts_.inbox_handled, n[0], n[1], n[2], n[3], counts_.inbox_max);
   }
   return out;
 }

@@ -13,6 +13,7 @@
 // In deterministic mode (options.deterministic) its clock is message time and its plans are
 // synchronous: messages wait in an inbox while a plan runs (docs/planner.md#replay).
 
+#include <array>
 #include <cstdint>
 #include <deque>
 #include <map>
@@ -52,8 +53,10 @@ struct PlannerNodeCounts {
   std::int64_t plans_failed = 0, results_dropped_late = 0, results_colliding = 0;
   std::int64_t maps_rejected = 0, map_checks = 0;
   double map_check_ms_max = 0.0, map_check_ms_sum = 0.0;
-  /// Deterministic mode: messages handled from the inbox, and the most that waited at once.
+  /// Deterministic mode: messages handled from the inbox (all, and by PlannerInput's
+  /// alternative: GOAL, ROBOT_STATE, MAP_UPDATE, TRACKER_STATUS), and the most that waited.
   std::int64_t inbox_handled = 0, inbox_max = 0;
+  std::array<std::int64_t, 4> inbox_handled_by_channel{};
 };
 
 /// A message of the planner's inputs, as it waits in the deterministic mode's inbox.
@@ -75,6 +78,11 @@ class PlannerNode {
   /// A message from the bus: handled at once on the wall clock; in deterministic mode queued
   /// and handled in order, at its message time, as soon as no plan is running (HandleInbox).
   void Receive(PlannerInput msg);
+  /// Deterministic mode, once the loop has stopped: handles what is left in the inbox, waiting
+  /// for each plan (up to deterministic.time_limit_s + 5 s), so that every message received has
+  /// its outputs whenever the process is stopped. Returns the messages still left (0 unless a
+  /// plan never came back).
+  std::size_t FinishInbox();
 
   const PlannerNodeCounts& counts() const { return counts_; }
   std::string Report() const;
@@ -92,6 +100,9 @@ class PlannerNode {
   // Deterministic mode: the queued messages in order, each followed by the decisions at its
   // time (DecideAt), until one starts a plan (the others wait for its result: Tick).
   void HandleInbox();
+  // Deterministic mode: the result of the plan the inbox waited for, then what its message
+  // left to decide.
+  void HandleAwaitedOutcome(PlanJobOutcome outcome);
   // The decisions that depend on time alone: the safe stop, the goal's end, a pending or
   // retried plan, the periodic status.
   void DecideAt(std::int64_t now);
