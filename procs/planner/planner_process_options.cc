@@ -136,8 +136,8 @@ void AdaptPlannerOptions(const PlannerProcessOptions& o, WholeBodyPlannerOptions
   DeterministicBudgets budgets;
   budgets.prm_samples = o.deterministic.prm_samples;
   budgets.rrt_iterations = o.deterministic.rrt_iterations;
+  planner->time_limit_s = o.deterministic.time_limit_s;  // first: MakeDeterministic bounds by it
   MakeDeterministic(planner, budgets);
-  planner->time_limit_s = o.deterministic.time_limit_s;
 }
 
 double FieldUpdatePeriod(const PlannerProcessOptions& o) {
