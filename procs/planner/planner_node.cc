@@ -311,7 +311,7 @@ void PlannerNode::RequestPlan(PlanTrigger trigger, const std::string& reason) {
 void PlannerNode::Tick() {
   if (clock_.message_time()) {
     if (!awaiting_plan_) {
-      HandleInbox();  // the rest of a backlog
+      if (!inbox_.empty()) HandleInbox();  // the rest of a backlog
     } else if (std::optional<PlanJobOutcome> outcome = worker_->TakeResult()) {
       HandleAwaitedOutcome(std::move(*outcome));
     }
