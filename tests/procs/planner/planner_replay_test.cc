@@ -16,6 +16,7 @@
 #include <regex>
 
 #include "graph_test_support.h"
+#include "tests/procs/planner/planner_replay_support.h"
 #include "core/collision/scene_clearance.h"
 #include "core/common/random.h"
 #include "core/io/robot_loader.h"
@@ -229,31 +230,11 @@ class PlannerReplay : public testing::Test {
     listener_->Spin(0.2);  // its last messages
     return status;
   }
-  // Until the heartbeat of planner `name` (deterministic mode) says its inbox is empty, no plan
-  // runs and (if `handled` >= 0) it has handled `handled` inputs, twice in a row (the second a
-  // heartbeat period later: nothing came in between).
   bool WaitUntilInboxEmpty(const std::string& name, double timeout_s, std::int64_t handled = -1) {
-    const std::string wanted = handled >= 0 ? "inputs " + std::to_string(handled) + " handled, 0 waiting" : "0 waiting";
-    std::string last_status;
-    std::int64_t last_seq = -1;
-    bool done = false;
-    return listener_->SpinUntil([&] {
-      const auto hb = listener_->last.find(name);
-      if (done || hb == listener_->last.end() || hb->second.seq == last_seq) return done;
-      const std::string& status = hb->second.status;
-      const bool idle = status.find(wanted) != std::string::npos && status.find("plan running") == std::string::npos;
-      done = idle && status == last_status;
-      last_status = status;
-      last_seq = hb->second.seq;
-      return done;
-    }, timeout_s);
+    return test::WaitUntilInboxEmpty(listener_.get(), name, timeout_s, handled);
   }
-  // The messages a deterministic planner's exit report says it handled (-1: no report).
   std::int64_t MessagesHandled(const std::string& name) const {
-    const std::string text = ReadText(dir_ + "/" + name + ".txt");
-    const std::string key = "deterministic: ";
-    const std::size_t at = text.rfind(key);
-    return at == std::string::npos ? -1 : std::stoll(text.substr(at + key.size()));
+    return test::MessagesHandled(ReadText(dir_ + "/" + name + ".txt"));
   }
   std::string Logs() const {
     std::string text;
