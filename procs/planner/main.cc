@@ -52,7 +52,7 @@ int main(int argc, char** argv) {
   try {
     options = ResolveOptions(process);
     planner_options = LoadPlannerOptions(options.planner_config);
-    planner_options.validator.obstacle_margin_m += options.map.validator_margin_m;
+    AdaptPlannerOptions(options, &planner_options);
     model = std::make_unique<RobotModel>(LoadRobotModel(options.robot_urdf, options.robot_yaml));
     kinematics = std::make_unique<Kinematics>(*model);
   } catch (const std::exception& e) {  // ConfigError and the robot files' errors
@@ -65,13 +65,17 @@ int main(int argc, char** argv) {
     return procs::kExitConfigError;
   }
   const StopPlanner stop_planner(*model, planner_options.base_limits.value_or(model->base_limits));
-  PlanWorker worker(*kinematics, planner_options, options.map.unknown, options.map.field_update_period_s,
+  PlanWorker worker(*kinematics, planner_options, options.map.unknown, FieldUpdatePeriod(options),
                     options.map.slice_m);
   PlannerNode node(&loop, &worker, *kinematics, stop_planner, options);
-  spdlog::info("{}: robot {}, planner {}, unknown voxels {}, replanning budget {:.2f} s", process.name,
+  spdlog::info("{}: robot {}, planner {}, unknown voxels {}, replanning budget {:.2f} s{}", process.name,
                model->name, options.planner_config, ToString(options.map.unknown),
-               options.timing.replan_budget_s);
+               options.timing.replan_budget_s,
+               options.deterministic.enabled ? "; DETERMINISTIC mode (message time, synchronous plans: replay "
+                                               "and tests, not the robot)" : "");
   const int code = loop.Run();
+  // Deterministic mode: every message received gets its outputs, however soon it is stopped.
+  if (options.deterministic.enabled) node.FinishInbox();
   std::printf("%s", node.Report().c_str());
   std::fflush(stdout);
   return code;

@@ -54,17 +54,61 @@ PlannerNode::PlannerNode(procs::ProcessLoop* loop, PlanWorker* worker, const Kin
       kinematics_(kinematics),
       stop_planner_(stop_planner),
       options_(options),
+      clock_(options.deterministic.enabled ? ClockSource::kMessages : ClockSource::kWall),
       reach_(ComputeReachHeights(kinematics)),
       map_(options.map.unknown) {
   const std::string goal(channels::GOAL), state(channels::ROBOT_STATE), map(channels::MAP_UPDATE),
       tracker(channels::TRACKER_STATUS);
-  loop->Subscribe<goal_t>(goal, [this](const goal_t& m) { OnGoal(m); });
-  loop->Subscribe<robot_state_t>(state, [this](const robot_state_t& m) { OnRobotState(m); });
-  loop->Subscribe<map_update_t>(map, [this](const map_update_t& m) { OnMap(m); });
-  loop->Subscribe<tracker_status_t>(tracker, [this](const tracker_status_t& m) { OnTrackerStatus(m); });
+  const std::vector<lcm::Subscription*> subscriptions = {
+      loop->Subscribe<goal_t>(goal, [this](const goal_t& m) { Receive(m); }),
+      loop->Subscribe<robot_state_t>(state, [this](const robot_state_t& m) { Receive(m); }),
+      loop->Subscribe<map_update_t>(map, [this](const map_update_t& m) { Receive(m); }),
+      loop->Subscribe<tracker_status_t>(tracker, [this](const tracker_status_t& m) { Receive(m); })};
+  if (clock_.message_time()) {
+    // Every input counts: LCM's default queue (30 messages not yet handled) would drop some
+    // while the loop works through a backlog.
+    for (lcm::Subscription* s : subscriptions) {
+      if (s != nullptr) s->setQueueCapacity(0);  // 0: no limit
+    }
+  }
   loop->AddTimer(0.01, [this] { Tick(); });
   status_.state = planner_status_t::IDLE;
   loop->SetHealth(heartbeat_t::OK, "waiting for a goal");
+}
+
+void PlannerNode::Receive(PlannerInput msg) {
+  if (!clock_.message_time()) {
+    Dispatch(msg);
+    return;
+  }
+  inbox_.push_back(std::move(msg));
+  counts_.inbox_max = std::max<std::int64_t>(counts_.inbox_max, static_cast<std::int64_t>(inbox_.size()));
+  HandleInbox();
+}
+
+void PlannerNode::Dispatch(const PlannerInput& msg) {
+  if (const auto* m = std::get_if<goal_t>(&msg)) OnGoal(*m);
+  if (const auto* m = std::get_if<robot_state_t>(&msg)) OnRobotState(*m);
+  if (const auto* m = std::get_if<map_update_t>(&msg)) OnMap(*m);
+  if (const auto* m = std::get_if<tracker_status_t>(&msg)) OnTrackerStatus(*m);
+}
+
+void PlannerNode::HandleInbox() {
+  // A long backlog is worked through in slices (the rest in the next Tick), so that the loop
+  // keeps reading the bus and heartbeating; only when a message is handled depends on the
+  // wall clock, never what is decided.
+  constexpr double kSliceMs = 50.0;
+  const Stopwatch slice;
+  while (!awaiting_plan_ && !inbox_.empty() && slice.ElapsedMs() < kSliceMs) {
+    const PlannerInput msg = std::move(inbox_.front());
+    inbox_.pop_front();
+    ++counts_.inbox_handled;
+    ++counts_.inbox_handled_by_channel[msg.index()];
+    clock_.OnMessage(std::visit([](const auto& m) { return m.utime; }, msg));
+    Dispatch(msg);
+    if (!awaiting_plan_) DecideAt(clock_.Now());  // else after its result (Tick)
+  }
+  UpdateHealth();  // the heartbeat says how far it is (a replay waits for "0 waiting")
 }
 
 void PlannerNode::OnGoal(const goal_t& msg) {
@@ -126,11 +170,18 @@ void PlannerNode::OnMap(const map_update_t& msg) {
     spdlog::warn("MAP_UPDATE rejected: {}", result.reason);
     return;
   }
-  if (work) worker_->SubmitMap(std::move(*work));
-  if (result.outcome == msgs::MapUpdateOutcome::kSnapshotApplied ||
-      result.outcome == msgs::MapUpdateOutcome::kDeltaApplied) {
-    CheckActiveAgainstMap(procs::NowUtime());
+  const bool applied = result.outcome == msgs::MapUpdateOutcome::kSnapshotApplied ||
+                       result.outcome == msgs::MapUpdateOutcome::kDeltaApplied;
+  if (!work && applied && clock_.message_time()) {
+    // A snapshot with nothing new still advances the map's sequence number: the fields must
+    // reach it for a plan that waits for every map update (PlanJob::flush_all_map).
+    work = MapWork{};
+    work->geometry = map_.receiver().geometry();
+    work->map_seq = map_.receiver().map_seq();
+    work->map_utime = map_.receiver().utime();
   }
+  if (work) worker_->SubmitMap(std::move(*work));
+  if (applied) CheckActiveAgainstMap(clock_.Now());
 }
 
 void PlannerNode::OnTrackerStatus(const tracker_status_t& msg) { tracker_ = msg; }
@@ -209,7 +260,9 @@ bool PlannerNode::FillStart(PlanTrigger trigger, std::int64_t now, PlanJob* job,
   job->start = MakeTrajectorySample(robot_->state.num_joints());  // at rest: rates zero
   job->start.state = robot_->state;
   job->from_rest = true;
-  job->t0_utime = 0;
+  // On the wall clock it starts when it is published; in message time the plan's own time
+  // does not exist, so it starts a replanning budget after it was asked for, like a replan.
+  job->t0_utime = clock_.message_time() ? t0 : 0;
   job->time_limit_s = t.from_rest_time_limit_s;
   return true;
 }
@@ -222,7 +275,7 @@ void PlannerNode::RequestPlan(PlanTrigger trigger, const std::string& reason, bo
   }
   PlanJob job;
   std::string error;
-  const std::int64_t now = procs::NowUtime();
+  const std::int64_t now = clock_.Now();
   if (!FillStart(trigger, now, &job, &error)) {
     spdlog::warn("goal {}: cannot plan yet: {}", goal_->goal.goal_id, error);
     retry_at_utime_ = now + Micros(options_.timing.retry_period_s);
@@ -237,6 +290,10 @@ void PlannerNode::RequestPlan(PlanTrigger trigger, const std::string& reason, bo
   job.certify_reachability = !goal_->planned_once && options_.goals.certify_reachability;
   job.map_seq = map_.receiver().map_seq();
   job.fresh_regions_xy_W_m = FreshRegions(job.start);
+  if (clock_.message_time()) {
+    job.flush_all_map = true;  // fields from every map update handled before it
+    job.time_limit_s = options_.deterministic.time_limit_s;
+  }
   ++counts_.triggers[trigger];
   if (trigger != PlanTrigger::kGoal && trigger != PlanTrigger::kRetry) ++goal_->replans;
   retry_at_utime_ = 0;
@@ -244,11 +301,47 @@ void PlannerNode::RequestPlan(PlanTrigger trigger, const std::string& reason, bo
                job.from_rest ? "from rest" : "moving start", job.time_limit_s);
   PublishStatus(planner_status_t::PLANNING, "", job.trigger);
   worker_->SubmitPlan(std::move(job));
+  awaiting_plan_ = clock_.message_time();
 }
 
 void PlannerNode::Tick() {
+  if (clock_.message_time()) {
+    if (!awaiting_plan_) {
+      if (!inbox_.empty()) HandleInbox();  // the rest of a backlog
+    } else if (std::optional<PlanJobOutcome> outcome = worker_->TakeResult()) {
+      HandleAwaitedOutcome(std::move(*outcome));
+    }
+    return;
+  }
   while (std::optional<PlanJobOutcome> outcome = worker_->TakeResult()) HandleOutcome(std::move(*outcome));
-  const std::int64_t now = procs::NowUtime();
+  DecideAt(clock_.Now());
+}
+
+void PlannerNode::HandleAwaitedOutcome(PlanJobOutcome outcome) {
+  awaiting_plan_ = false;
+  HandleOutcome(std::move(outcome));
+  if (!awaiting_plan_) DecideAt(clock_.Now());  // what the message that asked for it left
+  HandleInbox();
+}
+
+std::size_t PlannerNode::FinishInbox() {
+  HandleInbox();
+  while (awaiting_plan_ || !inbox_.empty()) {
+    if (!awaiting_plan_) {
+      HandleInbox();
+      continue;
+    }
+    std::optional<PlanJobOutcome> outcome = worker_->WaitForResult(options_.deterministic.time_limit_s + 5.0);
+    if (!outcome) {
+      spdlog::error("deterministic mode: no plan result at the end: {} messages left unhandled", inbox_.size());
+      break;
+    }
+    HandleAwaitedOutcome(std::move(*outcome));
+  }
+  return inbox_.size();
+}
+
+void PlannerNode::DecideAt(std::int64_t now) {
   MaybeSafeStop(now);
   MaybeFinishGoal(now);
   if (pending_ && !worker_->busy()) {
@@ -269,12 +362,13 @@ void PlannerNode::HandleOutcome(PlanJobOutcome outcome) {
       outcome.job.goal_id != goal_->goal.goal_id) {
     return;  // superseded (a newer job or goal); its cancel was reported
   }
-  const std::int64_t now = procs::NowUtime();
+  const std::int64_t now = clock_.Now();
   if (!outcome.result.success()) {
     HandleFailure(outcome);
     return;
   }
-  if (!outcome.job.from_rest && now > outcome.job.t0_utime) {
+  // In message time a moving start is never late: it takes effect at its t0 by definition.
+  if (!clock_.message_time() && !outcome.job.from_rest && now > outcome.job.t0_utime) {
     ++counts_.results_dropped_late;
     spdlog::warn("goal {}: plan {} came {:.0f} ms after its start time: dropped", outcome.job.goal_id,
                  outcome.job.job_id, 1e-3 * (now - outcome.job.t0_utime));
@@ -289,11 +383,17 @@ void PlannerNode::HandleOutcome(PlanJobOutcome outcome) {
     return;
   }
   ++counts_.results_colliding;
+  const std::string reason =
+      fmt::format("plan {} collides with the newer map at {:.2f} s", outcome.job.job_id, hit->t_s);
+  if (clock_.message_time()) {
+    // Its fields held every map update and no message came while it planned: the same map
+    // would give the same plan.
+    ScheduleRetry(now, reason, &outcome.result);
+    return;
+  }
   RememberCollision(*outcome.result.trajectory, hit->t_s);
   const std::int64_t start = outcome.job.from_rest ? now : outcome.job.t0_utime;
   const std::int64_t at = start + Micros(hit->t_s);
-  const std::string reason =
-      fmt::format("plan {} collides with the newer map at {:.2f} s", outcome.job.job_id, hit->t_s);
   if (1e-6 * (at - now) > options_.timing.publish_collision_horizon_s) {
     // Far enough ahead to replan before a stop could be due: out it goes, replanned at once.
     PublishTrajectory(outcome, now);
@@ -332,16 +432,19 @@ void PlannerNode::HandleFailure(const PlanJobOutcome& outcome) {
     return;
   }
   // A replan while moving: keep trying; the safe stop guards the trajectory under way.
-  retry_at_utime_ = procs::NowUtime() + Micros(options_.timing.retry_period_s);
-  PublishStatus(collision_utime_ ? planner_status_t::STOPPING : planner_status_t::PLANNING, "",
-                "replan failed, retrying: " + r.failure_reason, &r);
+  ScheduleRetry(clock_.Now(), "replan failed, retrying: " + r.failure_reason, &r);
+}
+
+void PlannerNode::ScheduleRetry(std::int64_t now, const std::string& detail, const WholeBodyPlanResult* result) {
+  retry_at_utime_ = now + Micros(options_.timing.retry_period_s);
+  PublishStatus(collision_utime_ ? planner_status_t::STOPPING : planner_status_t::PLANNING, "", detail, result);
 }
 
 void PlannerNode::PublishTrajectory(const PlanJobOutcome& outcome, std::int64_t now) {
   ActiveTrajectory active;
   active.trajectory_id = ++trajectory_seq_;
   active.goal_id = outcome.job.goal_id;
-  active.start_utime = outcome.job.from_rest ? now : outcome.job.t0_utime;
+  active.start_utime = outcome.job.t0_utime != 0 ? outcome.job.t0_utime : now;  // 0: from rest, now
   active.trajectory = std::make_shared<const ArcYawTrajectory>(*outcome.result.trajectory);
   MakeActive(std::move(active));
   goal_->planned_once = true;
@@ -355,7 +458,7 @@ void PlannerNode::PublishActive(const char* what) {
   TrajectorySample start = t.MakePoint();
   t.Evaluate(0.0, &start);
   msgs::PolyTrajectory poly = msgs::FromArcYaw(t, {start.state.x_m, start.state.y_m});
-  poly.utime = procs::NowUtime();
+  poly.utime = clock_.Now();
   poly.trajectory_id = active_->trajectory_id;
   poly.goal_id = active_->goal_id;
   poly.start_utime = active_->start_utime;
@@ -435,7 +538,7 @@ void PlannerNode::MaybeFinishGoal(std::int64_t now) {
 
 void PlannerNode::PublishStatus(std::int8_t state, const std::string& reason, const std::string& detail,
                                 const WholeBodyPlanResult* result) {
-  status_.utime = procs::NowUtime();
+  status_.utime = clock_.Now();
   status_.state = state;
   status_.goal_id = goal_ ? goal_->goal.goal_id : status_.goal_id;
   status_.trajectory_id = active_ ? active_->trajectory_id : 0;
@@ -459,10 +562,14 @@ void PlannerNode::UpdateHealth() {
   const PlanWorkerCounts w = worker_->counts();
   const std::string tracker =
       tracker_ ? fmt::format("; tracker on {}", tracker_->trajectory_id) : std::string("; no TRACKER_STATUS");
+  const std::string inbox =
+      clock_.message_time() ? fmt::format("; inputs {} handled, {} waiting{}", counts_.inbox_handled, inbox_.size(),
+                                          awaiting_plan_ ? ", a plan running" : "")
+                            : std::string();
   loop_->SetHealth(status_.state == planner_status_t::STOPPING ? heartbeat_t::WARN : heartbeat_t::OK,
                    fmt::format("goal {} {}; trajectory {}; replans {}; map seq {}; field slice {:.0f} ms, {} changes "
-                               "pending{}", status_.goal_id, kStates[s], status_.trajectory_id, status_.replans,
-                               map_.receiver().map_seq(), w.last_flush_ms, w.pending_changes, tracker));
+                               "pending{}{}", status_.goal_id, kStates[s], status_.trajectory_id, status_.replans,
+                               map_.receiver().map_seq(), w.last_flush_ms, w.pending_changes, tracker, inbox));
 }
 
 std::string PlannerNode::Report() const {
@@ -481,6 +588,12 @@ std::string PlannerNode::Report() const {
                      counts_.map_checks > 0 ? counts_.map_check_ms_sum / counts_.map_checks : 0.0,
                      counts_.map_check_ms_max, counts_.maps_rejected, w.flushes, w.last_flush_ms,
                      w.max_flush_ms, w.max_fresh_ms);
+  if (clock_.message_time()) {
+    const auto& n = counts_.inbox_handled_by_channel;
+    out += fmt::format("  deterministic: {} messages handled in message time (GOAL {}, ROBOT_STATE {}, MAP_UPDATE {}, "
+                       "TRACKER_STATUS {}), at most {} waiting for a plan\n",
+                       counts_.inbox_handled, n[0], n[1], n[2], n[3], counts_.inbox_max);
+  }
   return out;
 }
 

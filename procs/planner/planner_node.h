@@ -10,12 +10,16 @@
 // replanning budget and joins it there C2-continuously. If the trajectory ahead collides and
 // no new one comes before the robot must start braking, it publishes a stopping trajectory
 // along the current path and keeps trying.
+// In deterministic mode (options.deterministic) its clock is message time and its plans are
+// synchronous: messages wait in an inbox while a plan runs (docs/planner.md#replay).
 
+#include <array>
 #include <cstdint>
 #include <deque>
 #include <map>
 #include <optional>
 #include <string>
+#include <variant>
 #include <vector>
 
 #include <Eigen/Geometry>
@@ -28,6 +32,7 @@
 #include "procs/planner/goal_screen.h"
 #include "procs/planner/map_intake.h"
 #include "procs/planner/plan_worker.h"
+#include "procs/planner/planner_clock.h"
 #include "procs/planner/planner_process_options.h"
 #include "procs/planner/stop_planner.h"
 #include "procs/runtime/process_loop.h"
@@ -51,7 +56,14 @@ struct PlannerNodeCounts {
   std::int64_t plans_failed = 0, results_dropped_late = 0, results_colliding = 0;
   std::int64_t maps_rejected = 0, map_checks = 0;
   double map_check_ms_max = 0.0, map_check_ms_sum = 0.0;
+  /// Deterministic mode: messages handled from the inbox (all, and by PlannerInput's
+  /// alternative: GOAL, ROBOT_STATE, MAP_UPDATE, TRACKER_STATUS), and the most that waited.
+  std::int64_t inbox_handled = 0, inbox_max = 0;
+  std::array<std::int64_t, 4> inbox_handled_by_channel{};
 };
+
+/// A message of the planner's inputs, as it waits in the deterministic mode's inbox.
+using PlannerInput = std::variant<goal_t, robot_state_t, map_update_t, tracker_status_t>;
 
 class PlannerNode {
  public:
@@ -63,8 +75,17 @@ class PlannerNode {
   void OnRobotState(const robot_state_t& msg);
   void OnMap(const map_update_t& msg);
   void OnTrackerStatus(const tracker_status_t& msg);
-  /// Every 10 ms: plan results, the safe stop, retries, the periodic status.
+  /// Every 10 ms: plan results, the safe stop, retries, the periodic status. In deterministic
+  /// mode only the result of the plan the inbox waits for: the rest is decided per message.
   void Tick();
+  /// A message from the bus: handled at once on the wall clock; in deterministic mode queued
+  /// and handled in order, at its message time, as soon as no plan is running (HandleInbox).
+  void Receive(PlannerInput msg);
+  /// Deterministic mode, once the loop has stopped: handles what is left in the inbox, waiting
+  /// for each plan (up to deterministic.time_limit_s + 5 s), so that every message received has
+  /// its outputs whenever the process is stopped. Returns the messages still left (0 unless a
+  /// plan never came back).
+  std::size_t FinishInbox();
 
   const PlannerNodeCounts& counts() const { return counts_; }
   std::string Report() const;
@@ -78,6 +99,18 @@ class PlannerNode {
     int failed_attempts = 0;    // plans that failed before its first trajectory went out
   };
 
+  void Dispatch(const PlannerInput& msg);
+  // Deterministic mode: the queued messages in order, each followed by the decisions at its
+  // time (DecideAt), until one starts a plan (the others wait for its result: Tick).
+  void HandleInbox();
+  // Deterministic mode: the result of the plan the inbox waited for, then what its message
+  // left to decide.
+  void HandleAwaitedOutcome(PlanJobOutcome outcome);
+  // The decisions that depend on time alone: the safe stop, the goal's end, a pending or
+  // retried plan, the periodic status.
+  void DecideAt(std::int64_t now);
+  // A failed or unusable plan: tried again after timing.retry_period_s while the goal stands.
+  void ScheduleRetry(std::int64_t now, const std::string& detail, const WholeBodyPlanResult* result);
   // Starts a plan now (a goal, or `preempt`: cancelling the one in progress) or after the plan
   // in progress.
   void RequestPlan(PlanTrigger trigger, const std::string& reason, bool preempt = false);
@@ -108,6 +141,9 @@ class PlannerNode {
   const Kinematics& kinematics_;
   const StopPlanner& stop_planner_;
   PlannerProcessOptions options_;
+  PlannerClock clock_;
+  std::deque<PlannerInput> inbox_;  // deterministic mode: messages waiting for the running plan
+  bool awaiting_plan_ = false;      // deterministic mode: a plan runs, the inbox waits for it
   ReachHeights reach_;
   MapIntake map_;
   std::optional<msgs::RobotStateEstimate> robot_;

@@ -5,6 +5,7 @@
 
 #include "core/common/error.h"
 #include "core/io/yaml_section.h"
+#include "core/planner/deterministic_options.h"
 
 namespace topay::planner {
 namespace {
@@ -64,6 +65,16 @@ void ReadGoals(YamlSection s, GoalCheckOptions* o) {
   s.Finish();
 }
 
+void ReadDeterministic(YamlSection s, DeterministicModeOptions* o) {
+  s.Read("enabled", &o->enabled);
+  s.Read("prm_samples", &o->prm_samples);
+  int rrt_iterations = static_cast<int>(o->rrt_iterations);
+  s.Read("rrt_iterations", &rrt_iterations);
+  o->rrt_iterations = rrt_iterations;
+  s.Read("time_limit_s", &o->time_limit_s);
+  s.Finish();
+}
+
 void RequirePositive(double value, const std::string& source, const char* field) {
   if (!(value > 0.0) || !std::isfinite(value)) {
     throw ConfigError(source, field, "must be finite and > 0, got " + std::to_string(value));
@@ -120,6 +131,26 @@ void CheckPlannerProcessOptions(const PlannerProcessOptions& o, const std::strin
   RequireNonNegative(o.stop.margin_s, source, "stop.margin_s");
   RequireNonNegative(o.goals.target_clearance_m, source, "goals.target_clearance_m");
   RequirePositive(o.status_period_s, source, "status_period_s");
+  if (o.deterministic.prm_samples < 1) throw ConfigError(source, "deterministic.prm_samples", "must be >= 1");
+  if (o.deterministic.rrt_iterations < 1) {
+    throw ConfigError(source, "deterministic.rrt_iterations", "must be >= 1");
+  }
+  RequirePositive(o.deterministic.time_limit_s, source, "deterministic.time_limit_s");
+}
+
+void AdaptPlannerOptions(const PlannerProcessOptions& o, WholeBodyPlannerOptions* planner) {
+  planner->validator.obstacle_margin_m += o.map.validator_margin_m;
+  if (!o.deterministic.enabled) return;
+  DeterministicBudgets budgets;
+  budgets.prm_samples = o.deterministic.prm_samples;
+  budgets.rrt_iterations = o.deterministic.rrt_iterations;
+  planner->time_limit_s = o.deterministic.time_limit_s;  // first: MakeDeterministic bounds by it
+  MakeDeterministic(planner, budgets);
+}
+
+double FieldUpdatePeriod(const PlannerProcessOptions& o) {
+  constexpr double kOnlyWhenAPlanAsks_s = 1e6;  // 11.6 days: in practice never by itself
+  return o.deterministic.enabled ? kOnlyWhenAPlanAsks_s : o.map.field_update_period_s;
 }
 
 PlannerProcessOptions LoadPlannerProcessOptions(const std::string& path) {
@@ -143,6 +174,7 @@ PlannerProcessOptions LoadPlannerProcessOptions(const std::string& path) {
   ReadTriggers(top.Section("triggers"), &o.triggers);
   ReadStop(top.Section("stop"), &o.stop);
   ReadGoals(top.Section("goals"), &o.goals);
+  ReadDeterministic(top.Section("deterministic"), &o.deterministic);
   top.Read("status_period_s", &o.status_period_s);
   top.Finish();
   CheckPlannerProcessOptions(o, path);

@@ -3,10 +3,12 @@
 // configuration, how the live map is taken in, when to replan and when to stop. The core
 // planner's options stay in their own file (config/planner/topay.yaml, core/io/planner_config.h).
 
+#include <cstdint>
 #include <optional>
 #include <string>
 
 #include "core/map/voxel_map_fields.h"
+#include "core/planner/whole_body_planner_options.h"
 #include "core/validate/trajectory_collision_scan.h"
 
 namespace topay::planner {
@@ -100,6 +102,29 @@ struct GoalCheckOptions {
   bool certify_reachability = true;
 };
 
+/// Deterministic mode (docs/planner.md#replay): the same message sequence gives the same
+/// decisions and the same trajectories, whatever the machine's speed or the replay speed. For
+/// replay and tests, not for the robot (a plan may take longer than the robot can wait):
+///  - the core planner's options go through MakeDeterministic (work budgets below);
+///  - the node's clock is message time (PlannerClock): every decision is taken when a message
+///    is handled, at the newest utime of the messages handled so far;
+///  - plans are synchronous: messages that come while a plan runs wait in the node's inbox
+///    and are handled, in order, after its result (the LCM loop itself keeps reading the bus
+///    and heartbeating);
+///  - a plan's fields include every map update handled before it (the fields are updated only
+///    when a plan asks), and every plan may take time_limit_s.
+struct DeterministicModeOptions {
+  bool enabled = false;  ///< off by default: the robot runs on the wall clock
+  /// Visibility PRM samples of the front end (DeterministicBudgets::prm_samples). > 0.
+  int prm_samples = 2000;
+  /// Iterations of each arm RRT* job (DeterministicBudgets::rrt_iterations). > 0.
+  std::int64_t rrt_iterations = 600;
+  /// The outer bound of every plan (s), a safety only: a plan that reaches it fails and may not
+  /// repeat exactly. Replaces timing.from_rest_time_limit_s and the replanning budget's
+  /// limit. > 0.
+  double time_limit_s = 30.0;
+};
+
 struct PlannerProcessOptions {
   std::string source;       ///< The file these came from ("" = defaults).
   std::string robot_urdf;   ///< "" = the shipped robot (config/robot/topay_mm.urdf).
@@ -110,6 +135,7 @@ struct PlannerProcessOptions {
   ReplanTriggerOptions triggers;
   SafeStopOptions stop;
   GoalCheckOptions goals;
+  DeterministicModeOptions deterministic;
   /// PLANNER_STATUS is sent on every change and at least this often (s). > 0.
   double status_period_s = 1.0;
 };
@@ -121,6 +147,16 @@ PlannerProcessOptions LoadPlannerProcessOptions(const std::string& path);
 
 /// Throws ConfigError (source `source`) for the first value out of range.
 void CheckPlannerProcessOptions(const PlannerProcessOptions& options, const std::string& source);
+
+/// The core planner's options as this process runs them: map.validator_margin_m added to the
+/// validator's obstacle margin; in deterministic mode, MakeDeterministic with the section's
+/// budgets and its time limit.
+void AdaptPlannerOptions(const PlannerProcessOptions& options, WholeBodyPlannerOptions* planner);
+
+/// How often the field thread updates the fields by itself (s): map.field_update_period_s; in
+/// deterministic mode never (only when a plan asks, so that the batches follow the messages
+/// and not the thread's timing).
+double FieldUpdatePeriod(const PlannerProcessOptions& options);
 
 /// "free", "occupied", "occupied_in_base_bands" <-> the policy (nullopt for another name).
 std::optional<UnknownVoxelPolicy> ParseUnknownVoxelPolicy(const std::string& name);

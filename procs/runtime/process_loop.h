@@ -49,9 +49,11 @@ class ProcessLoop {
   void AddScheduledTimer(std::function<Clock::time_point()> callback);
 
   /// Subscribes to `channel` decoding each message with CheckedDecode<Msg>; a message that
-  /// fails is counted and logged (ChannelStats) and never reaches `handler`.
+  /// fails is counted and logged (ChannelStats) and never reaches `handler`. Returns the LCM
+  /// subscription (e.g. to change its queue capacity: LCM's default keeps 30 messages not yet
+  /// handled and drops the rest).
   template <class Msg>
-  void Subscribe(const std::string& channel, std::function<void(const Msg&)> handler);
+  lcm::Subscription* Subscribe(const std::string& channel, std::function<void(const Msg&)> handler);
 
   /// Health and status text of the next heartbeats (heartbeat_t::OK/WARN/ERROR).
   void SetHealth(std::int8_t health, std::string status);
@@ -90,7 +92,7 @@ class ProcessLoop {
 };
 
 template <class Msg>
-void ProcessLoop::Subscribe(const std::string& channel, std::function<void(const Msg&)> handler) {
+lcm::Subscription* ProcessLoop::Subscribe(const std::string& channel, std::function<void(const Msg&)> handler) {
   struct Dispatch {
     ChannelStats* stats;
     std::function<void(const Msg&)> handler;
@@ -106,8 +108,9 @@ void ProcessLoop::Subscribe(const std::string& channel, std::function<void(const
     }
   };
   auto dispatch = std::make_shared<Dispatch>(Dispatch{&stats_, std::move(handler)});
-  lcm_->subscribe(channel, &Dispatch::Handle, dispatch.get());
+  lcm::Subscription* subscription = lcm_->subscribe(channel, &Dispatch::Handle, dispatch.get());
   handlers_.push_back(dispatch);
+  return subscription;
 }
 
 }  // namespace topay::procs

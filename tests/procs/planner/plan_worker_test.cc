@@ -126,5 +126,59 @@ TEST_F(PlanWorkerTest, ANewJobCancelsTheRunningOne) {
   }
 }
 
+TEST_F(PlanWorkerTest, WaitForResultBlocksUntilTheResultOrTheTimeout) {
+  PlanWorker worker(kinematics_, Options(), UnknownVoxelPolicy::kFree, 1.0);
+  const auto start = std::chrono::steady_clock::now();
+  EXPECT_FALSE(worker.WaitForResult(0.2).has_value()) << "no job: no result";
+  EXPECT_GE(std::chrono::steady_clock::now() - start, std::chrono::milliseconds(190));
+  // No map submitted: the plan fails at once.
+  worker.SubmitPlan(Job(1, BentArmState(-2.5, -2.5, 0.0), BentArmState(2.3, 2.0, 1.0)));
+  const std::optional<PlanJobOutcome> out = worker.WaitForResult(30.0);
+  ASSERT_TRUE(out.has_value());
+  EXPECT_EQ(out->job.job_id, 1);
+  EXPECT_FALSE(worker.TakeResult().has_value()) << "taken once";
+}
+
+TEST_F(PlanWorkerTest, APlanThatFlushesAllMapUpdatesPlansOnFieldsWithEveryOneSubmittedBeforeIt) {
+  constexpr double kNeverByItself_s = 1e6;
+  const WholeBodyState start = BentArmState(-2.5, -2.5, 0.0), goal = BentArmState(-1.5, -2.5, 0.0);
+  std::vector<OrientedBox> boxes = testing::RoomBoxes();
+  boxes.push_back(MakeBox({2.0, 2.0, 0.5}, {0.4, 0.4, 1.0}));  // far from the plan: it changes nothing for it
+  MapWork box;
+  box.geometry = testing::RoomGeometry();
+  box.map_seq = 2;
+  const std::vector<std::uint8_t> before = testing::StatesOf(box.geometry, testing::RoomBoxes());
+  const std::vector<std::uint8_t> after = testing::StatesOf(box.geometry, boxes);
+  const Eigen::Vector3i& dims = box.geometry.dims;
+  for (int iz = 0; iz < dims.z(); ++iz) {
+    for (int iy = 0; iy < dims.y(); ++iy) {
+      for (int ix = 0; ix < dims.x(); ++ix) {
+        const std::int64_t i = box.geometry.Index(ix, iy, iz);
+        if (after[i] != before[i]) box.changes.push_back({Eigen::Vector3i(ix, iy, iz), VoxelState::kOccupied});
+      }
+    }
+  }
+  ASSERT_FALSE(box.changes.empty());
+  for (const bool flush_all_map : {false, true}) {
+    PlanWorker worker(kinematics_, Options(), UnknownVoxelPolicy::kFree, kNeverByItself_s);
+    worker.SubmitMap(RoomWork(testing::RoomBoxes()));
+    PlanJob first = Job(1, start, goal);
+    first.certify_reachability = false;
+    worker.SubmitPlan(first);
+    ASSERT_EQ(WaitForResult(&worker).fields_map_seq, 1);
+    worker.SubmitMap(box);
+    PlanJob second = Job(2, start, goal);
+    second.map_seq = 2;
+    second.certify_reachability = false;
+    second.flush_all_map = flush_all_map;
+    worker.SubmitPlan(second);
+    const PlanJobOutcome out = WaitForResult(&worker);
+    EXPECT_TRUE(out.result.success()) << out.result.failure_reason;
+    // Without it the plan brings only its fresh region (around its start) up to date: the box
+    // far from it waits for the background (never, here), so its fields hold map 1 wholly.
+    EXPECT_EQ(out.fields_map_seq, flush_all_map ? 2 : 1) << "flush_all_map " << flush_all_map;
+  }
+}
+
 }  // namespace
 }  // namespace topay::planner

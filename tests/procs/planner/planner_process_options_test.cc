@@ -45,6 +45,35 @@ TEST(PlannerProcessOptionsTest, ValuesAreReadAndBadOnesNamed) {
   expect_error("triggers: {drift_position_m: -1}\n", "drift_position_m");
   expect_error("stop: {latency: 1}\n", "stop.latency");
   expect_error("status_period_s: .nan\n", "status_period_s");
+  expect_error("deterministic: {prm_samples: 0}\n", "deterministic.prm_samples");
+  expect_error("deterministic: {rrt_iterations: -3}\n", "deterministic.rrt_iterations");
+  expect_error("deterministic: {time_limit_s: 0}\n", "deterministic.time_limit_s");
+  expect_error("deterministic: {enable: true}\n", "deterministic.enable");
+}
+
+TEST(PlannerProcessOptionsTest, DeterministicModeIsOffByDefaultAndMakesThePlansDependOnWorkBudgets) {
+  const PlannerProcessOptions shipped = LoadPlannerProcessOptions(TOPAY_SOURCE_DIR "/config/planner/planner.yaml");
+  EXPECT_FALSE(shipped.deterministic.enabled);
+  EXPECT_EQ(FieldUpdatePeriod(shipped), shipped.map.field_update_period_s);
+  WholeBodyPlannerOptions normal;
+  const WholeBodyPlannerOptions defaults;
+  AdaptPlannerOptions(shipped, &normal);
+  EXPECT_EQ(normal.num_threads, defaults.num_threads);  // untouched on the wall clock
+  EXPECT_EQ(normal.time_limit_s, defaults.time_limit_s);
+
+  const PlannerProcessOptions o = LoadPlannerProcessOptions(WriteYaml(
+      "deterministic", "deterministic: {enabled: true, prm_samples: 700, rrt_iterations: 90, time_limit_s: 12}\n"));
+  EXPECT_TRUE(o.deterministic.enabled);
+  EXPECT_EQ(o.deterministic.prm_samples, 700);
+  EXPECT_EQ(o.deterministic.rrt_iterations, 90);
+  WholeBodyPlannerOptions planner;
+  AdaptPlannerOptions(o, &planner);
+  EXPECT_EQ(planner.num_threads, 1);
+  EXPECT_EQ(planner.front_end.topology.prm.max_samples, 700);
+  EXPECT_EQ(planner.front_end.rrt.max_iterations, 90);
+  EXPECT_EQ(planner.time_limit_s, 12.0);
+  EXPECT_EQ(planner.optimizer.time_limit_s, 12.0) << "a candidate is bounded by the plan's limit, not its own";
+  EXPECT_GT(FieldUpdatePeriod(o), 1e5) << "the fields update only when a plan asks";
 }
 
 }  // namespace
