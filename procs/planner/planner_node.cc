@@ -497,15 +497,21 @@ void PlannerNode::MaybeSafeStop(std::int64_t now) {
   if (!collision_utime_ || !active_ || active_->stopping || active_->EndedBy(now)) return;
   const double until_collision_s = 1e-6 * (*collision_utime_ - now);
   const double lead_s = options_.stop.latency_s + options_.stop.margin_s;
-  // Far from the collision the last stopping trajectory's duration (with a quarter second to
-  // spare for a faster robot) says no stop is due yet: not worth making one every tick.
+  // Far from the collision a stopping trajectory made less than 0.1 s ago says no stop is due
+  // yet (with a quarter second to spare for a robot speeding up meanwhile): not worth making
+  // one every tick. An older one is made again: a robot that sped up needs a longer stop.
   constexpr double kSlack_s = 0.25;
-  if (last_stop_duration_s_ && until_collision_s > *last_stop_duration_s_ + lead_s + kSlack_s) return;
+  constexpr double kStopRecheck_s = 0.1;
+  if (last_stop_duration_s_ && now - last_stop_made_utime_ < Micros(kStopRecheck_s) &&
+      until_collision_s > *last_stop_duration_s_ + lead_s + kSlack_s) {
+    return;
+  }
   const std::int64_t begin = now + Micros(options_.stop.latency_s);
   std::string why;
   std::optional<ArcYawTrajectory> stop =
       stop_planner_.Make(*active_->trajectory, active_->TimeAt(begin), &why);
   last_stop_duration_s_ = stop ? stop->duration_s() : 0.0;
+  last_stop_made_utime_ = now;
   if (until_collision_s > *last_stop_duration_s_ + lead_s) return;
   if (!stop) {
     if (!stop_error_logged_) {

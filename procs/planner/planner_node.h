@@ -156,6 +156,7 @@ class PlannerNode {
   std::optional<std::int64_t> collision_utime_;  // predicted collision on active_, if any
   std::vector<Eigen::Vector2d> collision_points_;  // base xy at the newest predicted collisions
   std::optional<double> last_stop_duration_s_;   // of the last stopping trajectory made for it
+  std::int64_t last_stop_made_utime_ = 0;         // ... and when
   bool stop_error_logged_ = false;
   std::optional<std::pair<PlanTrigger, std::string>> pending_;  // asked for while busy
   std::int64_t retry_at_utime_ = 0;               // 0: no retry scheduled
