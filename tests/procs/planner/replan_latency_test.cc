@@ -404,6 +404,7 @@ class ReplanLatency : public testing::Test {
     goal.goal_id = ++goal_id_;
     goal.hint = *state;
     goal.X_WE = kinematics_.EndEffectorPose(*state);
+    goal_state_ = *state;
     const goal_t msg = msgs::ToMessage(goal);
     watcher_->lcm().publish(std::string(channels::GOAL), &msg);
     return true;
@@ -420,7 +421,10 @@ class ReplanLatency : public testing::Test {
 
   /// A box on the base path of the trajectory under way, kAheadMinM-kAheadMaxM along it from
   /// the robot, at least 2 m from the robot, 1 m before the path's end, 0.15 m clear of the
-  /// room's boxes; none while the robot is slow or no such place is found.
+  /// room's boxes, and leaving the goal's base reachable from the robot's (proven on the exact
+  /// room with the box: the robot can go around it; a box closing the only passage would trap
+  /// the robot for good, the boxes staying); none while the robot is slow or no such place is
+  /// found.
   std::optional<Event> PlaceBoxAhead() {
     if (in_.trajectories.empty() || !in_.robot || RobotSpeed() < 0.3) return std::nullopt;
     const poly_trajectory_t& on = in_.trajectories.back().msg;
@@ -443,6 +447,11 @@ class ReplanLatency : public testing::Test {
       const bool overlaps = std::any_of(scene_.boxes.begin(), scene_.boxes.end(),
                                         [&](const OrientedBox& b) { return BoxesOverlap(grown, b); });
       if (overlaps) continue;
+      Scene with_box = scene_;
+      with_box.boxes.push_back(e.box);
+      if (goal_state_ && !ProvenBaseRegion(with_box, kinematics_, Robot()).Reaches({goal_state_->x_m, goal_state_->y_m})) {
+        continue;
+      }
       e.robot_speed_mps = RobotSpeed();
       return e;
     }
@@ -516,6 +525,7 @@ class ReplanLatency : public testing::Test {
 
   RobotModel model_ = LoadRobotModel(ConfigFile("robot/topay_mm.urdf"), ConfigFile("robot/topay_mm.yaml"));
   Kinematics kinematics_{model_};
+  std::optional<WholeBodyState> goal_state_;  // the goal under way
   Scene room_;   // the room as the sim starts it
   Scene scene_;  // the room now: with the boxes placed so far
   std::string dir_, out_dir_;
