@@ -15,6 +15,7 @@
 #include <cmath>
 
 #include "graph_test_support.h"
+#include "tests/procs/planner/unseen_room.h"
 #include "core/collision/scene_clearance.h"
 #include "core/common/random.h"
 #include "core/io/robot_loader.h"
@@ -25,8 +26,6 @@
 #include "procs/msgs/convert_trajectory.h"
 #include "procs/msgs/trajectory_from_message.h"
 #include "procs/runtime/process_loop.h"
-#include "sim/scenes/scene_json.h"
-#include "sim/world/scene_source.h"
 #include "tests/common/arm_state.h"
 #include "topay/planner_status_t.hpp"
 #include "topay/poly_trajectory_t.hpp"
@@ -71,17 +70,7 @@ class PlannerGraph : public testing::Test {
     std::string why;
     if (!EnterTestNamespace(&why)) GTEST_SKIP() << why;
     dir_ = TestDir("graph");
-    // The sim's own room (Tables, seed 3, nothing within 1.2 m of the start), written out so
-    // that this test knows it exactly too.
-    KeepOutRegions keep_out;
-    VerticalCylinder start;
-    start.axis_W_m = Eigen::Vector2d::Zero();
-    start.radius_m = 1.2;
-    start.bottom_z_m = 0.0;
-    start.height_m = 3.0;
-    keep_out.cylinders.push_back(start);
-    scene_ = sim::LoadScene(*sim::ParseSceneArgument("tables", 3), keep_out);
-    WriteSceneJson(dir_ + "/room.json", scene_, nullptr);
+    scene_ = WriteUnseenTablesRoom(dir_ + "/room.json");  // the sim's room, known exactly here too
     WriteText(dir_ + "/planner.yaml", "planner_config: " + ConfigFile("planner/topay.yaml") +
                                           "\ntiming: {from_rest_time_limit_s: 10.0}\n");
     watcher_ = std::make_unique<HeartbeatWatcher>(kLcmUrl);

@@ -16,6 +16,7 @@
 #include <regex>
 
 #include "graph_test_support.h"
+#include "tests/procs/planner/unseen_room.h"
 #include "tests/procs/planner/planner_replay_support.h"
 #include "core/collision/scene_clearance.h"
 #include "core/common/random.h"
@@ -27,8 +28,6 @@
 #include "procs/msgs/convert_trajectory.h"
 #include "procs/msgs/trajectory_from_message.h"
 #include "procs/runtime/process_loop.h"
-#include "sim/scenes/scene_json.h"
-#include "sim/world/scene_source.h"
 #include "tests/common/arm_state.h"
 #include "topay/map_update_t.hpp"
 #include "topay/planner_status_t.hpp"
@@ -178,17 +177,7 @@ class PlannerReplay : public testing::Test {
     std::string why;
     if (!EnterTestNamespace(&why)) GTEST_SKIP() << why;
     dir_ = TestDir("replay");
-    // The graph test's room (Tables, seed 3, nothing within 1.2 m of the start), written out so
-    // that the test can choose a goal the robot can reach.
-    KeepOutRegions keep_out;
-    VerticalCylinder start;
-    start.axis_W_m = Eigen::Vector2d::Zero();
-    start.radius_m = 1.2;
-    start.bottom_z_m = 0.0;
-    start.height_m = 3.0;
-    keep_out.cylinders.push_back(start);
-    scene_ = sim::LoadScene(*sim::ParseSceneArgument("tables", 3), keep_out);
-    WriteSceneJson(dir_ + "/room.json", scene_, nullptr);
+    scene_ = WriteUnseenTablesRoom(dir_ + "/room.json");  // the graph test's room: goals the robot can reach
     WriteText(dir_ + "/planner.yaml", "planner_config: " + ConfigFile("planner/topay.yaml") +
                                           "\ndeterministic: {enabled: true}\ntiming: {replan_budget_s: 2.0}\n");
     listener_ = std::make_unique<HeartbeatWatcher>(kLcmUrl);

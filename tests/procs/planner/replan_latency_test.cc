@@ -33,6 +33,7 @@
 #include <sstream>
 
 #include "graph_test_support.h"
+#include "tests/procs/planner/unseen_room.h"
 #include "core/collision/scene_clearance.h"
 #include "core/common/random.h"
 #include "core/geometry/box_overlap.h"
@@ -43,8 +44,6 @@
 #include "procs/msgs/convert_trajectory.h"
 #include "procs/msgs/trajectory_from_message.h"
 #include "procs/runtime/process_loop.h"
-#include "sim/scenes/scene_json.h"
-#include "sim/world/scene_source.h"
 #include "tests/common/arm_state.h"
 #include "topay/planner_status_t.hpp"
 #include "topay/point_cloud_t.hpp"
@@ -294,18 +293,8 @@ class ReplanLatency : public testing::Test {
     if (!EnterTestNamespace(&why)) GTEST_SKIP() << why;
     dir_ = TestDir("graph");
     out_dir_ = TestDir("bench");
-    // The sim's room (Tables, seed 3, nothing within 1.2 m of the start), written out so that
-    // the benchmark knows it exactly (goals, box places).
-    KeepOutRegions keep_out;
-    VerticalCylinder start;
-    start.axis_W_m = Eigen::Vector2d::Zero();
-    start.radius_m = 1.2;
-    start.bottom_z_m = 0.0;
-    start.height_m = 3.0;
-    keep_out.cylinders.push_back(start);
-    room_ = sim::LoadScene(*sim::ParseSceneArgument("tables", 3), keep_out);
+    room_ = WriteUnseenTablesRoom(dir_ + "/room.json");  // the sim's room, known exactly here (goals, box places)
     scene_ = room_;
-    WriteSceneJson(dir_ + "/room.json", room_, nullptr);
     WriteText(dir_ + "/planner.yaml", "planner_config: " + ConfigFile("planner/topay.yaml") +
                                           "\ntiming: {from_rest_time_limit_s: 10.0}\n");
     in_.kinematics = &kinematics_;
