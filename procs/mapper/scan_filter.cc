@@ -95,15 +95,15 @@ void ScanFilter::RemoveGround(std::vector<Eigen::Vector3f>* p_WP) const {
   p_WP->resize(kept);
 }
 
-void ScanFilter::RemoveSelf(const std::optional<WholeBodyState>& state,
+void ScanFilter::RemoveSelf(const std::optional<WholeBodyState>& state, const Eigen::Vector3d& p_WS,
                             std::vector<Eigen::Vector3f>* p_WP, ScanFilterSummary* summary) {
   if (!state) {
-    summary->warning = "no robot state at the scan's time: the robot's own points were kept";
+    summary->warning = "no robot state at the scan's time: the points near the robot were dropped";
   } else if (state->num_joints() != kinematics_.num_joints() || !state->IsFinite()) {
     summary->warning = "robot state unusable (" + std::to_string(state->num_joints()) +
                        " joints, model has " + std::to_string(kinematics_.num_joints()) +
                        (state->IsFinite() ? "" : "; not finite") +
-                       "): the robot's own points were kept";
+                       "): the points near the robot were dropped";
   } else {
     kinematics_.Update(*state, &cache_);
     body_.Update(kinematics_.model(), cache_);
@@ -111,6 +111,10 @@ void ScanFilter::RemoveSelf(const std::optional<WholeBodyState>& state,
     return;
   }
   summary->self_filter_skipped = true;
+  const float radius = static_cast<float>(options_.no_state_radius_m);
+  if (radius <= 0.0f) return;
+  const Eigen::Vector2f p_WS_xy = p_WS.head<2>().cast<float>();
+  std::erase_if(*p_WP, [&](const Eigen::Vector3f& p) { return (p.head<2>() - p_WS_xy).squaredNorm() < radius * radius; });
 }
 
 ScanFilterSummary ScanFilter::Filter(const CheckedCloud& cloud,
@@ -131,7 +135,7 @@ ScanFilterSummary ScanFilter::Filter(const CheckedCloud& cloud,
   RemoveGround(p_WP);
   summary.num_after_ground = static_cast<int>(p_WP->size());
   lap(&summary.ground_ms);
-  RemoveSelf(state, p_WP, &summary);
+  RemoveSelf(state, cloud.X_WS.translation(), p_WP, &summary);
   summary.num_after_self = static_cast<int>(p_WP->size());
   lap(&summary.self_ms);
   if (options_.voxel_leaf_m > 0.0) pcl_->Run(&pcl_->voxel_grid, p_WP);

@@ -51,8 +51,8 @@ class ScanFilter {
   void CropRange(const CheckedCloud& cloud, std::vector<Eigen::Vector3f>* p_WP,
                  ScanFilterSummary* summary) const;
   void RemoveGround(std::vector<Eigen::Vector3f>* p_WP) const;
-  void RemoveSelf(const std::optional<WholeBodyState>& state, std::vector<Eigen::Vector3f>* p_WP,
-                  ScanFilterSummary* summary);
+  void RemoveSelf(const std::optional<WholeBodyState>& state, const Eigen::Vector3d& p_WS,
+                  std::vector<Eigen::Vector3f>* p_WP, ScanFilterSummary* summary);
 
   ScanFilterOptions options_;
   const Kinematics& kinematics_;

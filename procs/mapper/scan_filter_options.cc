@@ -54,6 +54,8 @@ void CheckScanFilterOptions(const ScanFilterOptions& o) {
   Require(std::isfinite(o.ground_max_z_m), o, "ground_max_z_m", "expected a finite height");
   Require(std::isfinite(o.self_margin_m) && o.self_margin_m >= 0.0, o, "self_margin_m",
           "expected a finite margin >= 0");
+  Require(std::isfinite(o.no_state_radius_m) && o.no_state_radius_m >= 0.0, o, "no_state_radius_m",
+          "expected a finite value >= 0");
   Require(std::isfinite(o.voxel_leaf_m) && o.voxel_leaf_m >= 0.0, o, "voxel_leaf_m",
           "expected a finite leaf size >= 0 (0: off)");
   Require(o.voxel_leaf_m == 0.0 || LeafIndexFits(o.voxel_leaf_m, o.range_max_m), o,
@@ -84,6 +86,7 @@ ScanFilterOptions LoadScanFilterOptions(const YAML::Node& given, const std::stri
   section.Read("range_max_m", &o.range_max_m);
   section.Read("ground_max_z_m", &o.ground_max_z_m);
   section.Read("self_margin_m", &o.self_margin_m);
+  section.Read("no_state_radius_m", &o.no_state_radius_m);
   section.Read("voxel_leaf_m", &o.voxel_leaf_m);
   std::string method = OutlierMethodName(o.outlier_method);
   section.Read("outlier_method", &method);

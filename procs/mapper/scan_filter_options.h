@@ -44,6 +44,13 @@ struct ScanFilterOptions {
   /// not all taken at the pose of the state given). Real obstacles within the margin of the
   /// body are removed too: they are in contact range, which the planner keeps out of anyway.
   double self_margin_m = 0.08;
+  /// Without a usable robot state (none near the scan's time, or a bad one) the body cannot be
+  /// filtered: the points within this horizontal distance (m) of the sensor are dropped then,
+  /// for they may be the robot's own arm, which would stay in the map for good (the arm hides
+  /// the voxels behind it from every later ray; a plan from where the robot stands then fails
+  /// on its own arm). 1.5 m covers the arm stretched out (0.3 m sensor offset + ~1 m reach +
+  /// the margin). 0 keeps them.
+  double no_state_radius_m = 1.5;
   /// Voxel-grid leaf (m): one point (the centroid) per occupied leaf. The map resolution,
   /// 0.05 m: finer points mark no more voxels. 0 turns the stage off.
   double voxel_leaf_m = 0.05;

@@ -26,6 +26,7 @@ ScanFilterOptions AllOff() {
   o.range_max_m = 20.0;  // the default: wide enough, and voxel leaves of 5 cm fit
   o.ground_max_z_m = -1000.0;
   o.self_margin_m = 0.0;
+  o.no_state_radius_m = 0.0;
   o.voxel_leaf_m = 0.0;
   o.outlier_method = OutlierMethod::kNone;
   return o;
@@ -84,7 +85,7 @@ TEST_F(ScanFilterTest, NonFinitePointsAreDroppedAndCounted) {
   const float nan = std::numeric_limits<float>::quiet_NaN();
   const float inf = std::numeric_limits<float>::infinity();
   const CheckedCloud cloud =
-      CloudAt({0, 0, 0.3}, {{nan, 0, 0}, {1, inf, 0}, {1, 0, -inf}, {1, 0, 0}, {nan, nan, nan}});
+      CloudAt({0, 0, 0.3}, {{nan, 0, 0}, {1, inf, 0}, {1, 0, -inf}, {3, 0, 0}, {nan, nan, nan}});  // 3 m: beyond no_state_radius_m
   const ScanFilterSummary s = Run(ScanFilterOptions{}, cloud);
   EXPECT_EQ(s.num_non_finite, 4);
   EXPECT_EQ(s.num_output, 1);
@@ -149,7 +150,7 @@ TEST_F(ScanFilterTest, NoPointOfTheRobotSurvivesAndFewOthersAreRemoved) {
               escaped_without_margin);
 }
 
-TEST_F(ScanFilterTest, WithoutAStateTheSelfFilterIsSkippedWithAWarning) {
+TEST_F(ScanFilterTest, WithoutAStateThePointsNearTheRobotAreDroppedWithAWarning) {
   sim::LidarScanner scanner(sim::LidarOptions{}, kinematics_, 3);
   scanner.SetWorld({});
   WholeBodyState state;
@@ -158,10 +159,17 @@ TEST_F(ScanFilterTest, WithoutAStateTheSelfFilterIsSkippedWithAWarning) {
   ASSERT_GT(cloud.p_SP.size(), 50u);
   ScanFilterOptions o = AllOff();
   o.self_margin_m = 0.08;
+  o.no_state_radius_m = 1.5;
+  // The world is empty: every point is the robot's own, within reach of the sensor.
   const ScanFilterSummary none = Run(o, cloud);
   EXPECT_TRUE(none.self_filter_skipped);
-  EXPECT_EQ(none.num_after_self, none.num_after_ground);
+  EXPECT_EQ(none.num_after_self, 0);
   EXPECT_NE(none.Report().find("warning: no robot state"), std::string::npos) << none.Report();
+  ScanFilterOptions keep = o;
+  keep.no_state_radius_m = 0.0;  // off: kept
+  const ScanFilterSummary kept = Run(keep, cloud);
+  EXPECT_TRUE(kept.self_filter_skipped);
+  EXPECT_EQ(kept.num_after_self, kept.num_after_ground);
   WholeBodyState bad = state;
   bad.q_rad(2) = std::numeric_limits<double>::quiet_NaN();
   const ScanFilterSummary nan = Run(o, cloud, bad);
