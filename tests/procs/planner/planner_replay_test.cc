@@ -234,15 +234,9 @@ class PlannerReplay : public testing::Test {
   // A goal configuration 4-6 m from the start, exactly clear of the room by 0.3 m and whose
   // base the start's base can be proven to reach (as in planner_graph_test).
   WholeBodyState FarGoal(std::uint64_t seed) const {
-    const ProvenBaseRegion region(scene_, kinematics_, Eigen::Vector2d::Zero());
-    const SceneClearanceChecker checker(kinematics_, scene_);
     Rng rng(seed);
-    for (int k = 0; k < 20000; ++k) {
-      const double r = rng.Uniform(4.0, 6.0), a = rng.Uniform(-M_PI, M_PI);
-      const WholeBodyState s = BentArmState(r * std::cos(a), r * std::sin(a), rng.Uniform(-M_PI, M_PI));
-      if (!region.Reaches({s.x_m, s.y_m})) continue;
-      if (checker.Compute(s).obstacle_m() > 0.3) return s;
-    }
+    const std::optional<WholeBodyState> goal = ReachableGoal(scene_, kinematics_, Eigen::Vector2d::Zero(), 4.0, 6.0, &rng);
+    if (goal) return *goal;
     ADD_FAILURE() << "no goal found";
     return BentArmState(0, 0, 0);
   }

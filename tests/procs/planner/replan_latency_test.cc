@@ -383,16 +383,7 @@ class ReplanLatency : public testing::Test {
   // A goal 5-8 m from the robot, exactly clear of the room by 0.3 m, whose base the robot's base
   // can be proven to reach.
   std::optional<WholeBodyState> GoalFrom(const Eigen::Vector2d& from) {
-    const ProvenBaseRegion region(scene_, kinematics_, from);
-    const SceneClearanceChecker checker(kinematics_, scene_);
-    for (int k = 0; k < 20000; ++k) {
-      const double r = rng_.Uniform(5.0, 8.0), a = rng_.Uniform(-M_PI, M_PI);
-      const WholeBodyState s = BentArmState(from.x() + r * std::cos(a), from.y() + r * std::sin(a),
-                                            rng_.Uniform(-M_PI, M_PI));
-      if (!region.Reaches({s.x_m, s.y_m})) continue;
-      if (checker.Compute(s).obstacle_m() > 0.3) return s;
-    }
-    return std::nullopt;
+    return ReachableGoal(scene_, kinematics_, from, 5.0, 8.0, &rng_);
   }
   bool SendGoal() {
     const std::optional<WholeBodyState> state = GoalFrom(Robot());
