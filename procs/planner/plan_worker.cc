@@ -163,8 +163,10 @@ void PlanWorker::Run(std::stop_token thread_stop) {
       if (outcome.result.status == PlanStatus::kCancelled) ++counts_.cancelled;
       results_.push_back(std::move(outcome));
       results_ready_.notify_all();
-      continue;
     }
+    // One overdue slice per pass, also between back-to-back plans: while the robot replans
+    // continuously the map far from its start would otherwise never reach the fields (stale
+    // obstacles closed passages the map had long opened, and the plans went round them).
     const std::optional<Clock::time_point> oldest = world_.OldestPending();
     if (oldest && (*oldest == Clock::time_point::min() || Clock::now() >= *oldest + Seconds(field_update_period_s_))) {
       MapFlushSummary summary;

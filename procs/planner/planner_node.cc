@@ -290,6 +290,8 @@ void PlannerNode::RequestPlan(PlanTrigger trigger, const std::string& reason, bo
   job.certify_reachability = !goal_->planned_once && options_.goals.certify_reachability;
   job.map_seq = map_.receiver().map_seq();
   job.fresh_regions_xy_W_m = FreshRegions(job.start);
+  // From rest there is time (the robot waits): the fields take every map update first.
+  job.flush_all_map = job.from_rest;
   if (clock_.message_time()) {
     job.flush_all_map = true;  // fields from every map update handled before it
     job.time_limit_s = options_.deterministic.time_limit_s;
@@ -416,6 +418,10 @@ std::vector<Eigen::AlignedBox2d> PlannerNode::FreshRegions(const TrajectorySampl
   };
   std::vector<Eigen::AlignedBox2d> regions{square({start.state.x_m, start.state.y_m}, options_.map.fresh_radius_m)};
   for (const Eigen::Vector2d& p : collision_points_) regions.push_back(square(p, options_.map.fresh_collision_radius_m));
+  if (goal_) {  // where the goal's base poses are searched
+    regions.push_back(square(goal_->goal.X_WE.translation().head<2>(), options_.map.fresh_radius_m));
+    if (goal_->goal.hint) regions.push_back(square({goal_->goal.hint->x_m, goal_->goal.hint->y_m}, options_.map.fresh_radius_m));
+  }
   return regions;
 }
 

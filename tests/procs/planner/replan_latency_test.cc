@@ -464,7 +464,7 @@ class ReplanLatency : public testing::Test {
       if (overlaps || !Visible(e.box)) continue;
       Scene with_box = scene_;
       with_box.boxes.push_back(e.box);
-      if (goal_state_ && !ProvenBaseRegion(with_box, kinematics_, Robot()).Reaches({goal_state_->x_m, goal_state_->y_m})) {
+      if (goal_state_ && !SensedReachableRegion(with_box, kinematics_, Robot()).Reaches({goal_state_->x_m, goal_state_->y_m})) {
         continue;
       }
       e.robot_speed_mps = RobotSpeed();
