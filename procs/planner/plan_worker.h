@@ -44,6 +44,9 @@ struct PlanJob {
   /// The start: state and rates (v, omega, a, beta, qd, qdd; all zero from rest).
   TrajectorySample start;
   bool from_rest = true;               ///< false: a moving start on the current trajectory
+  /// The trajectory the start lies on (0: from rest or from the measured state): a result is
+  /// published only if that trajectory is still the one under way at t0.
+  std::int64_t on_trajectory_id = 0;
   std::int64_t t0_utime = 0;           ///< when the new trajectory starts (moving start)
   Eigen::Isometry3d X_WE_goal = Eigen::Isometry3d::Identity();
   std::optional<WholeBodyState> hint;

@@ -217,6 +217,7 @@ void PlannerNode::CheckActiveAgainstMap(std::int64_t now) {
   const bool first = !collision_utime_;
   const bool sooner = collision_utime_ && at < *collision_utime_ - Micros(kSooner_s);
   collision_utime_ = at;
+  if (first) collision_seen_utime_ = now;
   RememberCollision(*active_->trajectory, hit->t_s);
   if (active_->stopping) return;  // braking already; the replans go on (retry)
   const std::string reason =
@@ -234,6 +235,7 @@ bool PlannerNode::FillStart(PlanTrigger trigger, std::int64_t now, PlanJob* job,
     job->start = active_->SampleAt(t0);  // where the robot will be at t0 on the trajectory
     if (!AtRest(job->start, t.rest_speed) || active_->TimeAt(t0) > 0.0) {
       job->from_rest = false;
+      job->on_trajectory_id = active_->trajectory_id;
       job->t0_utime = t0;
       job->time_limit_s = t.replan_budget_s - t.publish_margin_s;
       return true;
@@ -291,7 +293,7 @@ void PlannerNode::RequestPlan(PlanTrigger trigger, const std::string& reason, bo
   job.map_seq = map_.receiver().map_seq();
   job.fresh_regions_xy_W_m = FreshRegions(job.start);
   // From rest there is time (the robot waits): the fields take every map update first.
-  job.flush_all_map = job.from_rest;
+  job.flush_all_map = job.from_rest && options_.map.flush_all_from_rest;
   if (clock_.message_time()) {
     job.flush_all_map = true;  // fields from every map update handled before it
     job.time_limit_s = options_.deterministic.time_limit_s;
@@ -377,6 +379,15 @@ void PlannerNode::HandleOutcome(PlanJobOutcome outcome) {
     RequestPlan(PlanTrigger::kRetry, "the last plan came too late");
     return;
   }
+  // A stopping trajectory went out meanwhile: the robot is no longer where the plan starts.
+  const ActiveTrajectory* on = OnAt(outcome.job.t0_utime);
+  if (outcome.job.on_trajectory_id != 0 && (on == nullptr || on->trajectory_id != outcome.job.on_trajectory_id)) {
+    ++counts_.results_dropped_late;
+    spdlog::warn("goal {}: plan {} starts on trajectory {}, replaced meanwhile: dropped", outcome.job.goal_id,
+                 outcome.job.job_id, outcome.job.on_trajectory_id);
+    RequestPlan(PlanTrigger::kRetry, "the last plan started on a replaced trajectory");
+    return;
+  }
   // The fields it planned on may lag the map away from its start, and the map may have
   // changed while it planned: check it against the newest.
   const std::optional<PredictedCollision> hit = CheckAhead(*outcome.result.trajectory, 0.0);
@@ -400,6 +411,7 @@ void PlannerNode::HandleOutcome(PlanJobOutcome outcome) {
     // Far enough ahead to replan before a stop could be due: out it goes, replanned at once.
     PublishTrajectory(outcome, now);
     collision_utime_ = at;
+    collision_seen_utime_ = now;
   }
   RequestPlan(PlanTrigger::kMapCollision, reason);
 }
@@ -476,6 +488,7 @@ void PlannerNode::PublishActive(const char* what) {
 
 void PlannerNode::ClearPredictedCollision() {
   collision_utime_.reset();
+  collision_seen_utime_.reset();
   last_stop_duration_s_.reset();
   stop_error_logged_ = false;
 }
@@ -508,7 +521,11 @@ void PlannerNode::MaybeSafeStop(std::int64_t now) {
   // one every tick. An older one is made again: a robot that sped up needs a longer stop.
   constexpr double kSlack_s = 0.25;
   constexpr double kStopRecheck_s = 0.1;
-  if (last_stop_duration_s_ && now - last_stop_made_utime_ < Micros(kStopRecheck_s) &&
+  // A near collision that waited its grace for a new trajectory: stop now, plan on meanwhile.
+  const bool grace_over = collision_seen_utime_ &&
+                          now - *collision_seen_utime_ >= Micros(options_.stop.replan_grace_s) &&
+                          until_collision_s <= options_.timing.publish_collision_horizon_s;
+  if (!grace_over && last_stop_duration_s_ && now - last_stop_made_utime_ < Micros(kStopRecheck_s) &&
       until_collision_s > *last_stop_duration_s_ + lead_s + kSlack_s) {
     return;
   }
@@ -518,7 +535,7 @@ void PlannerNode::MaybeSafeStop(std::int64_t now) {
       stop_planner_.Make(*active_->trajectory, active_->TimeAt(begin), &why);
   last_stop_duration_s_ = stop ? stop->duration_s() : 0.0;
   last_stop_made_utime_ = now;
-  if (until_collision_s > *last_stop_duration_s_ + lead_s) return;
+  if (!grace_over && until_collision_s > *last_stop_duration_s_ + lead_s) return;
   if (!stop) {
     if (!stop_error_logged_) {
       spdlog::error("goal {}: collision {:.2f} s ahead and no stopping trajectory: {}", active_->goal_id,
@@ -538,7 +555,8 @@ void PlannerNode::MaybeSafeStop(std::int64_t now) {
   PublishActive("stopping");
   PublishStatus(planner_status_t::STOPPING, "",
                 fmt::format("collision {:.2f} s ahead, no new trajectory yet: stopping", until_collision_s));
-  if (!worker_->busy()) RequestPlan(PlanTrigger::kRetry, "replanning after the safe stop");
+  // A plan in progress started on the trajectory the stop replaces: it would not join.
+  RequestPlan(PlanTrigger::kRetry, "replanning from the safe stop", /*preempt=*/true);
 }
 
 void PlannerNode::MaybeFinishGoal(std::int64_t now) {

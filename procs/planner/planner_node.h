@@ -154,6 +154,7 @@ class PlannerNode {
   // new trajectory's start_utime the robot follows the one before it.
   std::deque<ActiveTrajectory> replaced_;
   std::optional<std::int64_t> collision_utime_;  // predicted collision on active_, if any
+  std::optional<std::int64_t> collision_seen_utime_;  // ... when it was first predicted
   std::vector<Eigen::Vector2d> collision_points_;  // base xy at the newest predicted collisions
   std::optional<double> last_stop_duration_s_;   // of the last stopping trajectory made for it
   std::int64_t last_stop_made_utime_ = 0;         // ... and when

@@ -26,6 +26,7 @@ void ReadMap(YamlSection s, PlannerMapOptions* o) {
   o->unknown = *policy;
   s.Read("field_update_period_s", &o->field_update_period_s);
   s.Read("slice_m", &o->slice_m);
+  s.Read("flush_all_from_rest", &o->flush_all_from_rest);
   s.Read("fresh_radius_m", &o->fresh_radius_m);
   s.Read("fresh_collision_radius_m", &o->fresh_collision_radius_m);
   s.Read("validator_margin_m", &o->validator_margin_m);
@@ -56,6 +57,7 @@ void ReadTriggers(YamlSection s, ReplanTriggerOptions* o) {
 void ReadStop(YamlSection s, SafeStopOptions* o) {
   s.Read("latency_s", &o->latency_s);
   s.Read("margin_s", &o->margin_s);
+  s.Read("replan_grace_s", &o->replan_grace_s);
   s.Finish();
 }
 
@@ -129,6 +131,7 @@ void CheckPlannerProcessOptions(const PlannerProcessOptions& o, const std::strin
   RequirePositive(o.triggers.check_reach_m, source, "triggers.check_reach_m");
   RequireNonNegative(o.stop.latency_s, source, "stop.latency_s");
   RequireNonNegative(o.stop.margin_s, source, "stop.margin_s");
+  RequirePositive(o.stop.replan_grace_s, source, "stop.replan_grace_s");
   RequireNonNegative(o.goals.target_clearance_m, source, "goals.target_clearance_m");
   RequirePositive(o.status_period_s, source, "status_period_s");
   if (o.deterministic.prm_samples < 1) throw ConfigError(source, "deterministic.prm_samples", "must be >= 1");

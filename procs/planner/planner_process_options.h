@@ -31,6 +31,8 @@ struct PlannerMapOptions {
   /// may lag by field_update_period_s plus the slices' work. > 0.
   double fresh_radius_m = 2.0;
   double fresh_collision_radius_m = 1.5;
+  /// A plan from rest (the robot waits for it) first brings every change into the fields.
+  bool flush_all_from_rest = true;
   /// Added to the core planner's validator obstacle margin (m) when it validates a plan
   /// against the map's voxel boxes (the check of the trajectory ahead triggers at
   /// triggers.check_obstacle_margin_m). 0 by default: the fields do not carry a margin, and
@@ -90,6 +92,12 @@ struct SafeStopOptions {
   /// It is published when the predicted collision is less than its own duration + latency +
   /// this margin (s) ahead and no new trajectory has come.
   double margin_s = 0.5;
+  /// ... and also once a collision predicted within timing.publish_collision_horizon_s has
+  /// waited this long (s) for a new trajectory: the robot slows while the planner keeps
+  /// trying (the plan in progress is replaced by one from the stopping trajectory). The
+  /// graph's contract is a trajectory clear of a new obstacle within 300 ms of the scan
+  /// (stack-design.md), and a replan on a long route may take a second. > 0.
+  double replan_grace_s = 0.25;
 };
 
 /// Goals the planner refuses at once (PLANNER_STATUS FAILED with the reason).

@@ -23,13 +23,18 @@ TEST(PlannerProcessOptionsTest, ShippedFileLoadsWithTheDefaults) {
   EXPECT_EQ(o.timing.replan_budget_s, d.timing.replan_budget_s);
   EXPECT_EQ(o.triggers.drift_position_m, d.triggers.drift_position_m);
   EXPECT_EQ(o.stop.margin_s, d.stop.margin_s);
+  EXPECT_EQ(o.stop.replan_grace_s, d.stop.replan_grace_s);
+  EXPECT_EQ(o.map.flush_all_from_rest, d.map.flush_all_from_rest);
   EXPECT_TRUE(std::filesystem::exists(o.planner_config)) << o.planner_config;
 }
 
 TEST(PlannerProcessOptionsTest, ValuesAreReadAndBadOnesNamed) {
   const PlannerProcessOptions o = LoadPlannerProcessOptions(
-      WriteYaml("good", "map: {unknown: occupied, field_update_period_s: 0.5}\ntiming: {replan_budget_s: 0.4}\n"));
+      WriteYaml("good", "map: {unknown: occupied, field_update_period_s: 0.5, flush_all_from_rest: false}\n"
+                        "timing: {replan_budget_s: 0.4}\nstop: {replan_grace_s: 0.6}\n"));
   EXPECT_EQ(o.map.unknown, UnknownVoxelPolicy::kOccupied);
+  EXPECT_FALSE(o.map.flush_all_from_rest);
+  EXPECT_EQ(o.stop.replan_grace_s, 0.6);
   EXPECT_EQ(o.map.field_update_period_s, 0.5);
   EXPECT_EQ(o.timing.replan_budget_s, 0.4);
   const auto expect_error = [](const std::string& text, const std::string& field) {
@@ -44,6 +49,7 @@ TEST(PlannerProcessOptionsTest, ValuesAreReadAndBadOnesNamed) {
   expect_error("timing: {replan_budget_s: 0.01}\n", "replan_budget_s");
   expect_error("triggers: {drift_position_m: -1}\n", "drift_position_m");
   expect_error("stop: {latency: 1}\n", "stop.latency");
+  expect_error("stop: {replan_grace_s: 0}\n", "stop.replan_grace_s");
   expect_error("status_period_s: .nan\n", "status_period_s");
   expect_error("deterministic: {prm_samples: 0}\n", "deterministic.prm_samples");
   expect_error("deterministic: {rrt_iterations: -3}\n", "deterministic.rrt_iterations");

@@ -232,13 +232,15 @@ TEST_F(PlannerProcess, ABoxOnTheRouteTriggersAReplanThatAvoidsIt) {
 }
 
 // A plan whose fields do not yet hold an obstacle far from its start (the background has not got
-// to it, and it is outside the plan's fresh region) is checked against the newest map before it
+// to it, and it is outside the plan's fresh region; here a plan from rest, told not to flush
+// the whole map first, stands in for a moving replan) is checked against the newest map before it
 // goes out: it collides, so the planner replans with the obstacle's surroundings brought into
 // its fields (going out first if the collision is far enough ahead), and the robot's last
 // trajectory goes around it.
 TEST_F(PlannerProcess, AnObstacleTheFieldsLackIsCaughtBeforeThePlanGoesOutAndAvoided) {
   WriteText(dir_ + "/planner.yaml", ReadText(dir_ + "/planner.yaml") +
-                                        "map: {fresh_radius_m: 1.0, field_update_period_s: 60.0}\n");
+                                        "map: {fresh_radius_m: 1.0, field_update_period_s: 60.0, "
+                                        "flush_all_from_rest: false}\n");
   RestartPlanner();
   Send(ReachableGoal(41));
   ASSERT_TRUE(SpinWithRobot([&] { return !out_.trajectories.empty(); }, 60.0)) << ReadText(dir_ + "/planner.txt");
