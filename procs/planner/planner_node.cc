@@ -217,7 +217,7 @@ void PlannerNode::CheckActiveAgainstMap(std::int64_t now) {
   const bool first = !collision_utime_;
   const bool sooner = collision_utime_ && at < *collision_utime_ - Micros(kSooner_s);
   collision_utime_ = at;
-  if (first) collision_seen_utime_ = now;
+  if (first || sooner) collision_seen_utime_ = now;  // the grace of the safe stop counts from here
   RememberCollision(*active_->trajectory, hit->t_s);
   if (active_->stopping) return;  // braking already; the replans go on (retry)
   const std::string reason =

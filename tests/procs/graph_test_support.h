@@ -137,6 +137,11 @@ class HeartbeatWatcher {
   lcm::LCM& lcm() { return lcm_; }
 
   /// Handles messages for `seconds`.
+  /// Handles every message already queued, without waiting.
+  void Drain() {
+    while (lcm_.handleTimeout(0) > 0) {
+    }
+  }
   void Spin(double seconds) {
     const Clock::time_point start = Clock::now();
     while (SecondsSince(start) < seconds) lcm_.handleTimeout(10);

@@ -442,7 +442,7 @@ class ReplanLatency : public testing::Test {
   /// found.
   std::optional<Event> PlaceBoxAhead() {
     if (in_.trajectories.empty() || !in_.robot || RobotSpeed() < 0.3) return std::nullopt;
-    const poly_trajectory_t& on = in_.trajectories.back().msg;
+    const poly_trajectory_t on = in_.trajectories.back().msg;
     const double t_now = 1e-6 * static_cast<double>(procs::NowUtime() - on.start_utime);
     if (t_now < 0.0) return std::nullopt;  // a replan not joined yet
     const std::vector<PathPoint> path = SamplePath(on, 0.02);
@@ -467,6 +467,20 @@ class ReplanLatency : public testing::Test {
       if (goal_state_ && !SensedReachableRegion(with_box, kinematics_, Robot()).Reaches({goal_state_->x_m, goal_state_->y_m})) {
         continue;
       }
+      // The checks took a while (a flood fill over the room each, slow on a loaded machine):
+      // the robot drove on meanwhile. A box placed from where it was could land on it.
+      watcher_->Drain();
+      if (!in_.robot || in_.trajectories.empty() || in_.trajectories.back().msg.trajectory_id != on.trajectory_id ||
+          (path[at].base() - Robot()).norm() < 2.0) {
+        return std::nullopt;
+      }
+      // Ahead of where the robot is now (its nearest path point up to the box), along the path.
+      std::size_t robot_index = now_index;
+      for (std::size_t i = now_index; i <= at; ++i) {
+        if ((path[i].base() - Robot()).norm() < (path[robot_index].base() - Robot()).norm()) robot_index = i;
+      }
+      e.ahead_m = 0.0;
+      for (std::size_t i = robot_index; i < at; ++i) e.ahead_m += (path[i + 1].base() - path[i].base()).norm();
       e.robot_speed_mps = RobotSpeed();
       return e;
     }

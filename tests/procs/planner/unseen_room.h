@@ -48,7 +48,9 @@ inline ProvenBaseRegion SensedReachableRegion(const Scene& scene, const Kinemati
                                               const Eigen::Vector2d& from) {
   BaseOpennessOptions openness;
   openness.clearance_m = kSensedPassageClearanceM;
-  return ProvenBaseRegion(scene, kinematics, from, openness);
+  BaseReachabilityOptions grid;
+  grid.resolution_m = 0.02;  // a quarter of the 1 cm default's cells (the proof stays conservative)
+  return ProvenBaseRegion(scene, kinematics, from, openness, grid);
 }
 
 /// A goal configuration (arm bent, random yaw) r_min-r_max m from `from`, exactly clear of
