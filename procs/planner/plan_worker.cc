@@ -157,14 +157,19 @@ void PlanWorker::Run(std::stop_token thread_stop) {
     for (MapWork& work : maps) world_.Queue(std::move(work));
     if (job) {
       PlanJobOutcome outcome = Execute(*job, job_token);
-      std::lock_guard lock(mutex_);
-      running_ = false;
-      ++counts_.plans;
-      if (outcome.result.status == PlanStatus::kCancelled) ++counts_.cancelled;
-      results_.push_back(std::move(outcome));
-      results_ready_.notify_all();
+      const bool cancelled = outcome.result.status == PlanStatus::kCancelled;
+      {
+        std::lock_guard lock(mutex_);
+        running_ = false;
+        ++counts_.plans;
+        if (cancelled) ++counts_.cancelled;
+        results_.push_back(std::move(outcome));
+        results_ready_.notify_all();
+      }
+      if (cancelled) continue;  // replaced by an urgent plan (a new collision): it goes first
     }
-    // One overdue slice per pass, also between back-to-back plans: while the robot replans
+    // One overdue slice per pass, also between back-to-back plans (not before a plan that
+    // replaced a cancelled one): while the robot replans
     // continuously the map far from its start would otherwise never reach the fields (stale
     // obstacles closed passages the map had long opened, and the plans went round them).
     const std::optional<Clock::time_point> oldest = world_.OldestPending();
