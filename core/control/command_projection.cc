@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace topay {
 namespace {
@@ -22,41 +23,78 @@ double CoupledRatio(const Eigen::Vector2d& u, const TrackerLimits& limits) {
   return std::abs(u(0)) / limits.base.v_max_mps + std::abs(u(1)) / limits.base.omega_max_radps;
 }
 
-bool InsideBoxes(const Eigen::Vector2d& u, const Eigen::Vector2d& u_prev, double dt_s,
-                 const TrackerLimits& limits) {
-  return std::abs(u(0)) <= limits.base.v_max_mps &&
-         std::abs(u(1)) <= limits.base.omega_max_radps &&
-         std::abs(u(0) - u_prev(0)) <= limits.base.a_max_mps2 * dt_s &&
-         std::abs(u(1) - u_prev(1)) <= limits.base.beta_max_radps2 * dt_s;
+
+// The box B = rate window intersected with the speed box, per coordinate: [lo, hi]; when
+// they do not intersect, the speed bound nearest prev (both ends).
+struct Interval {
+  double lo;
+  double hi;
+};
+
+Interval RateAndSpeedInterval(double prev, double rate_dt, double max) {
+  Interval interval{std::max(-max, prev - rate_dt), std::min(max, prev + rate_dt)};
+  if (interval.lo > interval.hi) interval.lo = interval.hi = std::clamp(prev, -max, max);
+  return interval;
+}
+
+// Parameters s of p0 + s d (d != 0 in this coordinate or not) with lo <= coordinate <= hi,
+// intersected into [*s_lo, *s_hi].
+void ClipLine(double p0, double d, const Interval& box, double* s_lo, double* s_hi) {
+  if (d == 0.0) {
+    if (p0 < box.lo || p0 > box.hi) *s_hi = -1.0;  // empty
+    return;
+  }
+  double a = (box.lo - p0) / d;
+  double b = (box.hi - p0) / d;
+  if (a > b) std::swap(a, b);
+  *s_lo = std::max(*s_lo, a);
+  *s_hi = std::min(*s_hi, b);
 }
 
 }  // namespace
 
 Eigen::Vector2d ProjectBaseInput(const Eigen::Vector2d& u, const Eigen::Vector2d& u_prev,
                                  double dt_s, const TrackerLimits& limits) {
-  Eigen::Vector2d boxed;
-  boxed(0) = ClampRateAndSpeed(u(0), u_prev(0), limits.base.a_max_mps2 * dt_s,
-                               limits.base.v_max_mps);
-  boxed(1) = ClampRateAndSpeed(u(1), u_prev(1), limits.base.beta_max_radps2 * dt_s,
-                               limits.base.omega_max_radps);
+  const double v_max = limits.base.v_max_mps;
+  const double omega_max = limits.base.omega_max_radps;
+  const Interval box_v = RateAndSpeedInterval(u_prev(0), limits.base.a_max_mps2 * dt_s, v_max);
+  const Interval box_w =
+      RateAndSpeedInterval(u_prev(1), limits.base.beta_max_radps2 * dt_s, omega_max);
+  // The Euclidean projection onto the box B.
+  const Eigen::Vector2d boxed(std::clamp(u(0), box_v.lo, box_v.hi),
+                              std::clamp(u(1), box_w.lo, box_w.hi));
   if (!limits.coupled_v_omega || CoupledRatio(boxed, limits) <= 1.0) return boxed;
-  // Anchor: a point satisfying every limit; u_prev if it does, else the origin.
-  const bool prev_feasible =
-      CoupledRatio(u_prev, limits) <= 1.0 && InsideBoxes(u_prev, u_prev, dt_s, limits);
-  const Eigen::Vector2d anchor = prev_feasible ? u_prev : Eigen::Vector2d::Zero();
-  // Largest s in [0, 1] with anchor + s (boxed - anchor) inside the diamond (convex, so the
-  // feasible s form an interval [0, s*]); bisection keeps `lo` feasible.
-  double lo = 0.0;
-  double hi = 1.0;
-  for (int i = 0; i < 50; ++i) {
-    const double mid = 0.5 * (lo + hi);
-    if (CoupledRatio(anchor + mid * (boxed - anchor), limits) <= 1.0) {
-      lo = mid;
-    } else {
-      hi = mid;
+  // Otherwise the projection onto B and the diamond D lies on D's boundary (were it inside
+  // D, it would be the projection onto B): the nearest point of the four faces clipped to B.
+  // Face (sv, sw): p(s) = (sv v_max (1 - s), sw omega_max s), s in [0, 1].
+  Eigen::Vector2d best = Eigen::Vector2d::Zero();
+  double best_distance = std::numeric_limits<double>::infinity();
+  for (const double sv : {-1.0, 1.0}) {
+    for (const double sw : {-1.0, 1.0}) {
+      const Eigen::Vector2d p0(sv * v_max, 0.0);
+      const Eigen::Vector2d d(-sv * v_max, sw * omega_max);
+      double s_lo = 0.0;
+      double s_hi = 1.0;
+      ClipLine(p0(0), d(0), box_v, &s_lo, &s_hi);
+      ClipLine(p0(1), d(1), box_w, &s_lo, &s_hi);
+      if (s_lo > s_hi) continue;  // the face misses B
+      const double s = std::clamp((u - p0).dot(d) / d.squaredNorm(), s_lo, s_hi);
+      const Eigen::Vector2d point = p0 + s * d;
+      const double distance = (point - u).squaredNorm();
+      if (distance < best_distance) {
+        best_distance = distance;
+        best = point;
+      }
     }
   }
-  return anchor + lo * (boxed - anchor);
+  if (std::isfinite(best_distance)) {
+    // Rounding may leave the point 1 ulp outside the speed box.
+    return Eigen::Vector2d(std::clamp(best(0), -v_max, v_max),
+                           std::clamp(best(1), -omega_max, omega_max));
+  }
+  // B misses D entirely (u_prev far outside the limits): limits before rates, the boxed
+  // point scaled into D.
+  return boxed / CoupledRatio(boxed, limits);
 }
 
 double ProjectJointVelocity(double qd, double qd_prev, double dt_s, double qd_max,

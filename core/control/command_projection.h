@@ -13,11 +13,11 @@ namespace topay {
 ///   |v| <= v_max, |omega| <= omega_max,             (speed box)
 ///   |v - v_prev| <= a_max dt, |omega - omega_prev| <= beta_max dt,   (rate box)
 ///   |v| / v_max + |omega| / omega_max <= 1          (coupled, eq. (9), if enabled).
-/// First u is clamped into the intersection of both boxes; if it is then outside the diamond,
-/// it is moved along the segment towards an anchor that satisfies everything (u_prev when
-/// u_prev does, else zero) to the last point inside (bisection; the result is always
-/// feasible). When u_prev is so far out of the speed box that the boxes do not intersect, the
-/// speed box wins (limits before rates).
+/// The result is the Euclidean projection of u onto that convex polygon: the box clamp when
+/// it satisfies the coupled bound, else the nearest point of the diamond's faces inside the
+/// boxes. When u_prev is so far out of the speed box that the rate and speed boxes do not
+/// intersect, the speed box wins (limits before rates); when the boxes miss the diamond, the
+/// diamond wins.
 Eigen::Vector2d ProjectBaseInput(const Eigen::Vector2d& u, const Eigen::Vector2d& u_prev,
                                  double dt_s, const TrackerLimits& limits);
 

@@ -21,7 +21,7 @@ struct NmpcOptions {
   double control_period_s = 0.02;  ///< Period between solves (50 Hz); the warm start shifts by it.
   double latency_s = 0.02;         ///< Known command latency: the state is predicted this far.
   double time_budget_s = 0.005;    ///< A solve over this falls back to the shifted previous solution.
-  int max_iterations = 15;         ///< Levenberg-Marquardt iterations per solve (base and joints).
+  int max_iterations = 10;         ///< Levenberg-Marquardt iterations per solve (base and joints).
 
   // Cost weights (> 0 unless said otherwise).
   double position_weight = 100.0;       ///< Base position error (1/m^2).
@@ -34,7 +34,7 @@ struct NmpcOptions {
   double a_weight = 0.05;               ///< Linear acceleration (s^4/m^2).
   double beta_weight = 0.05;            ///< Yaw acceleration (s^4/rad^2).
   double qdd_weight = 0.01;             ///< Joint accelerations (s^4/rad^2).
-  double limit_weight = 1.0e4;          ///< Penalty on the squared excess over a penalised limit.
+  double limit_weight = 10.0;           ///< Penalty on the squared excess over a penalised limit.
 
   // Safe behaviour (core/control/safe_stop.h).
   double stale_state_s = 0.1;  ///< A state older than this -> stop.

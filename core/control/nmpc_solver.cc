@@ -13,7 +13,7 @@ ceres::Solver::Options MakeSolverOptions(const NmpcOptions& options) {
   ceres::Solver::Options solver;
   solver.minimizer_type = ceres::TRUST_REGION;
   solver.trust_region_strategy_type = ceres::LEVENBERG_MARQUARDT;
-  solver.linear_solver_type = ceres::DENSE_QR;
+  solver.linear_solver_type = ceres::DENSE_NORMAL_CHOLESKY;
   solver.num_threads = 1;
   solver.max_num_iterations = options.max_iterations;
   solver.function_tolerance = 1e-7;
@@ -74,6 +74,13 @@ NmpcSolver::NmpcSolver(const NmpcOptions& options, const TrackerLimits& limits)
 
 NmpcSolver::~NmpcSolver() = default;
 
+void NmpcSolver::set_time_budget_s(double budget_s) {
+  NmpcOptions changed = options_;
+  changed.time_budget_s = budget_s;
+  changed.Check();
+  options_ = changed;
+}
+
 void NmpcSolver::ResetWarmStart() {
   has_solution_ = false;
   ++summary_.num_warm_resets;
@@ -92,6 +99,7 @@ void NmpcSolver::PrepareWarmStart(const ControlCommand& last_command) {
 
 bool NmpcSolver::SolveProblem(ceres::Problem* problem, double remaining_s, int* iterations,
                               double* initial_cost, double* final_cost) {
+  if (remaining_s <= 0.0) return true;  // out of time: the caller falls back
   solver_options_.max_solver_time_in_seconds = remaining_s;
   ceres::Solve(solver_options_, problem, &ceres_summary_);
   *iterations += static_cast<int>(ceres_summary_.iterations.size());

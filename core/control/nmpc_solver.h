@@ -69,6 +69,9 @@ class NmpcSolver {
   /// trajectory id). Counted in the summary.
   void ResetWarmStart();
 
+  /// Changes time_budget_s (finite, > 0; else std::invalid_argument naming it).
+  void set_time_budget_s(double budget_s);
+
   const InputSequence& solution() const { return solution_; }
   const NmpcSummary& summary() const { return summary_; }
   const NmpcOptions& options() const { return options_; }
