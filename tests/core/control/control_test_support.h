@@ -128,8 +128,10 @@ struct ClosedLoopResult {
   int fallbacks = 0;
 };
 
+/// solve_ms (optional): every solve's NmpcSummary::solve_ms appended.
 inline ClosedLoopResult RunClosedLoop(NmpcSolver* solver, const SyntheticReference& reference,
-                                      WholeBodyState state, double run_s) {
+                                      WholeBodyState state, double run_s,
+                                      std::vector<double>* solve_ms = nullptr) {
   const NmpcOptions& options = solver->options();
   const double period = options.control_period_s;
   ReferenceHorizon horizon = ReferenceHorizon::Zero(options.horizon_steps, kJoints);
@@ -149,6 +151,7 @@ inline ClosedLoopResult RunClosedLoop(NmpcSolver* solver, const SyntheticReferen
         std::max(result.worst_limit_ratio,
                  WorstInputLimitRatio(last, period, options.step_s, solver->limits(), inputs));
     result.fallbacks += solver->summary().fell_back;
+    if (solve_ms != nullptr) solve_ms->push_back(solver->summary().solve_ms);
     inputs.CommandAt(0, &last);
     result.commands.push_back(last);
     history.Push(t, last);
