@@ -16,9 +16,9 @@ ceres::Solver::Options MakeSolverOptions(const NmpcOptions& options) {
   solver.linear_solver_type = ceres::DENSE_NORMAL_CHOLESKY;
   solver.num_threads = 1;
   solver.max_num_iterations = options.max_iterations;
-  solver.function_tolerance = 1e-7;
+  solver.function_tolerance = 1e-5;
   solver.gradient_tolerance = 1e-10;
-  solver.parameter_tolerance = 1e-7;
+  solver.parameter_tolerance = 1e-6;
   solver.logging_type = ceres::SILENT;
   solver.minimizer_progress_to_stdout = false;
   return solver;
