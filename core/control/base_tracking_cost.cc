@@ -17,7 +17,7 @@ double Sign(double value) { return value > 0.0 ? 1.0 : (value < 0.0 ? -1.0 : 0.0
 
 BaseTrackingCost::BaseTrackingCost(const NmpcOptions& options, const TrackerLimits& limits)
     : steps_(options.horizon_steps), options_(options), limits_(limits) {
-  set_num_residuals(10 * steps_);
+  set_num_residuals(8 * steps_);
   mutable_parameter_block_sizes()->push_back(2 * steps_);
   states_.setZero(3, steps_ + 1);
 }
@@ -34,11 +34,11 @@ bool BaseTrackingCost::Evaluate(double const* const* parameters, double* residua
   const int N = steps_;
   const double dt = options_.step_s;
   const Eigen::Map<const Eigen::Matrix2Xd> u(parameters[0], 2, N);
-  Eigen::Map<Eigen::VectorXd> r(residuals, 10 * N);
+  Eigen::Map<Eigen::VectorXd> r(residuals, 8 * N);
   RolloutUnicycle(x0_, u, dt, &states_);
 
   const bool with_jacobian = jacobians != nullptr && jacobians[0] != nullptr;
-  RowMajorMap J(with_jacobian ? jacobians[0] : nullptr, with_jacobian ? 10 * N : 0,
+  RowMajorMap J(with_jacobian ? jacobians[0] : nullptr, with_jacobian ? 8 * N : 0,
                 with_jacobian ? 2 * N : 0);
   if (with_jacobian) {
     J.setZero();
@@ -75,26 +75,22 @@ bool BaseTrackingCost::Evaluate(double const* const* parameters, double* residua
       // Feed-forward deviation: sqrt(w) (u_k - u_ref,k).
       const int input_row = 3 * N + 2 * k + c;
       r(input_row) = sqrt_input[c] * (u(c, k) - reference_->u_base(c, k));
-      // Input rate: sqrt(w) (u_k - u_k-1) / dt_k.
+      // Input rate and its limit in one residual:
+      //   phi(rate) = sqrt(w) rate + sqrt(w_lim) sign(rate) max(0, |rate| - rate_max),
+      // the rate cost inside the limit, a slope steeper by sqrt(w_lim) beyond it.
       const int rate_row = 5 * N + 2 * k + c;
-      r(rate_row) = sqrt_rate[c] * rate;
-      // Rate limit hinge: sqrt(w_lim) max(0, |rate| - rate_max).
-      const int hinge_row = 7 * N + 2 * k + c;
       const double excess = std::abs(rate) - rate_max[c];
-      r(hinge_row) = excess > 0.0 ? sqrt_limit * excess : 0.0;
+      const bool beyond = excess > 0.0;
+      r(rate_row) = sqrt_rate[c] * rate + (beyond ? sqrt_limit * Sign(rate) * excess : 0.0);
       if (with_jacobian) {
         J(input_row, 2 * k + c) = sqrt_input[c];
-        J(rate_row, 2 * k + c) = sqrt_rate[c] / dt_k;
-        if (k > 0) J(rate_row, 2 * (k - 1) + c) = -sqrt_rate[c] / dt_k;
-        if (excess > 0.0) {
-          const double d_excess = sqrt_limit * Sign(rate) / dt_k;  // d|rate|/du_k
-          J(hinge_row, 2 * k + c) = d_excess;
-          if (k > 0) J(hinge_row, 2 * (k - 1) + c) = -d_excess;
-        }
+        const double d_phi = (sqrt_rate[c] + (beyond ? sqrt_limit : 0.0)) / dt_k;  // dphi/du_k
+        J(rate_row, 2 * k + c) = d_phi;
+        if (k > 0) J(rate_row, 2 * (k - 1) + c) = -d_phi;
       }
     }
     // Coupled v-omega hinge (eq. (9)): sqrt(w_lim) max(0, |v| / v_max + |omega| / omega_max - 1).
-    const int coupled_row = 9 * N + k;
+    const int coupled_row = 7 * N + k;
     const double ratio = std::abs(u(0, k)) / limits_.base.v_max_mps +
                          std::abs(u(1, k)) / limits_.base.omega_max_radps;
     const bool coupled_active = limits_.coupled_v_omega && ratio > 1.0;

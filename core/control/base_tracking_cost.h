@@ -11,14 +11,18 @@ namespace topay {
 
 /// The base's NMPC residuals over the whole horizon as one Ceres cost function with an
 /// analytic Jacobian: one parameter block u = (v_0, omega_0, ..., v_N-1, omega_N-1) (2N),
-/// 10 N residuals, in row blocks:
+/// 8 N residuals, in row blocks:
 ///   [0, 3N)   pose:   sqrt(w_p f_j) (x_j - x_ref,j), same for y, sqrt(w_yaw f_j) wrap(yaw_j - yaw_ref,j)
 ///                     (j = 1..N, f_N = terminal_weight_factor, else 1; states by RolloutUnicycle)
 ///   [3N, 5N)  input:  sqrt(w_v) (v_k - v_ref,k), sqrt(w_omega) (omega_k - omega_ref,k)
-///   [5N, 7N)  rate:   sqrt(w_a) (v_k - v_k-1) / dt_k, sqrt(w_beta) (omega_k - omega_k-1) / dt_k
-///   [7N, 9N)  rate limit hinge: sqrt(w_lim) max(0, |v_k - v_k-1| / dt_k - a_max), same for beta_max
-///   [9N, 10N) coupled hinge: sqrt(w_lim) max(0, |v_k| / v_max + |omega_k| / omega_max - 1)
+///   [5N, 7N)  rate and rate limit, rate = (u_k - u_k-1) / dt_k, for v (w_a, a_max) and omega
+///             (w_beta, beta_max):  sqrt(w) rate + sqrt(w_lim) sign(rate) max(0, |rate| - max)
+///             (its square: the rate cost inside the limit; beyond it, the penalty
+///             w_lim excess^2 plus a cross term 2 sqrt(w w_lim) |rate| excess, both >= 0)
+///   [7N, 8N)  coupled hinge: sqrt(w_lim) max(0, |v_k| / v_max + |omega_k| / omega_max - 1)
 ///                     (zero rows when TrackerLimits::coupled_v_omega is off)
+/// One residual per rate instead of a cost row and a hinge row: every row costs Ceres time
+/// (the dense Jacobian is checked, copied and multiplied each iteration).
 /// where u_-1 is the last command sent and dt_0 = control_period_s (the first input follows
 /// the last command one control period later), dt_k = step_s for k >= 1.
 ///

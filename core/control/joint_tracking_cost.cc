@@ -13,7 +13,7 @@ using RowMajorMap =
 JointTrackingCost::JointTrackingCost(const NmpcOptions& options, int joint, double qdd_max_radps2)
     : steps_(options.horizon_steps), joint_(joint), qdd_max_radps2_(qdd_max_radps2),
       options_(options) {
-  set_num_residuals(4 * steps_);
+  set_num_residuals(3 * steps_);
   mutable_parameter_block_sizes()->push_back(steps_);
 }
 
@@ -29,9 +29,9 @@ bool JointTrackingCost::Evaluate(double const* const* parameters, double* residu
   const int N = steps_;
   const double dt = options_.step_s;
   const double* qd = parameters[0];
-  Eigen::Map<Eigen::VectorXd> r(residuals, 4 * N);
+  Eigen::Map<Eigen::VectorXd> r(residuals, 3 * N);
   const bool with_jacobian = jacobians != nullptr && jacobians[0] != nullptr;
-  RowMajorMap J(with_jacobian ? jacobians[0] : nullptr, with_jacobian ? 4 * N : 0,
+  RowMajorMap J(with_jacobian ? jacobians[0] : nullptr, with_jacobian ? 3 * N : 0,
                 with_jacobian ? N : 0);
   if (with_jacobian) J.setZero();
 
@@ -48,24 +48,22 @@ bool JointTrackingCost::Evaluate(double const* const* parameters, double* residu
     r(k) = factor * (q - reference_->q_rad(joint_, k + 1));
     // Feed-forward deviation: sqrt(w_qd) (qd_k - qd_ref,k).
     r(N + k) = sqrt_qd * (qd[k] - reference_->qd_radps(joint_, k));
-    // Rate: sqrt(w_qdd) (qd_k - qd_k-1) / dt_k.
+    // Rate (qd_k - qd_k-1) / dt_k, against the last command for k = 0.
     const double dt_k = k == 0 ? options_.control_period_s : dt;
     const double previous = k == 0 ? qd_last_radps_ : qd[k - 1];
     const double rate = (qd[k] - previous) / dt_k;
-    r(2 * N + k) = sqrt_qdd * rate;
-    // Rate limit hinge: sqrt(w_lim) max(0, |rate| - qdd_max).
+    // Rate and its limit in one residual:
+    //   sqrt(w_qdd) rate + sqrt(w_lim) sign(rate) max(0, |rate| - qdd_max).
     const double excess = std::abs(rate) - qdd_max_radps2_;
-    r(3 * N + k) = excess > 0.0 ? sqrt_limit * excess : 0.0;
+    const bool beyond = excess > 0.0;
+    const double sign = rate > 0.0 ? 1.0 : -1.0;
+    r(2 * N + k) = sqrt_qdd * rate + (beyond ? sqrt_limit * sign * excess : 0.0);
     if (with_jacobian) {
       for (int i = 0; i <= k; ++i) J(k, i) = factor * dt;  // dq_k+1/dqd_i = dt (i <= k)
       J(N + k, k) = sqrt_qd;
-      J(2 * N + k, k) = sqrt_qdd / dt_k;
-      if (k > 0) J(2 * N + k, k - 1) = -sqrt_qdd / dt_k;
-      if (excess > 0.0) {
-        const double d_excess = sqrt_limit * (rate > 0.0 ? 1.0 : -1.0) / dt_k;
-        J(3 * N + k, k) = d_excess;
-        if (k > 0) J(3 * N + k, k - 1) = -d_excess;
-      }
+      const double d_phi = (sqrt_qdd + (beyond ? sqrt_limit : 0.0)) / dt_k;
+      J(2 * N + k, k) = d_phi;
+      if (k > 0) J(2 * N + k, k - 1) = -d_phi;
     }
   }
   return true;

@@ -10,11 +10,11 @@ namespace topay {
 
 /// One joint's NMPC residuals over the horizon (the joints are integrators, linear and
 /// independent of each other and of the base, so each is its own small problem), with an
-/// analytic Jacobian: one parameter block qd = (qd_0 .. qd_N-1) (N), 4 N residuals:
+/// analytic Jacobian: one parameter block qd = (qd_0 .. qd_N-1) (N), 3 N residuals:
 ///   [0, N)   position: sqrt(w_q f_k) (q_k+1 - q_ref,k+1), q_k+1 = q_0 + dt sum_{i <= k} qd_i
 ///   [N, 2N)  input:    sqrt(w_qd) (qd_k - qd_ref,k)
-///   [2N, 3N) rate:     sqrt(w_qdd) (qd_k - qd_k-1) / dt_k
-///   [3N, 4N) rate limit hinge: sqrt(w_lim) max(0, |qd_k - qd_k-1| / dt_k - qdd_max)
+///   [2N, 3N) rate and rate limit, rate = (qd_k - qd_k-1) / dt_k:
+///            sqrt(w_qdd) rate + sqrt(w_lim) sign(rate) max(0, |rate| - qdd_max)
 /// with qd_-1 the last command, dt_0 = control_period_s, dt_k = step_s (k >= 1).
 class JointTrackingCost final : public ceres::CostFunction {
  public:
