@@ -11,9 +11,11 @@ namespace topay {
 ///   + joint_weight |q_k+1 - q_ref|^2           (x terminal_weight_factor at k + 1 = N)
 ///   + v_weight (v_k - v_ref)^2 + omega_weight (omega_k - omega_ref)^2
 ///   + qd_weight |qd_k - qd_ref|^2               (deviation from the feed-forward)
-///   + a_weight ((v_k - v_k-1) / dt)^2 + beta_weight ((omega_k - omega_k-1) / dt)^2
-///   + qdd_weight |(qd_k - qd_k-1) / dt|^2       (input rates; k = 0 against the last command)
-///   + limit_weight (hinge of every rate limit and of the coupled v-omega bound)^2.
+///   + (sqrt(a_weight) a_k + sqrt(limit_weight) sign(a_k) max(0, |a_k| - a_max))^2,
+///     a_k = (v_k - v_k-1) / dt_k; likewise beta (beta_weight) and each joint (qdd_weight)
+///     (input rates and their limits; k = 0 against the last command, dt_0 = control period)
+///   + limit_weight max(0, |v_k| / v_max + |omega_k| / omega_max - 1)^2 (coupled, eq. (9)).
+/// See core/control/base_tracking_cost.h and joint_tracking_cost.h.
 struct NmpcOptions {
   // Horizon and timing.
   int horizon_steps = 25;          ///< N, steps of the horizon (25 x 40 ms = 1 s).

@@ -19,7 +19,7 @@
 namespace topay {
 
 /// The NMPC of the trajectory tracker (issue 19; docs/control.md), solved with Ceres
-/// (Levenberg-Marquardt, dense QR, one thread).
+/// (Levenberg-Marquardt, dense normal Cholesky, one thread).
 ///
 /// Model: unicycle base (x, y, yaw; inputs v, omega; RolloutUnicycle) and N joints as
 /// integrators of their velocities, over horizon_steps steps of step_s. The joints are linear
@@ -31,8 +31,8 @@ namespace topay {
 ///   - exact (Ceres parameter bounds): |v| <= v_max, |omega| <= omega_max, |qd_j| <= qd_max,j.
 ///     They are boxes on the decision variables (the inputs), which is what Ceres bounds
 ///     express exactly and cheaply (projected trust-region steps, no extra residuals).
-///   - penalties (squared hinges, weight limit_weight): the rates |u_k - u_k-1| / dt <=
-///     a_max, beta_max, qdd_max,j and the coupled |v| / v_max + |omega| / omega_max <= 1.
+///   - penalties (weight limit_weight on the squared excess): the rates |u_k - u_k-1| / dt
+///     <= a_max, beta_max, qdd_max,j and the coupled |v| / v_max + |omega| / omega_max <= 1.
 ///     They couple two inputs or two components, so they are not boxes in the inputs
 ///     (parameterising by rates instead would turn the speed limits into sums, not boxes).
 ///   - then every returned input is projected (ProjectInputSequence) onto the exact set of
