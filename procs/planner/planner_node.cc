@@ -512,6 +512,12 @@ const ActiveTrajectory* PlannerNode::OnAt(std::int64_t utime) const {
   return nullptr;
 }
 
+double PlannerNode::CollisionDistance(std::int64_t now) const {
+  const TrajectorySample at = active_->SampleAt(*collision_utime_);
+  const TrajectorySample robot = active_->SampleAt(now);
+  return std::hypot(at.state.x_m - robot.state.x_m, at.state.y_m - robot.state.y_m);
+}
+
 void PlannerNode::MaybeSafeStop(std::int64_t now) {
   if (!collision_utime_ || !active_ || active_->stopping || active_->EndedBy(now)) return;
   const double until_collision_s = 1e-6 * (*collision_utime_ - now);
@@ -524,7 +530,8 @@ void PlannerNode::MaybeSafeStop(std::int64_t now) {
   // A near collision that waited its grace for a new trajectory: stop now, plan on meanwhile.
   const bool grace_over = collision_seen_utime_ &&
                           now - *collision_seen_utime_ >= Micros(options_.stop.replan_grace_s) &&
-                          until_collision_s <= options_.timing.publish_collision_horizon_s;
+                          (until_collision_s <= options_.timing.publish_collision_horizon_s ||
+                           CollisionDistance(now) <= options_.stop.grace_reach_m);
   if (!grace_over && last_stop_duration_s_ && now - last_stop_made_utime_ < Micros(kStopRecheck_s) &&
       until_collision_s > *last_stop_duration_s_ + lead_s + kSlack_s) {
     return;

@@ -127,6 +127,8 @@ class PlannerNode {
   // recent collisions.
   std::vector<Eigen::AlignedBox2d> FreshRegions(const TrajectorySample& start) const;
   void MaybeSafeStop(std::int64_t now);
+  /// Straight-line distance (m) from the robot's place on active_ now to the predicted collision.
+  double CollisionDistance(std::int64_t now) const;
   void MaybeFinishGoal(std::int64_t now);
   void PublishStatus(std::int8_t state, const std::string& reason, const std::string& detail,
                      const WholeBodyPlanResult* result = nullptr);

@@ -58,6 +58,7 @@ void ReadStop(YamlSection s, SafeStopOptions* o) {
   s.Read("latency_s", &o->latency_s);
   s.Read("margin_s", &o->margin_s);
   s.Read("replan_grace_s", &o->replan_grace_s);
+  s.Read("grace_reach_m", &o->grace_reach_m);
   s.Finish();
 }
 
@@ -132,6 +133,7 @@ void CheckPlannerProcessOptions(const PlannerProcessOptions& o, const std::strin
   RequireNonNegative(o.stop.latency_s, source, "stop.latency_s");
   RequireNonNegative(o.stop.margin_s, source, "stop.margin_s");
   RequirePositive(o.stop.replan_grace_s, source, "stop.replan_grace_s");
+  RequireNonNegative(o.stop.grace_reach_m, source, "stop.grace_reach_m");
   RequireNonNegative(o.goals.target_clearance_m, source, "goals.target_clearance_m");
   RequirePositive(o.status_period_s, source, "status_period_s");
   if (o.deterministic.prm_samples < 1) throw ConfigError(source, "deterministic.prm_samples", "must be >= 1");

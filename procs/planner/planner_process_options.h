@@ -92,12 +92,16 @@ struct SafeStopOptions {
   /// It is published when the predicted collision is less than its own duration + latency +
   /// this margin (s) ahead and no new trajectory has come.
   double margin_s = 0.5;
-  /// ... and also once a collision predicted within timing.publish_collision_horizon_s has
-  /// waited this long (s) for a new trajectory: the robot slows while the planner keeps
-  /// trying (the plan in progress is replaced by one from the stopping trajectory). The
-  /// graph's contract is a trajectory clear of a new obstacle within 300 ms of the scan
-  /// (stack-design.md), and a replan on a long route may take a second. > 0.
+  /// ... and also once a collision predicted within timing.publish_collision_horizon_s, or
+  /// within grace_reach_m (m, straight line from where the robot is), has waited this long
+  /// (s) for a new trajectory: the robot slows while the planner keeps trying (the plan in
+  /// progress is replaced by one from the stopping trajectory). The graph's contract is a
+  /// trajectory clear of a new obstacle within 300 ms of the scan (stack-design.md), and a
+  /// replan on a long route may take a second. Farther collisions (a table found 10 m down
+  /// a long route) wait for the replan: stopping for each would make the robot stop and go
+  /// all the way through a room it is discovering. > 0.
   double replan_grace_s = 0.25;
+  double grace_reach_m = 4.0;
 };
 
 /// Goals the planner refuses at once (PLANNER_STATUS FAILED with the reason).

@@ -31,10 +31,11 @@ TEST(PlannerProcessOptionsTest, ShippedFileLoadsWithTheDefaults) {
 TEST(PlannerProcessOptionsTest, ValuesAreReadAndBadOnesNamed) {
   const PlannerProcessOptions o = LoadPlannerProcessOptions(
       WriteYaml("good", "map: {unknown: occupied, field_update_period_s: 0.5, flush_all_from_rest: false}\n"
-                        "timing: {replan_budget_s: 0.4}\nstop: {replan_grace_s: 0.6}\n"));
+                        "timing: {replan_budget_s: 0.4}\nstop: {replan_grace_s: 0.6, grace_reach_m: 3.0}\n"));
   EXPECT_EQ(o.map.unknown, UnknownVoxelPolicy::kOccupied);
   EXPECT_FALSE(o.map.flush_all_from_rest);
   EXPECT_EQ(o.stop.replan_grace_s, 0.6);
+  EXPECT_EQ(o.stop.grace_reach_m, 3.0);
   EXPECT_EQ(o.map.field_update_period_s, 0.5);
   EXPECT_EQ(o.timing.replan_budget_s, 0.4);
   const auto expect_error = [](const std::string& text, const std::string& field) {
@@ -50,6 +51,7 @@ TEST(PlannerProcessOptionsTest, ValuesAreReadAndBadOnesNamed) {
   expect_error("triggers: {drift_position_m: -1}\n", "drift_position_m");
   expect_error("stop: {latency: 1}\n", "stop.latency");
   expect_error("stop: {replan_grace_s: 0}\n", "stop.replan_grace_s");
+  expect_error("stop: {grace_reach_m: -1}\n", "stop.grace_reach_m");
   expect_error("status_period_s: .nan\n", "status_period_s");
   expect_error("deterministic: {prm_samples: 0}\n", "deterministic.prm_samples");
   expect_error("deterministic: {rrt_iterations: -3}\n", "deterministic.rrt_iterations");
