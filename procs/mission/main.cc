@@ -81,8 +81,9 @@ int main(int argc, char** argv) {
 
   // After every input: the heartbeat's status line, and the loop ends once the mission is over.
   auto after = [&] {
-    loop.SetHealth(node.state() == mission_status_t::FAILED ? heartbeat_t::ERROR : heartbeat_t::OK,
-                   node.StatusLine());
+    std::int8_t health = heartbeat_t::OK;
+    if (node.state() == mission_status_t::FAILED) health = heartbeat_t::ERROR;
+    loop.SetHealth(health, node.StatusLine());
     if (node.finished()) loop.Stop();
   };
   loop.Subscribe<robot_state_t>(std::string(channels::ROBOT_STATE), [&](const robot_state_t& m) {

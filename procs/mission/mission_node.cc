@@ -240,7 +240,8 @@ std::optional<std::pair<double, double>> MissionNode::EndEffectorError() const {
   if (!robot_) return std::nullopt;
   const Eigen::Isometry3d X_WE = kinematics_.EndEffectorPose(robot_->state);
   const double position_m = (X_WE.translation() - target_X_WE_.translation()).norm();
-  const double angle_rad = Eigen::AngleAxisd(target_X_WE_.linear().transpose() * X_WE.linear()).angle();
+  const Eigen::Matrix3d R_TE = target_X_WE_.linear().transpose() * X_WE.linear();
+  const double angle_rad = Eigen::AngleAxisd(R_TE).angle();
   return std::make_pair(position_m, std::abs(angle_rad));
 }
 
