@@ -87,8 +87,9 @@ void MissionNode::OnPlannerStatus(const planner_status_t& msg, std::int64_t now)
   planner_seen_ = true;
   if (status_.state == mission_status_t::IDLE) MaybeStart(now);
   if (!MovingStep() || msg.goal_id != goal_id_) return;
-  if (msg.state != last_planner_state_) {
+  if (msg.state != last_planner_state_ || msg.detail != last_planner_detail_) {  // a change, not a repeat
     last_planner_state_ = msg.state;
+    last_planner_detail_ = msg.detail;
     spdlog::info("  planner: goal {} {}{}{}", goal_id_, PlannerStateName(msg.state),
                  msg.detail.empty() ? "" : " (" + msg.detail + ")",
                  msg.failure_reason.empty() ? "" : ": " + msg.failure_reason);
@@ -222,6 +223,7 @@ void MissionNode::SendGoal(std::int64_t now) {
   planner_ended_ = false;
   tracker_finished_ = false;
   last_planner_state_ = -1;
+  last_planner_detail_.clear();
   msgs::PlanGoal goal;
   goal.utime = now;
   goal.goal_id = goal_id_;

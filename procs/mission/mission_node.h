@@ -121,6 +121,7 @@ class MissionNode {
   bool planner_ended_ = false;         // SUCCEEDED "ended" for goal_id_
   bool tracker_finished_ = false;      // TRACKER_STATUS FINISHED for goal_id_
   std::int8_t last_planner_state_ = -1;  // for goal_id_, to log its changes
+  std::string last_planner_detail_;
   std::string last_failure_;
 };
 
