@@ -1,7 +1,7 @@
 // topay-mission in the loop: topay-sim (--follow: the ideal follower, no tracker), topay-mapper,
 // topay-planner and topay-mission as real processes over real LCM in a private network
 // namespace (skipped, with the reason, where none can be made), in a Tables room the planner
-// has never seen. A two-goal mission (goto, close the gripper, goto, open it) written by the
+// has never seen. A two-goal mission (goto, close the gripper, goto, open it, home) written by the
 // test with goals it can prove reachable (tests/procs/planner/unseen_room.h) must end with the
 // mission process's exit code 0, MISSION_STATUS SUCCEEDED and no contact in the simulator's
 // collision monitor.
@@ -16,6 +16,7 @@
 #include "core/common/random.h"
 #include "core/io/robot_loader.h"
 #include "core/robot/kinematics.h"
+#include "procs/msgs/convert_robot_state.h"
 #include "tests/procs/planner/unseen_room.h"
 #include "topay/mission_status_t.hpp"
 #include "topay/robot_state_t.hpp"
@@ -113,7 +114,9 @@ class MissionGraph : public testing::Test {
   MissionListener out_;
 };
 
-TEST_F(MissionGraph, ATwoGoalMissionSucceedsWithoutTouchingAnything) {
+TEST_F(MissionGraph, ATwoGoalMissionAndHomeSucceedWithoutTouchingAnything) {
+  std::string error;
+  const WholeBodyState start = msgs::FromMessage(*out_.robot, &error)->state;
   Rng rng(19);
   const std::optional<WholeBodyState> first = ReachableGoal(scene_, kinematics_, Eigen::Vector2d::Zero(), 3.0, 4.5, &rng);
   ASSERT_TRUE(first.has_value()) << "no first goal";
@@ -123,7 +126,8 @@ TEST_F(MissionGraph, ATwoGoalMissionSucceedsWithoutTouchingAnything) {
   WriteText(dir_ + "/mission.yaml", "name: two_goals\nsteps:\n" + GotoStep(kinematics_, *first, "pickup") +
                                         "  - {type: gripper, action: close, settle_s: 0.3}\n" +
                                         GotoStep(kinematics_, *second, "dropoff") +
-                                        "  - {type: gripper, action: open, settle_s: 0.3}\n");
+                                        "  - {type: gripper, action: open, settle_s: 0.3}\n"
+                                        "  - {type: home}\n");
   WriteText(dir_ + "/mission_options.yaml", "step_timeout_s: 90\nmax_attempts: 3\n");
   const pid_t mission = Spawn({Bin("topay-mission"), "--config", dir_ + "/mission_options.yaml", "--mission",
                                dir_ + "/mission.yaml", "--name", "mission", "--lcm-url", kLcmUrl},
@@ -137,11 +141,15 @@ TEST_F(MissionGraph, ATwoGoalMissionSucceedsWithoutTouchingAnything) {
   ASSERT_FALSE(out_.statuses.empty());
   const mission_status_t& last = out_.statuses.back();
   EXPECT_EQ(last.state, mission_status_t::SUCCEEDED) << last.detail;
-  EXPECT_EQ(last.num_steps, 4);
-  EXPECT_EQ(last.step_index, 3);
+  EXPECT_EQ(last.num_steps, 5);
+  EXPECT_EQ(last.step_index, 4);
   bool saw_running = false;
   for (const mission_status_t& s : out_.statuses) saw_running = saw_running || s.state == mission_status_t::RUNNING;
   EXPECT_TRUE(saw_running);
+  // Home: the end effector back where it was at the start.
+  const WholeBodyState end = msgs::FromMessage(*out_.robot, &error)->state;
+  EXPECT_LT((kinematics_.EndEffectorPose(end).translation() - kinematics_.EndEffectorPose(start).translation()).norm(),
+            0.03);
   ASSERT_TRUE(out_.sim.has_value());
   EXPECT_EQ(out_.sim->contact_events, 0) << Logs();
 }
