@@ -1,5 +1,6 @@
 #include "procs/mission/mission_node.h"
 
+#include <algorithm>
 #include <cmath>
 #include <utility>
 
@@ -62,6 +63,10 @@ bool MissionNode::MovingStep() const {
          (step().type == StepType::kGoto || step().type == StepType::kHome);
 }
 
+bool MissionNode::TrackerFinished() const {
+  return tracker_finished_id_ != 0 && (ended_trajectory_id_ == 0 || tracker_finished_id_ == ended_trajectory_id_);
+}
+
 ArrivalTolerance MissionNode::Tolerance() const { return step().tolerance.value_or(options_.tolerance); }
 
 double MissionNode::StepTimeout() const { return step().timeout_s.value_or(options_.step_timeout_s); }
@@ -94,8 +99,10 @@ void MissionNode::OnPlannerStatus(const planner_status_t& msg, std::int64_t now)
                  msg.detail.empty() ? "" : " (" + msg.detail + ")",
                  msg.failure_reason.empty() ? "" : ": " + msg.failure_reason);
   }
+  attempt_replans_ = std::max(attempt_replans_, static_cast<int>(msg.replans));
   if (msg.state == planner_status_t::SUCCEEDED && msg.detail.find("ended") != std::string::npos) {
     planner_ended_ = true;
+    ended_trajectory_id_ = msg.trajectory_id;
   } else if ((msg.state == planner_status_t::FAILED || msg.state == planner_status_t::CANCELLED) &&
              retry_utime_ == 0) {
     last_failure_ = msg.state == planner_status_t::FAILED
@@ -118,7 +125,7 @@ void MissionNode::OnPlannerStatus(const planner_status_t& msg, std::int64_t now)
 void MissionNode::OnTrackerStatus(const tracker_status_t& msg, std::int64_t now) {
   tracker_seen_ = true;
   if (!MovingStep() || msg.goal_id != goal_id_) return;
-  tracker_finished_ = msg.state == tracker_status_t::FINISHED;
+  tracker_finished_id_ = msg.state == tracker_status_t::FINISHED ? msg.trajectory_id : 0;
   CheckArrival(now);
 }
 
@@ -144,7 +151,7 @@ void MissionNode::Tick(std::int64_t now) {
         if (const auto error = EndEffectorError()) {
           why += fmt::format(", end effector {:.3f} m / {:.3f} rad from the target", error->first, error->second);
         }
-        if (planner_ended_ && tracker_seen_ && !tracker_finished_) why += ", tracker not FINISHED";
+        if (planner_ended_ && tracker_seen_ && !TrackerFinished()) why += ", tracker not FINISHED";
         Finish(mission_status_t::FAILED,
                fmt::format("step {} ({}) timed out after {:.1f} s: {}", step_index_ + 1, step().Describe(),
                            StepTimeout(), why),
@@ -181,6 +188,8 @@ void MissionNode::BeginStep(std::size_t index, std::int64_t now) {
   step_index_ = index;
   step_start_utime_ = now;
   attempts_ = 0;
+  step_replans_ = 0;
+  attempt_replans_ = 0;
   goal_id_ = 0;
   retry_utime_ = 0;
   last_failure_.clear();
@@ -220,8 +229,11 @@ void MissionNode::SendGoal(std::int64_t now) {
   ++attempts_;
   goal_id_ = next_goal_id_++;
   retry_utime_ = 0;
+  step_replans_ += attempt_replans_;
+  attempt_replans_ = 0;
   planner_ended_ = false;
-  tracker_finished_ = false;
+  ended_trajectory_id_ = 0;
+  tracker_finished_id_ = 0;
   last_planner_state_ = -1;
   last_planner_detail_.clear();
   msgs::PlanGoal goal;
@@ -249,7 +261,7 @@ std::optional<std::pair<double, double>> MissionNode::EndEffectorError() const {
 
 void MissionNode::CheckArrival(std::int64_t now) {
   if (!MovingStep() || !planner_ended_ || retry_utime_ != 0) return;
-  if (tracker_seen_ && !tracker_finished_) return;
+  if (tracker_seen_ && !TrackerFinished()) return;
   const std::optional<std::pair<double, double>> error = EndEffectorError();
   if (!error) return;
   const ArrivalTolerance tolerance = Tolerance();
@@ -262,6 +274,7 @@ void MissionNode::CompleteStep(std::int64_t now) {
   StepRecord& record = records_[step_index_];
   record.duration_s = Seconds(step_start_utime_, now);
   record.attempts = attempts_;
+  record.replans = step_replans_ + attempt_replans_;
   record.done = true;
   spdlog::info("step {}/{} done in {:.1f} s: {}{}", step_index_ + 1, mission_.steps.size(), record.duration_s,
                record.description, MovingStep() ? fmt::format(" ({}; {} attempt{})", status_.detail, attempts_,
@@ -279,6 +292,7 @@ void MissionNode::Finish(std::int8_t state, const std::string& detail, std::int6
   if (status_.state == mission_status_t::RUNNING && !records_[step_index_].done) {
     records_[step_index_].duration_s = Seconds(step_start_utime_, now);
     records_[step_index_].attempts = attempts_;
+    records_[step_index_].replans = step_replans_ + attempt_replans_;
   }
   status_.state = state;
   end_utime_ = now;
@@ -321,6 +335,7 @@ std::string MissionNode::Summary() const {
                         r.done ? fmt::format("{:7.1f} s", r.duration_s)
                                : started ? fmt::format("{:7.1f} s (not done)", r.duration_s) : "  not run");
     if (r.attempts > 0) text += fmt::format(", {} attempt{}", r.attempts, r.attempts == 1 ? "" : "s");
+    if (r.replans > 0) text += fmt::format(", {} replan{}", r.replans, r.replans == 1 ? "" : "s");
     text += "\n";
   }
   return text;

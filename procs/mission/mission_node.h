@@ -4,7 +4,7 @@
 //  - goto / home: a GOAL with a fresh goal id; arrived when the planner reports SUCCEEDED
 //    "trajectory N ended" for that id AND the end effector (ROBOT_STATE + kinematics) is
 //    within the tolerance of the target AND, once any TRACKER_STATUS has come (a tracker
-//    runs), the tracker reports FINISHED for that goal. A FAILED (or CANCELLED) plan is sent
+//    runs), the tracker reports FINISHED for that goal's ended trajectory. A FAILED (or CANCELLED) plan is sent
 //    again with a new id up to max_attempts; a step that does not arrive within its timeout
 //    fails the mission. home goes to the end-effector pose of the start state (the first
 //    ROBOT_STATE), with that state as the hint.
@@ -43,6 +43,7 @@ struct StepRecord {
   std::string description;
   double duration_s = 0.0;
   int attempts = 0;   ///< plans sent (goto / home)
+  int replans = 0;    ///< the planner's replans for them (PLANNER_STATUS.replans, summed over attempts)
   bool done = false;
 };
 
@@ -87,6 +88,9 @@ class MissionNode {
   bool MovingStep() const;
   const MissionStep& step() const { return mission_.steps[step_index_]; }
   ArrivalTolerance Tolerance() const;
+  // The tracker FINISHED the goal's trajectory that the planner reported ended (or, before
+  // that report, any of the goal's).
+  bool TrackerFinished() const;
   double StepTimeout() const;
   // End-effector errors (m, rad) against the target from the last robot state (nullopt: none).
   std::optional<std::pair<double, double>> EndEffectorError() const;
@@ -119,10 +123,13 @@ class MissionNode {
   int attempts_ = 0;
   std::int64_t retry_utime_ = 0;       // 0: none scheduled
   bool planner_ended_ = false;         // SUCCEEDED "ended" for goal_id_
-  bool tracker_finished_ = false;      // TRACKER_STATUS FINISHED for goal_id_
+  std::int64_t ended_trajectory_id_ = 0;     // the trajectory the planner reported ended
+  std::int64_t tracker_finished_id_ = 0;     // the trajectory of goal_id_ the tracker FINISHED (0: none)
   std::int8_t last_planner_state_ = -1;  // for goal_id_, to log its changes
   std::string last_planner_detail_;
   std::string last_failure_;
+  int attempt_replans_ = 0;            // PLANNER_STATUS.replans for goal_id_
+  int step_replans_ = 0;               // ... of the step's earlier attempts
 };
 
 }  // namespace topay::mission

@@ -76,12 +76,12 @@ class MissionNodeTest : public testing::Test {
     m.failure_reason = reason;
     node_->OnPlannerStatus(m, At(t_s));
   }
-  void Tracker(std::int64_t goal_id, std::int8_t state, double t_s) {
+  void Tracker(std::int64_t goal_id, std::int8_t state, double t_s, std::int64_t trajectory_id = 1) {
     tracker_status_t m{};
     m.utime = At(t_s);
     m.state = state;
     m.goal_id = goal_id;
-    m.trajectory_id = 1;
+    m.trajectory_id = trajectory_id;
     node_->OnTrackerStatus(m, At(t_s));
   }
   // Starts the mission at t = 0 with the robot at start_.
@@ -243,6 +243,27 @@ TEST_F(MissionNodeTest, WithATrackerArrivalWaitsForItsFinished) {
   EXPECT_FALSE(node_->finished());
   Tracker(kFirstGoalId, tracker_status_t::FINISHED, 5.2);
   EXPECT_EQ(node_->state(), mission_status_t::SUCCEEDED);
+}
+
+TEST_F(MissionNodeTest, TheTrackerMustHaveFinishedTheTrajectoryThePlannerReportedEnded) {
+  Make({Goto(a_, "pickup")});
+  Start();
+  Tracker(kFirstGoalId, tracker_status_t::TRACKING, 1.0, 4);
+  Robot(a_, 4.0);
+  planner_status_t ended{};
+  ended.utime = At(5.0);
+  ended.state = planner_status_t::SUCCEEDED;
+  ended.goal_id = kFirstGoalId;
+  ended.trajectory_id = 5;
+  ended.replans = 2;
+  ended.detail = "trajectory 5 ended";
+  node_->OnPlannerStatus(ended, At(5.0));
+  Tracker(kFirstGoalId, tracker_status_t::FINISHED, 5.1, 4);  // an earlier (stopping) trajectory
+  EXPECT_FALSE(node_->finished());
+  Tracker(kFirstGoalId, tracker_status_t::FINISHED, 5.2, 5);
+  EXPECT_EQ(node_->state(), mission_status_t::SUCCEEDED);
+  EXPECT_EQ(node_->steps()[0].replans, 2);
+  EXPECT_NE(node_->Summary().find("2 replans"), std::string::npos) << node_->Summary();
 }
 
 TEST_F(MissionNodeTest, ArrivalNeedsTheEndEffectorWithinTheTolerance) {
