@@ -1,0 +1,67 @@
+#include "procs/mission/mission_options.h"
+
+#include <cmath>
+#include <filesystem>
+
+#include <fmt/format.h>
+#include <yaml-cpp/yaml.h>
+
+#include "core/common/error.h"
+#include "core/io/yaml_section.h"
+
+namespace topay::mission {
+namespace {
+
+std::string Resolve(const std::string& path, const std::string& config_path) {
+  if (path.empty() || std::filesystem::path(path).is_absolute()) return path;
+  return (std::filesystem::path(config_path).parent_path() / path).string();
+}
+
+void Require(bool ok, double value, const std::string& source, const char* field, const char* what) {
+  if (!ok || !std::isfinite(value)) throw ConfigError(source, field, fmt::format("must be finite and {}, got {}", what, value));
+}
+
+}  // namespace
+
+void CheckMissionOptions(const MissionOptions& o, const std::string& source) {
+  if (o.max_attempts < 1) throw ConfigError(source, "max_attempts", "must be >= 1");
+  Require(o.retry_delay_s >= 0.0, o.retry_delay_s, source, "retry_delay_s", ">= 0");
+  Require(o.step_timeout_s > 0.0, o.step_timeout_s, source, "step_timeout_s", "> 0");
+  Require(o.tolerance.position_m >= 0.0, o.tolerance.position_m, source, "tolerance.position_m", ">= 0");
+  Require(o.tolerance.orientation_rad >= 0.0, o.tolerance.orientation_rad, source, "tolerance.orientation_rad", ">= 0");
+  Require(o.gripper_settle_s >= 0.0, o.gripper_settle_s, source, "gripper_settle_s", ">= 0");
+  Require(o.status_period_s > 0.0, o.status_period_s, source, "status_period_s", "> 0");
+  Require(o.start_timeout_s > 0.0, o.start_timeout_s, source, "start_timeout_s", "> 0");
+}
+
+MissionOptions LoadMissionOptions(const std::string& path) {
+  YAML::Node root;
+  try {
+    root = YAML::LoadFile(path);
+  } catch (const YAML::Exception& e) {
+    throw ConfigError(path, "", std::string("cannot read YAML: ") + e.what());
+  }
+  MissionOptions o;
+  o.source = path;
+  YamlSection top(root, path);
+  top.Read("robot_urdf", &o.robot_urdf);
+  top.Read("robot_yaml", &o.robot_yaml);
+  o.robot_urdf = Resolve(o.robot_urdf, path);
+  o.robot_yaml = Resolve(o.robot_yaml, path);
+  top.Read("max_attempts", &o.max_attempts);
+  top.Read("retry_delay_s", &o.retry_delay_s);
+  top.Read("step_timeout_s", &o.step_timeout_s);
+  YamlSection tolerance = top.Section("tolerance");
+  tolerance.Read("position_m", &o.tolerance.position_m);
+  tolerance.Read("orientation_rad", &o.tolerance.orientation_rad);
+  tolerance.Finish();
+  top.Read("gripper_settle_s", &o.gripper_settle_s);
+  top.Read("status_period_s", &o.status_period_s);
+  top.Read("wait_for_planner", &o.wait_for_planner);
+  top.Read("start_timeout_s", &o.start_timeout_s);
+  top.Finish();
+  CheckMissionOptions(o, path);
+  return o;
+}
+
+}  // namespace topay::mission
