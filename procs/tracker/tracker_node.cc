@@ -157,17 +157,20 @@ const TrackerCycle& TrackerNode::Step(std::int64_t now_utime) {
     ++counts_.solves;
     solve_ms_.push_back(out.solve_ms);
   }
-  if (out.mode != last_mode_) {
-    if (out.mode == TrackerMode::kStopStaleState) {
-      ++counts_.stops_stale;
-      spdlog::warn("robot state {}: stopping", state_ ? "stale" : "missing");
-    } else if (out.mode == TrackerMode::kStopReferenceEnded) {
-      ++counts_.stops_ended;
-      spdlog::info("trajectory {} ended: stopping", out.trajectory_id);
-    }
+  const std::int8_t previous = cycle_.status.state;
+  Fill(out, now_utime);
+  if (out.mode != last_mode_ && out.mode == TrackerMode::kStopStaleState && active_) {
+    ++counts_.stops_stale;
+    spdlog::warn("robot state {}: stopping", state_ ? "stale" : "missing");
+  }
+  if (out.mode != last_mode_ && out.mode == TrackerMode::kStopReferenceEnded) {
+    ++counts_.stops_ended;
+    spdlog::info("trajectory {} ended: stopping", out.trajectory_id);
+  }
+  if (previous != cycle_.status.state && cycle_.status.state == tracker_status_t::FINISHED) {
+    spdlog::info("trajectory {} finished", cycle_.status.trajectory_id);
   }
   last_mode_ = out.mode;
-  Fill(out, now_utime);
   return cycle_;
 }
 
@@ -183,7 +186,7 @@ void TrackerNode::Fill(const TrackerOutput& out, std::int64_t now_utime) {
 
   tracker_status_t& s = cycle_.status;
   s.utime = now_utime;
-  switch (out.mode) {
+  switch (active_ ? out.mode : TrackerMode::kStopNoReference) {  // no trajectory: IDLE
     case TrackerMode::kTrack: s.state = tracker_status_t::TRACKING; break;
     case TrackerMode::kStopNoReference: s.state = tracker_status_t::IDLE; break;
     case TrackerMode::kStopStaleState: s.state = tracker_status_t::STOPPING; break;
@@ -202,7 +205,7 @@ void TrackerNode::Fill(const TrackerOutput& out, std::int64_t now_utime) {
 }
 
 std::int8_t TrackerNode::Health() const {
-  return last_mode_ == TrackerMode::kStopStaleState ? heartbeat_t::WARN : heartbeat_t::OK;
+  return last_mode_ == TrackerMode::kStopStaleState && active_ ? heartbeat_t::WARN : heartbeat_t::OK;
 }
 
 std::string TrackerNode::StatusLine() const {

@@ -2,7 +2,8 @@
 // with the reason, where none can be made): topay-sim NOT in follow mode (its plant integrates
 // CONTROL_COMMAND with 20 ms command latency and first-order actuator lag, config/sim/sim.yaml)
 // and topay-tracker. The test plays the planner: a smooth whole-body trajectory (1 m of arc,
-// a 0.5 rad turn, every joint +0.3 rad, 2 s) from the robot's state, starting 0.3 s later. The
+// a 0.5 rad turn, joints 2-7 +0.3 rad
+// and joint 1 +0.15 rad (its limit is 3.1 rad, the stow pose 2.899), 4 s) from the robot's state, starting 0.3 s later. The
 // robot follows it: the final state is within a few cm / hundredths of a radian of the end,
 // TRACKER_STATUS reports small errors and FINISHED, and the collision monitor saw no contact.
 
@@ -11,7 +12,7 @@
 #include <cmath>
 
 #include "core/common/angles.h"
-#include "follow_test_trajectory.h"
+#include "tracker_test_trajectory.h"
 #include "graph_test_support.h"
 #include "topay/control_command_t.hpp"
 #include "topay/robot_state_t.hpp"
@@ -36,13 +37,24 @@ Eigen::VectorXd Joints(const robot_state_t& s) {
   return Eigen::Map<const Eigen::VectorXd>(s.joints.position_rad.data(), s.joints.num_joints);
 }
 
+// From the stow pose: within the joint limits and clear of the chassis.
+Eigen::VectorXd JointChange() {
+  Eigen::VectorXd change = Eigen::VectorXd::Constant(7, 0.3);
+  change[0] = 0.15;
+  return change;
+}
+
 TEST(TrackerGraph, SimDrivenByTheTrackerFollowsATrajectory) {
   std::string why;
   if (!EnterTestNamespace(&why)) GTEST_SKIP() << why;
   const std::string dir = TestDir("tracker_graph");
   WriteText(dir + "/empty.json", R"({"boxes": [{"center": [30, 30, 0.5], "size": [1, 1, 1], "yaw": 0}]})");
   const std::string config = std::string(TOPAY_SOURCE_DIR) + "/config";
-  const pid_t sim = Spawn({BinDir() + "/topay-sim", "--config", config + "/sim/sim.yaml", "--scene", dir + "/empty.json",
+  // The shipped plant (latency, lag) and robot; no LiDAR (nothing to see, and it would take a
+  // core of this 2-core machine from the loop under test).
+  WriteText(dir + "/sim.yaml", "robot:\n  urdf: " + config + "/robot/topay_mm.urdf\n  yaml: " + config +
+                                   "/robot/topay_mm.yaml\nlidar:\n  enabled: false\n");
+  const pid_t sim = Spawn({BinDir() + "/topay-sim", "--config", dir + "/sim.yaml", "--scene", dir + "/empty.json",
                            "--name", "sim"},
                           dir + "/sim.txt");
   const pid_t tracker = Spawn({BinDir() + "/topay-tracker", "--config", config + "/tracker/tracker.yaml", "--name",
@@ -67,9 +79,9 @@ TEST(TrackerGraph, SimDrivenByTheTrackerFollowsATrajectory) {
   // The planner's part: a trajectory from the state just received, starting 0.3 s later.
   const robot_state_t now = rx.states.back();
   const Eigen::Vector2d p0(now.pose.x_m, now.pose.y_m);
-  const ArcYawTrajectory trajectory = FollowTestTrajectory(p0, now.pose.yaw_rad, Joints(now));
+  const ArcYawTrajectory trajectory = TrackerTestTrajectory(p0, now.pose.yaw_rad, Joints(now), 1.0, 0.5, JointChange());
   const std::int64_t start_utime = now.utime + 300'000;
-  const poly_trajectory_t msg = FollowTestMessage(trajectory, p0, start_utime, 11);
+  const poly_trajectory_t msg = TrackerTestMessage(trajectory, p0, start_utime, 11);
   watcher.lcm().publish(std::string(channels::TRAJECTORY), &msg);
   rx.statuses.clear();
   watcher.Spin(trajectory.duration_s() + 0.3 + 1.5);  // past the end, the settle and the stop

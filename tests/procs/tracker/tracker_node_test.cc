@@ -13,7 +13,7 @@
 
 #include "core/common/angles.h"
 #include "core/io/robot_loader.h"
-#include "follow_test_trajectory.h"
+#include "tracker_test_trajectory.h"
 #include "procs/msgs/convert_robot_state.h"
 #include "procs/runtime/process_loop.h"
 #include "topay/heartbeat_t.hpp"
@@ -50,7 +50,7 @@ robot_state_t StateMessage(const WholeBodyState& state, std::int64_t utime, doub
 
 poly_trajectory_t Trajectory(std::int64_t id, std::int64_t start_utime, const WholeBodyState& from = Start()) {
   const Eigen::Vector2d p0(from.x_m, from.y_m);
-  return test::FollowTestMessage(test::FollowTestTrajectory(p0, from.yaw_rad, from.q_rad), p0, start_utime, id);
+  return test::TrackerTestMessage(test::TrackerTestTrajectory(p0, from.yaw_rad, from.q_rad), p0, start_utime, id);
 }
 
 TEST(TrackerNode, IdleWithoutTrajectoryOrState) {
@@ -128,7 +128,7 @@ TEST(TrackerNode, StaleStateStopsWithinTheAccelerationLimits) {
     if (age_s > 0.1 + 1e-9) {
       EXPECT_EQ(c.status.state, tracker_status_t::STOPPING) << age_s;
       EXPECT_LE(std::abs(c.command.v_mps), std::abs(v) + 1e-12);
-      EXPECT_GE(std::abs(c.command.v_mps), std::abs(v) - limits.base.a_max * 0.02 - 1e-9);
+      EXPECT_GE(std::abs(c.command.v_mps), std::abs(v) - limits.base.a_max_mps2 * 0.02 - 1e-9);
       stopping = true;
     } else if (age_s < 0.1 - 1e-9) {
       EXPECT_EQ(c.status.state, tracker_status_t::TRACKING) << age_s;
@@ -231,11 +231,11 @@ TEST(TrackerNode, ClosedLoopOnAnIdealPlantReachesTheEndAndFinishes) {
   options.nmpc.latency_s = 0.0;
   TrackerNode node(options, MakeTrackerLimits(Robot()));
   WholeBodyState state = Start();
-  const ArcYawTrajectory trajectory = test::FollowTestTrajectory(Eigen::Vector2d::Zero(), 0.0, state.q_rad);
+  const ArcYawTrajectory trajectory = test::TrackerTestTrajectory(Eigen::Vector2d::Zero(), 0.0, state.q_rad);
   node.OnTrajectory(Trajectory(1, kT0 + 100'000), kT0);
   double max_position_error = 0.0;
   std::int8_t last_state = -1;
-  for (std::int64_t now = kT0; now < kT0 + 4'000'000; now += kCycle) {
+  for (std::int64_t now = kT0; now < kT0 + 6'000'000; now += kCycle) {
     node.OnRobotState(StateMessage(state, now));
     const TrackerCycle& c = node.Step(now);
     last_state = c.status.state;
@@ -257,7 +257,7 @@ TEST(TrackerNode, ClosedLoopOnAnIdealPlantReachesTheEndAndFinishes) {
   EXPECT_LT((state.q_rad - end.state.q_rad).cwiseAbs().maxCoeff(), 0.01);
   EXPECT_LT(max_position_error, 0.03);
   EXPECT_EQ(node.counts().stops_ended, 1);
-  EXPECT_NE(node.Report().find("topay-tracker: 200 cycles"), std::string::npos) << node.Report();
+  EXPECT_NE(node.Report().find("topay-tracker: 300 cycles"), std::string::npos) << node.Report();
 }
 
 }  // namespace
