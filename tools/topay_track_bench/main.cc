@@ -118,12 +118,13 @@ RunResult Track(const RobotModel& model, const NmpcOptions& nmpc, const ArcYawTr
 
 int main(int argc, char** argv) {
   CLI::App app{"topay-track-bench: the NMPC tracker + the simulated plant over planned trajectories (no LCM)"};
-  std::string dir, tracker_config = std::string(TOPAY_CONFIG_DIR) + "/tracker/tracker.yaml";
+  std::vector<std::string> dirs;
+  std::string tracker_config = std::string(TOPAY_CONFIG_DIR) + "/tracker/tracker.yaml";
   std::string urdf = std::string(TOPAY_CONFIG_DIR) + "/robot/topay_mm.urdf";
   std::string robot_yaml = std::string(TOPAY_CONFIG_DIR) + "/robot/topay_mm.yaml";
   int max_trajectories = 50;
   double budget_ms = 0.0;
-  app.add_option("--trajectories", dir, "Folder of *_topay_trajectory.json (topay-bench --dump-trajectories)")
+  app.add_option("--trajectories", dirs, "Folders of *_topay_trajectory.json (topay-bench --dump-trajectories), taken in order")
       ->required();
   app.add_option("--config", tracker_config, "Tracker YAML")->capture_default_str();
   app.add_option("--max", max_trajectories, "Use at most this many (successful plans, in name order)")
@@ -138,11 +139,15 @@ int main(int argc, char** argv) {
     if (budget_ms > 0.0) options.nmpc.time_budget_s = budget_ms * 1e-3;
     const RobotModel model = LoadRobotModel(urdf, robot_yaml);
     std::vector<std::string> files;
-    for (const auto& entry : std::filesystem::recursive_directory_iterator(dir)) {
-      const std::string name = entry.path().filename().string();
-      if (name.size() > 22 && name.ends_with("_topay_trajectory.json")) files.push_back(entry.path().string());
+    for (const std::string& dir : dirs) {
+      std::vector<std::string> in_dir;
+      for (const auto& entry : std::filesystem::directory_iterator(dir)) {
+        const std::string name = entry.path().filename().string();
+        if (name.size() > 22 && name.ends_with("_topay_trajectory.json")) in_dir.push_back(entry.path().string());
+      }
+      std::sort(in_dir.begin(), in_dir.end());
+      files.insert(files.end(), in_dir.begin(), in_dir.end());
     }
-    std::sort(files.begin(), files.end());
     Errors all;
     std::vector<double> solve_ms, rms_position;
     int used = 0, fallbacks = 0;
@@ -157,8 +162,8 @@ int main(int argc, char** argv) {
       solve_ms.insert(solve_ms.end(), r.solve_ms.begin(), r.solve_ms.end());
       rms_position.push_back(r.errors.PositionRms());
       fallbacks += r.fallbacks;
-      std::printf("%-40s %6.2f s  pos RMS %.4f m max %.4f  yaw RMS %.4f max %.4f  joints RMS %.4f max %.4f  end %.4f m\n",
-                  std::filesystem::path(file).filename().c_str(), r.duration_s, r.errors.PositionRms(),
+      std::printf("%-58s %6.2f s  pos RMS %.4f m max %.4f  yaw RMS %.4f max %.4f  joints RMS %.4f max %.4f  end %.4f m\n",
+                  (std::filesystem::path(file).parent_path().filename() / std::filesystem::path(file).filename()).c_str(), r.duration_s, r.errors.PositionRms(),
                   r.errors.position_max, r.errors.YawRms(), r.errors.yaw_max, r.errors.JointRms(), r.errors.joint_max,
                   r.end_position_m);
     }
