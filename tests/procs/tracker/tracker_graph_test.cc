@@ -139,3 +139,23 @@ TEST(TrackerGraph, SimDrivenByTheTrackerFollowsATrajectory) {
 
 }  // namespace
 }  // namespace topay::test
+
+namespace topay::test {
+namespace {
+
+// Exit codes of the stack: 1 for a config error (a misspelt key, named), 2 for a usage error.
+TEST(TrackerProcess, ConfigAndUsageErrorsExitWithTheirCodes) {
+  const std::string dir = TestDir("tracker_errors");
+  WriteText(dir + "/typo.yaml", "nmpc:\n  horizon_step: 30\n");
+  const pid_t config = Spawn({BinDir() + "/topay-tracker", "--config", dir + "/typo.yaml", "--lcm-url", "memq://"},
+                             dir + "/config.txt");
+  const int config_status = WaitFor(config, 10.0);
+  EXPECT_TRUE(WIFEXITED(config_status) && WEXITSTATUS(config_status) == 1);
+  EXPECT_NE(ReadText(dir + "/config.txt").find("nmpc.horizon_step"), std::string::npos) << ReadText(dir + "/config.txt");
+  const pid_t usage = Spawn({BinDir() + "/topay-tracker", "--no-such-flag"}, dir + "/usage.txt");
+  const int usage_status = WaitFor(usage, 10.0);
+  EXPECT_TRUE(WIFEXITED(usage_status) && WEXITSTATUS(usage_status) == 2) << ReadText(dir + "/usage.txt");
+}
+
+}  // namespace
+}  // namespace topay::test
