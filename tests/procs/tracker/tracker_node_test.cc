@@ -225,6 +225,44 @@ TEST(TrackerNode, UndecodableBytesAreCountedByTheLoop) {
   EXPECT_GE(node.counts().cycles, 3);  // the timer ran, publishing commands
 }
 
+// A new trajectory (here one from rest where the moving robot is: the reference jumps) switches
+// over without a jump in the command: every input changes by at most its acceleration limit
+// times the control period, across the switch too.
+TEST(TrackerNode, SwitchingDoesNotJumpTheCommand) {
+  const TrackerLimits limits = MakeTrackerLimits(Robot());
+  TrackerNode node(Options(), limits);
+  WholeBodyState state = Start();
+  node.OnTrajectory(Trajectory(1, kT0), kT0);
+  control_command_t last{};
+  last.qdot_radps.assign(7, 0.0);
+  bool switched = false;
+  double v_at_switch = 0.0;
+  for (std::int64_t now = kT0; now < kT0 + 3'000'000; now += kCycle) {
+    if (now == kT0 + 1'500'000) node.OnTrajectory(Trajectory(2, now + 200'000, state), now);
+    node.OnRobotState(StateMessage(state, now));
+    const TrackerCycle& c = node.Step(now);
+    if (!switched && c.command.trajectory_id == 2) {
+      switched = true;
+      v_at_switch = last.v_mps;
+    }
+    EXPECT_LE(std::abs(c.command.v_mps - last.v_mps), limits.base.a_max_mps2 * 0.02 + 1e-9) << now - kT0;
+    EXPECT_LE(std::abs(c.command.omega_radps - last.omega_radps), limits.base.beta_max_radps2 * 0.02 + 1e-9);
+    for (int j = 0; j < 7; ++j) {
+      EXPECT_LE(std::abs(c.command.qdot_radps[j] - last.qdot_radps[j]), limits.qdd_max_radps2[j] * 0.02 + 1e-9);
+    }
+    last = c.command;
+    const double dt = 0.02;
+    const double yaw_mid = state.yaw_rad + 0.5 * c.command.omega_radps * dt;
+    state.x_m += c.command.v_mps * dt * std::cos(yaw_mid);
+    state.y_m += c.command.v_mps * dt * std::sin(yaw_mid);
+    state.yaw_rad += c.command.omega_radps * dt;
+    for (int j = 0; j < state.q_rad.size(); ++j) state.q_rad[j] += c.command.qdot_radps[j] * dt;
+  }
+  EXPECT_TRUE(switched);
+  EXPECT_GT(v_at_switch, 0.1);  // it was moving when the new one took over
+  EXPECT_EQ(node.active_id(), 2);
+}
+
 // An ideal plant (the commands integrated exactly, no latency) closed around the node.
 TEST(TrackerNode, ClosedLoopOnAnIdealPlantReachesTheEndAndFinishes) {
   TrackerOptions options = Options();
