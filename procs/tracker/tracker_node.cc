@@ -163,6 +163,9 @@ const TrackerCycle& TrackerNode::Step(std::int64_t now_utime) {
     ++counts_.stops_stale;
     spdlog::warn("robot state {}: stopping", state_ ? "stale" : "missing");
   }
+  if (last_mode_ == TrackerMode::kStopStaleState && out.mode == TrackerMode::kTrack) {
+    spdlog::info("robot state fresh again: tracking trajectory {}", out.trajectory_id);
+  }
   if (out.mode != last_mode_ && out.mode == TrackerMode::kStopReferenceEnded) {
     ++counts_.stops_ended;
     spdlog::info("trajectory {} ended: stopping", out.trajectory_id);

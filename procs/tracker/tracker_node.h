@@ -71,8 +71,8 @@ class TrackerNode {
   /// The active trajectory's id (0: none) and the pending one's (0: none).
   std::int64_t active_id() const { return active_ ? active_->id : 0; }
   std::int64_t pending_id() const { return pending_ ? pending_->id : 0; }
-  /// heartbeat_t::OK, WARN (stopping on a stale state, or messages rejected lately) and the
-  /// status line.
+  /// heartbeat_t::WARN while stopping on a stale or missing robot state with a trajectory,
+  /// else OK; and the heartbeat's status line (mode, ids, solves, fallbacks, rejected messages).
   std::int8_t Health() const;
   std::string StatusLine() const;
   /// The final report: cycles, solves, median / p99 solve ms, fallbacks, stops, counts.
