@@ -14,6 +14,7 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <optional>
 #include <vector>
 
 #include "core/common/angles.h"
@@ -22,6 +23,7 @@
 #include "core/io/robot_loader.h"
 #include "procs/tracker/tracker_options.h"
 #include "sim/plant/plant.h"
+#include "tools/common/tool_cli.h"
 #include "tools/topay_plan/trajectory_json.h"
 
 using namespace topay;
@@ -119,9 +121,9 @@ RunResult Track(const RobotModel& model, const NmpcOptions& nmpc, const ArcYawTr
 int main(int argc, char** argv) {
   CLI::App app{"topay-track-bench: the NMPC tracker + the simulated plant over planned trajectories (no LCM)"};
   std::vector<std::string> dirs;
-  std::string tracker_config = std::string(TOPAY_CONFIG_DIR) + "/tracker/tracker.yaml";
-  std::string urdf = std::string(TOPAY_CONFIG_DIR) + "/robot/topay_mm.urdf";
-  std::string robot_yaml = std::string(TOPAY_CONFIG_DIR) + "/robot/topay_mm.yaml";
+  std::string tracker_config = tools::ConfigDir(TOPAY_CONFIG_DIR) + "/tracker/tracker.yaml";
+  std::string urdf = tools::ConfigDir(TOPAY_CONFIG_DIR) + "/robot/topay_mm.urdf";
+  std::string robot_yaml = tools::ConfigDir(TOPAY_CONFIG_DIR) + "/robot/topay_mm.yaml";
   int max_trajectories = 50;
   double budget_ms = 0.0;
   app.add_option("--trajectories", dirs, "Folders of *_topay_trajectory.json (topay-bench --dump-trajectories), taken in order")
@@ -133,7 +135,7 @@ int main(int argc, char** argv) {
                  "Replace nmpc.time_budget_s (ms; 0: the config's). A large budget takes the machine's "
                  "scheduling out of the tracking figures (no wall-clock fallbacks)")
       ->capture_default_str();
-  CLI11_PARSE(app, argc, argv);
+  if (const std::optional<int> code = tools::ParseCommandLine(app, argc, argv, "topay-track-bench")) return *code;
   try {
     tracker::TrackerOptions options = tracker::LoadTrackerOptions(tracker_config);
     if (budget_ms > 0.0) options.nmpc.time_budget_s = budget_ms * 1e-3;
