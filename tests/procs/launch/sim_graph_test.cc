@@ -1,7 +1,7 @@
 // The shipped simulation graph (config/graphs/sim.yaml) runs as it is, isolated by default:
 // the logger records the simulator's ROBOT_STATE, BASE_POSE, POINT_CLOUD, SIM_STATUS, HEARTBEAT
 // and the launcher's GRAPH_STATUS into <run>/graph.lcmlog; with --group drive the command
-// pattern publishes (the sim, the ideal follower of TRAJECTORY, counts them ignored); with
+// pattern publishes CONTROL_COMMAND (the sim's plant takes them: the graph's sim is not --follow); with
 // --group perception the mapper publishes MAP_UPDATE and saves its OctoMap; with --group
 // planning the planner waits for goals and reports at the end.
 

@@ -1,0 +1,254 @@
+#include "procs/tracker/tracker_node.h"
+
+#include <spdlog/spdlog.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "core/common/sample_statistics.h"
+#include "procs/msgs/convert_trajectory.h"
+#include "procs/runtime/process_loop.h"
+#include "topay/heartbeat_t.hpp"
+#include "topay_msgs/channels.h"
+
+namespace topay::tracker {
+namespace {
+
+bool Every(std::int64_t n) { return n <= 10 || n % 1000 == 0; }  // log the first 10, then every 1000th
+
+// Copies what the NMPC reads from a full sample into the tracker's (allocation-free for equal
+// sizes; the tracker's sample has no jerk).
+void CopySample(const TrajectorySample& from, TrajectorySample* to) {
+  to->t_s = from.t_s;
+  to->state.x_m = from.state.x_m;
+  to->state.y_m = from.state.y_m;
+  to->state.yaw_rad = from.state.yaw_rad;
+  to->state.q_rad = from.state.q_rad;
+  to->s_m = from.s_m;
+  to->v_mps = from.v_mps;
+  to->omega_radps = from.omega_radps;
+  to->a_mps2 = from.a_mps2;
+  to->beta_radps2 = from.beta_radps2;
+  to->qd_radps = from.qd_radps;
+  to->qdd_radps2 = from.qdd_radps2;
+}
+
+bool AtRest(const ControlCommand& c, double tolerance) {
+  return std::abs(c.v_mps) < tolerance && std::abs(c.omega_radps) < tolerance &&
+         (c.qd_radps.size() == 0 || c.qd_radps.cwiseAbs().maxCoeff() < tolerance);
+}
+
+}  // namespace
+
+TrackerNode::TrackerNode(const TrackerOptions& options, const TrackerLimits& limits)
+    : options_(options), num_joints_(limits.num_joints()), tracker_(options.nmpc, limits) {
+  solve_ms_.reserve(1 << 16);
+  cycle_.command.num_joints = num_joints_;
+  cycle_.command.qdot_radps.assign(num_joints_, 0.0);
+}
+
+double TrackerNode::Seconds(std::int64_t utime) {
+  if (!origin_utime_) origin_utime_ = utime;
+  return static_cast<double>(utime - *origin_utime_) * 1e-6;
+}
+
+void TrackerNode::OnTrajectory(const poly_trajectory_t& msg, std::int64_t now_utime) {
+  ++counts_.trajectories;
+  const auto reject = [&](const std::string& why) {
+    ++counts_.trajectories_rejected;
+    if (Every(counts_.trajectories_rejected)) {
+      spdlog::warn("rejected TRAJECTORY {} (#{}): {}", msg.trajectory_id, counts_.trajectories_rejected, why);
+    }
+  };
+  if ((active_ && msg.trajectory_id <= active_->id) || (pending_ && msg.trajectory_id <= pending_->id)) {
+    ++counts_.trajectories_ignored;
+    if (Every(counts_.trajectories_ignored)) {
+      spdlog::info("ignored TRAJECTORY {} (#{}): not newer than {} {}", msg.trajectory_id,
+                   counts_.trajectories_ignored, pending_ ? "pending" : "active",
+                   pending_ ? pending_->id : active_->id);
+    }
+    return;
+  }
+  std::string error;
+  const std::optional<msgs::PolyTrajectory> poly = msgs::FromMessage(msg, &error);
+  if (!poly) return reject(error);
+  if (poly->num_joints() != num_joints_) {
+    return reject(fmt::format("{} joints, the robot has {}", poly->num_joints(), num_joints_));
+  }
+  std::optional<ArcYawTrajectory> trajectory = msgs::ToArcYaw(*poly, options_.rebuild, &error);
+  if (!trajectory) return reject(error);
+
+  Loaded loaded;
+  loaded.id = msg.trajectory_id;
+  loaded.goal_id = msg.goal_id;
+  loaded.start_utime = msg.start_utime;
+  auto shared = std::make_shared<const ArcYawTrajectory>(std::move(*trajectory));
+  auto point = std::make_shared<TrajectorySample>(shared->MakePoint());
+  loaded.trajectory = shared;
+  loaded.reference.trajectory_id = msg.trajectory_id;
+  loaded.reference.start_time_s = Seconds(msg.start_utime);
+  loaded.reference.duration_s = shared->duration_s();
+  loaded.reference.sampler = [shared, point](double t_s, TrajectorySample* out) {
+    shared->Evaluate(t_s, point.get());
+    CopySample(*point, out);
+  };
+  spdlog::info("TRAJECTORY {} (goal {}) accepted: {:.2f} s, starts in {:.3f} s", loaded.id, loaded.goal_id,
+               loaded.reference.duration_s, static_cast<double>(msg.start_utime - now_utime) * 1e-6);
+  if (msg.start_utime <= now_utime) {
+    pending_.reset();
+    Activate(std::move(loaded));
+  } else {
+    if (pending_) ++counts_.pending_superseded;
+    pending_ = std::move(loaded);
+  }
+}
+
+void TrackerNode::Activate(Loaded loaded) {
+  ++counts_.switches;
+  active_ = std::move(loaded);
+}
+
+void TrackerNode::OnRobotState(const robot_state_t& msg) {
+  std::string error;
+  std::optional<msgs::RobotStateEstimate> estimate = msgs::FromMessage(msg, &error);
+  if (estimate && estimate->state.q_rad.size() != num_joints_) {
+    error = fmt::format("{} joints, the robot has {}", estimate->state.q_rad.size(), num_joints_);
+    estimate.reset();
+  }
+  if (!estimate) {
+    ++counts_.states_rejected;
+    if (Every(counts_.states_rejected)) spdlog::warn("rejected ROBOT_STATE (#{}): {}", counts_.states_rejected, error);
+    return;
+  }
+  ++counts_.states;
+  if (state_ && estimate->utime < state_->utime) return;  // an older one: keep the newest
+  if (std::isfinite(estimate->gripper)) measured_gripper_ = estimate->gripper;
+  state_ = std::move(estimate);
+}
+
+void TrackerNode::OnGripper(const gripper_command_t& msg) {
+  if (!std::isfinite(msg.position) || msg.position < 0.0 || msg.position > 1.0) {
+    ++counts_.grippers_rejected;
+    if (Every(counts_.grippers_rejected)) {
+      spdlog::warn("rejected GRIPPER_COMMAND (#{}): position {} not in [0, 1]", counts_.grippers_rejected, msg.position);
+    }
+    return;
+  }
+  ++counts_.grippers;
+  gripper_ = msg.position;
+}
+
+const TrackerCycle& TrackerNode::Step(std::int64_t now_utime) {
+  ++counts_.cycles;
+  if (pending_ && pending_->start_utime <= now_utime) {
+    Loaded next = std::move(*pending_);
+    pending_.reset();
+    Activate(std::move(next));
+  }
+  TrackerInput input;
+  input.now_s = Seconds(now_utime);
+  if (state_) {
+    input.state = &state_->state;
+    input.state_time_s = Seconds(state_->utime);
+  }
+  if (active_) input.reference = &active_->reference;
+  const TrackerOutput& out = tracker_.Step(input);
+  if (out.mode == TrackerMode::kTrack) {
+    ++counts_.solves;
+    solve_ms_.push_back(out.solve_ms);
+  }
+  const std::int8_t previous = cycle_.status.state;
+  Fill(out, now_utime);
+  if (out.mode != last_mode_ && out.mode == TrackerMode::kStopStaleState && active_) {
+    ++counts_.stops_stale;
+    spdlog::warn("robot state {}: stopping", state_ ? "stale" : "missing");
+  }
+  if (last_mode_ == TrackerMode::kStopStaleState && out.mode == TrackerMode::kTrack) {
+    spdlog::info("robot state fresh again: tracking trajectory {}", out.trajectory_id);
+  }
+  if (out.mode != last_mode_ && out.mode == TrackerMode::kStopReferenceEnded) {
+    ++counts_.stops_ended;
+    spdlog::info("trajectory {} ended: stopping", out.trajectory_id);
+  }
+  if (previous != cycle_.status.state && cycle_.status.state == tracker_status_t::FINISHED) {
+    spdlog::info("trajectory {} finished", cycle_.status.trajectory_id);
+  }
+  last_mode_ = out.mode;
+  return cycle_;
+}
+
+void TrackerNode::Fill(const TrackerOutput& out, std::int64_t now_utime) {
+  control_command_t& c = cycle_.command;
+  c.utime = now_utime;
+  c.trajectory_id = out.trajectory_id;
+  c.v_mps = out.command.v_mps;
+  c.omega_radps = out.command.omega_radps;
+  c.num_joints = num_joints_;
+  for (int j = 0; j < num_joints_; ++j) c.qdot_radps[j] = out.command.qd_radps[j];
+  c.gripper = gripper_.value_or(measured_gripper_);
+
+  tracker_status_t& s = cycle_.status;
+  s.utime = now_utime;
+  switch (active_ ? out.mode : TrackerMode::kStopNoReference) {  // no trajectory: IDLE
+    case TrackerMode::kTrack: s.state = tracker_status_t::TRACKING; break;
+    case TrackerMode::kStopNoReference: s.state = tracker_status_t::IDLE; break;
+    case TrackerMode::kStopStaleState: s.state = tracker_status_t::STOPPING; break;
+    case TrackerMode::kStopReferenceEnded:
+      s.state = AtRest(out.command, options_.rest_command) ? tracker_status_t::FINISHED : tracker_status_t::STOPPING;
+      break;
+  }
+  s.trajectory_id = active_ ? active_->id : 0;
+  s.goal_id = active_ ? active_->goal_id : 0;
+  s.t_along_s = active_ ? static_cast<double>(now_utime - active_->start_utime) * 1e-6 : 0.0;
+  const bool measured = active_ && state_;
+  s.position_error_m = measured ? out.position_error_m : 0.0;
+  s.yaw_error_rad = measured ? out.yaw_error_rad : 0.0;
+  s.joint_error_rad = measured ? out.joint_error_rad : 0.0;
+  s.solve_ms = out.solve_ms;
+}
+
+std::int8_t TrackerNode::Health() const {
+  return last_mode_ == TrackerMode::kStopStaleState && active_ ? heartbeat_t::WARN : heartbeat_t::OK;
+}
+
+std::string TrackerNode::StatusLine() const {
+  return fmt::format("{} trajectory {} (pending {}), {} solves, {} fallbacks, {} rejected", TrackerModeName(last_mode_),
+                     active_id(), pending_id(), counts_.solves,
+                     tracker_.solver().summary().num_over_budget + tracker_.solver().summary().num_failed,
+                     counts_.trajectories_rejected + counts_.states_rejected + counts_.grippers_rejected);
+}
+
+std::string TrackerNode::Report() const {
+  const NmpcSummary& summary = tracker_.solver().summary();
+  const TrackerCounts& c = counts_;
+  return fmt::format(
+      "topay-tracker: {} cycles, {} solves (median {:.3f} ms, p99 {:.3f} ms, max {:.3f} ms), fallbacks {} "
+      "({} over budget, {} failed)\n"
+      "  stops: {} stale state, {} trajectory ended\n"
+      "  trajectories: {} received, {} became active, {} rejected, {} ignored (not newer), {} pending superseded\n"
+      "  robot states: {} ({} rejected); gripper commands: {} ({} rejected)\n",
+      c.cycles, c.solves, solve_ms_.empty() ? 0.0 : Median(solve_ms_),
+      solve_ms_.empty() ? 0.0 : NearestRankQuantile(solve_ms_, 0.99),
+      solve_ms_.empty() ? 0.0 : *std::max_element(solve_ms_.begin(), solve_ms_.end()),
+      summary.num_over_budget + summary.num_failed, summary.num_over_budget, summary.num_failed, c.stops_stale,
+      c.stops_ended, c.trajectories, c.switches, c.trajectories_rejected, c.trajectories_ignored, c.pending_superseded,
+      c.states, c.states_rejected, c.grippers, c.grippers_rejected);
+}
+
+void ConnectTrackerNode(procs::ProcessLoop* loop, TrackerNode* node, double period_s) {
+  loop->Subscribe<poly_trajectory_t>(std::string(channels::TRAJECTORY), [node](const poly_trajectory_t& msg) {
+    node->OnTrajectory(msg, procs::NowUtime());
+  });
+  loop->Subscribe<robot_state_t>(std::string(channels::ROBOT_STATE),
+                                 [node](const robot_state_t& msg) { node->OnRobotState(msg); });
+  loop->Subscribe<gripper_command_t>(std::string(channels::GRIPPER_COMMAND),
+                                     [node](const gripper_command_t& msg) { node->OnGripper(msg); });
+  loop->AddTimer(period_s, [loop, node] {
+    const TrackerCycle& cycle = node->Step(procs::NowUtime());
+    loop->lcm().publish(std::string(channels::CONTROL_COMMAND), &cycle.command);
+    loop->lcm().publish(std::string(channels::TRACKER_STATUS), &cycle.status);
+    loop->SetHealth(node->Health(), node->StatusLine());
+  });
+}
+
+}  // namespace topay::tracker

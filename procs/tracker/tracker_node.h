@@ -1,0 +1,112 @@
+#pragma once
+// topay-tracker's logic (docs/tracker.md): TRAJECTORY, ROBOT_STATE and GRIPPER_COMMAND in; every
+// cycle (50 Hz) NmpcTracker::Step and a CONTROL_COMMAND and TRACKER_STATUS out. No LCM in the
+// class itself (ConnectTrackerNode wires it to a ProcessLoop), so tests call its handlers with
+// the times they choose.
+//
+// Trajectories: a TRAJECTORY is rebuilt into the core trajectory (msgs::ToArcYaw, exact MINCO
+// check); one whose start_utime is in the future waits (pending) and becomes active at its
+// start, the current one being followed until then; a newer id replaces a pending one; an id
+// older than or equal to the active's (or the pending's) is ignored. Bad ones are counted and
+// logged, never followed. Safe behaviour (no trajectory, an ended one, a robot state older than
+// nmpc.stale_state_s or none) is NmpcTracker's: decelerate to a stop within the limits.
+
+#include <cstdint>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "core/control/nmpc_tracker.h"
+#include "core/control/tracker_limits.h"
+#include "core/trajectory/arc_yaw_trajectory.h"
+#include "procs/msgs/convert_robot_state.h"
+#include "procs/tracker/tracker_options.h"
+#include "topay/control_command_t.hpp"
+#include "topay/gripper_command_t.hpp"
+#include "topay/poly_trajectory_t.hpp"
+#include "topay/robot_state_t.hpp"
+#include "topay/tracker_status_t.hpp"
+
+namespace topay::procs {
+class ProcessLoop;
+}
+
+namespace topay::tracker {
+
+/// What the node counted since its start (heartbeat and exit report).
+struct TrackerCounts {
+  std::int64_t trajectories = 0;          ///< TRAJECTORY messages handled
+  std::int64_t trajectories_rejected = 0; ///< malformed, wrong joint count or not MINCO
+  std::int64_t trajectories_ignored = 0;  ///< id not newer than the active or the pending one
+  std::int64_t pending_superseded = 0;    ///< a pending trajectory replaced by a newer one
+  std::int64_t switches = 0;              ///< trajectories that became active
+  std::int64_t states = 0, states_rejected = 0;
+  std::int64_t grippers = 0, grippers_rejected = 0;
+  std::int64_t cycles = 0, solves = 0;
+  std::int64_t stops_stale = 0;  ///< cycles that entered the stale-state stop
+  std::int64_t stops_ended = 0;  ///< trajectories whose end was reached (stop after the settle)
+};
+
+/// One cycle's messages.
+struct TrackerCycle {
+  control_command_t command{};
+  tracker_status_t status{};
+};
+
+class TrackerNode {
+ public:
+  /// Throws std::invalid_argument for bad NMPC options or limits.
+  TrackerNode(const TrackerOptions& options, const TrackerLimits& limits);
+
+  void OnTrajectory(const poly_trajectory_t& msg, std::int64_t now_utime);
+  void OnRobotState(const robot_state_t& msg);
+  void OnGripper(const gripper_command_t& msg);
+  /// One control cycle at now_utime: activates a pending trajectory whose start has come,
+  /// steps the NMPC and returns the command and the status to publish.
+  const TrackerCycle& Step(std::int64_t now_utime);
+
+  const TrackerCounts& counts() const { return counts_; }
+  const NmpcTracker& tracker() const { return tracker_; }
+  /// The active trajectory's id (0: none) and the pending one's (0: none).
+  std::int64_t active_id() const { return active_ ? active_->id : 0; }
+  std::int64_t pending_id() const { return pending_ ? pending_->id : 0; }
+  /// heartbeat_t::WARN while stopping on a stale or missing robot state with a trajectory,
+  /// else OK; and the heartbeat's status line (mode, ids, solves, fallbacks, rejected messages).
+  std::int8_t Health() const;
+  std::string StatusLine() const;
+  /// The final report: cycles, solves, median / p99 solve ms, fallbacks, stops, counts.
+  std::string Report() const;
+
+ private:
+  struct Loaded {
+    std::int64_t id = 0;
+    std::int64_t goal_id = 0;
+    std::int64_t start_utime = 0;
+    std::shared_ptr<const ArcYawTrajectory> trajectory;
+    TrackerReference reference;
+  };
+  double Seconds(std::int64_t utime);
+  void Activate(Loaded loaded);
+  void Fill(const TrackerOutput& out, std::int64_t now_utime);
+
+  TrackerOptions options_;
+  int num_joints_;
+  NmpcTracker tracker_;
+  std::optional<std::int64_t> origin_utime_;  // utime of the core's t = 0 s (first one seen)
+  std::optional<Loaded> active_, pending_;
+  std::optional<msgs::RobotStateEstimate> state_;
+  std::optional<double> gripper_;       // the latest GRIPPER_COMMAND target
+  double measured_gripper_ = 0.0;       // the robot's, until a GRIPPER_COMMAND comes
+  TrackerMode last_mode_ = TrackerMode::kStopNoReference;
+  std::vector<double> solve_ms_;
+  TrackerCycle cycle_;
+  TrackerCounts counts_;
+};
+
+/// Subscribes `node` to TRAJECTORY, ROBOT_STATE and GRIPPER_COMMAND on *loop (times from the
+/// wall clock, procs::NowUtime) and adds the cycle timer (nmpc.control_period_s) that publishes
+/// CONTROL_COMMAND and TRACKER_STATUS and sets the heartbeat's health. Call before Run.
+void ConnectTrackerNode(procs::ProcessLoop* loop, TrackerNode* node, double period_s);
+
+}  // namespace topay::tracker

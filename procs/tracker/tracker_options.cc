@@ -1,0 +1,89 @@
+#include "procs/tracker/tracker_options.h"
+
+#include <cmath>
+#include <filesystem>
+#include <stdexcept>
+
+#include "core/common/error.h"
+#include "core/io/yaml_section.h"
+
+namespace topay::tracker {
+namespace {
+
+std::string Resolve(const std::string& path, const std::string& config_path) {
+  if (path.empty() || std::filesystem::path(path).is_absolute()) return path;
+  return (std::filesystem::path(config_path).parent_path() / path).string();
+}
+
+void ReadNmpc(YamlSection s, NmpcOptions* o) {
+  s.Read("horizon_steps", &o->horizon_steps);
+  s.Read("step_s", &o->step_s);
+  s.Read("control_period_s", &o->control_period_s);
+  s.Read("latency_s", &o->latency_s);
+  s.Read("time_budget_s", &o->time_budget_s);
+  s.Read("max_iterations", &o->max_iterations);
+  s.Read("position_weight", &o->position_weight);
+  s.Read("yaw_weight", &o->yaw_weight);
+  s.Read("joint_weight", &o->joint_weight);
+  s.Read("terminal_weight_factor", &o->terminal_weight_factor);
+  s.Read("v_weight", &o->v_weight);
+  s.Read("omega_weight", &o->omega_weight);
+  s.Read("qd_weight", &o->qd_weight);
+  s.Read("a_weight", &o->a_weight);
+  s.Read("beta_weight", &o->beta_weight);
+  s.Read("qdd_weight", &o->qdd_weight);
+  s.Read("limit_weight", &o->limit_weight);
+  s.Read("stale_state_s", &o->stale_state_s);
+  s.Read("end_settle_s", &o->end_settle_s);
+  s.Finish();
+  try {
+    o->Check();
+  } catch (const std::invalid_argument& e) {
+    throw ConfigError(s.source(), "nmpc", e.what());
+  }
+}
+
+void ReadRebuild(YamlSection s, msgs::TrajectoryRebuildOptions* o) {
+  int& panels = o->trajectory.integrator.panels_per_piece;
+  s.Read("panels_per_piece", &panels);
+  if (panels < 1) throw ConfigError(s.source(), s.FieldPath("panels_per_piece"), "must be >= 1");
+  s.Read("coefficient_tolerance", &o->coefficient_tolerance);
+  if (!(o->coefficient_tolerance > 0.0)) {
+    throw ConfigError(s.source(), s.FieldPath("coefficient_tolerance"), "must be > 0");
+  }
+  s.Read("yaw0_tolerance_rad", &o->yaw0_tolerance_rad);
+  if (!(o->yaw0_tolerance_rad > 0.0)) {
+    throw ConfigError(s.source(), s.FieldPath("yaw0_tolerance_rad"), "must be > 0");
+  }
+  s.Finish();
+}
+
+}  // namespace
+
+double CycleRateHz(const TrackerOptions& options) { return 1.0 / options.nmpc.control_period_s; }
+
+TrackerOptions LoadTrackerOptions(const std::string& path) {
+  YAML::Node root;
+  try {
+    root = YAML::LoadFile(path);
+  } catch (const YAML::Exception& e) {
+    throw ConfigError(path, "", std::string("cannot read YAML: ") + e.what());
+  }
+  TrackerOptions o;
+  o.source = path;
+  YamlSection top(root, path);
+  top.Read("robot_urdf", &o.robot_urdf);
+  top.Read("robot_yaml", &o.robot_yaml);
+  o.robot_urdf = Resolve(o.robot_urdf, path);
+  o.robot_yaml = Resolve(o.robot_yaml, path);
+  ReadNmpc(top.Section("nmpc"), &o.nmpc);
+  ReadRebuild(top.Section("rebuild"), &o.rebuild);
+  top.Read("rest_command", &o.rest_command);
+  if (!(o.rest_command > 0.0) || !std::isfinite(o.rest_command)) {
+    throw ConfigError(path, "rest_command", "must be finite and > 0");
+  }
+  top.Finish();
+  return o;
+}
+
+}  // namespace topay::tracker

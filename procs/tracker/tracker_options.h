@@ -1,0 +1,36 @@
+#pragma once
+// topay-tracker's options (config/tracker/tracker.yaml): the NMPC's (NmpcOptions, the `nmpc`
+// section), how TRAJECTORY messages are rebuilt (`rebuild`) and the process's own (robot
+// files, status). The limits come from the robot description, not from here.
+
+#include <string>
+
+#include "core/control/nmpc_options.h"
+#include "procs/msgs/trajectory_from_message.h"
+
+namespace topay::tracker {
+
+struct TrackerOptions {
+  std::string source;      ///< The file these came from ("" = defaults).
+  std::string robot_urdf;  ///< "" = the shipped robot (config/robot/topay_mm.urdf).
+  std::string robot_yaml;  ///< "" = config/robot/topay_mm.yaml.
+  /// The NMPC (core/control/nmpc_options.h). Its control_period_s is the process's cycle
+  /// (0.02 s: 50 Hz) and its stale_state_s the stale-state limit (0.1 s).
+  NmpcOptions nmpc;
+  /// TRAJECTORY -> core trajectory (Simpson panels 12, coefficient tolerance 1e-6, yaw0
+  /// tolerance 1e-6 rad): the planner's settings.
+  msgs::TrajectoryRebuildOptions rebuild;
+  /// Below this base speed (m/s), yaw rate (rad/s) and every joint rate (rad/s) a stopped
+  /// command counts as at rest (FINISHED rather than STOPPING after the end). > 0.
+  double rest_command = 1e-3;
+};
+
+/// Loads options from YAML (every key optional; relative robot paths from the file's folder).
+/// Throws ConfigError naming the file and the dotted field for an unreadable file, an unknown
+/// (e.g. misspelt) key or a value out of range (NmpcOptions::Check's message).
+TrackerOptions LoadTrackerOptions(const std::string& path);
+
+/// The cycle rate (Hz) of `options`: 1 / nmpc.control_period_s.
+double CycleRateHz(const TrackerOptions& options);
+
+}  // namespace topay::tracker

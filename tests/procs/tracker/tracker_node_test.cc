@@ -1,0 +1,302 @@
+// topay-tracker's node logic, in-process with the times the test chooses: a future trajectory
+// becomes active at its start, older ids are ignored, a stale robot state makes it stop within
+// the acceleration limits, the gripper target is forwarded, malformed input is counted (and,
+// through the process loop on memq://, undecodable bytes never reach the node); an ideal
+// delayed-free plant closed around it reaches the end and reports FINISHED.
+
+#include "procs/tracker/tracker_node.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <vector>
+
+#include "core/common/angles.h"
+#include "core/io/robot_loader.h"
+#include "tracker_test_trajectory.h"
+#include "procs/msgs/convert_robot_state.h"
+#include "procs/runtime/process_loop.h"
+#include "topay/heartbeat_t.hpp"
+#include "topay_msgs/channels.h"
+
+namespace topay::tracker {
+namespace {
+
+constexpr std::int64_t kT0 = 1'700'000'000'000'000;  // a wall-clock utime
+constexpr std::int64_t kCycle = 20'000;              // 20 ms
+
+const RobotModel& Robot() {
+  static const RobotModel model = LoadRobotModel(std::string(TOPAY_SOURCE_DIR) + "/config/robot/topay_mm.urdf",
+                                                 std::string(TOPAY_SOURCE_DIR) + "/config/robot/topay_mm.yaml");
+  return model;
+}
+
+TrackerOptions Options() { return LoadTrackerOptions(std::string(TOPAY_SOURCE_DIR) + "/config/tracker/tracker.yaml"); }
+
+WholeBodyState Start() {
+  WholeBodyState s;
+  s.q_rad = Eigen::VectorXd::Zero(Robot().num_joints());
+  return s;
+}
+
+robot_state_t StateMessage(const WholeBodyState& state, std::int64_t utime, double gripper = 0.3) {
+  msgs::RobotStateEstimate e;
+  e.utime = utime;
+  e.state = state;
+  e.qdot_radps = Eigen::VectorXd::Zero(state.q_rad.size());
+  e.gripper = gripper;
+  return msgs::ToMessage(e);
+}
+
+poly_trajectory_t Trajectory(std::int64_t id, std::int64_t start_utime, const WholeBodyState& from = Start()) {
+  const Eigen::Vector2d p0(from.x_m, from.y_m);
+  return test::TrackerTestMessage(test::TrackerTestTrajectory(p0, from.yaw_rad, from.q_rad), p0, start_utime, id);
+}
+
+TEST(TrackerNode, IdleWithoutTrajectoryOrState) {
+  TrackerNode node(Options(), MakeTrackerLimits(Robot()));
+  const TrackerCycle& c = node.Step(kT0);
+  EXPECT_EQ(c.status.state, tracker_status_t::IDLE);
+  EXPECT_EQ(c.command.v_mps, 0.0);
+  EXPECT_EQ(c.command.num_joints, Robot().num_joints());
+  EXPECT_EQ(c.command.trajectory_id, 0);
+}
+
+TEST(TrackerNode, FutureTrajectoryBecomesActiveAtItsStart) {
+  TrackerNode node(Options(), MakeTrackerLimits(Robot()));
+  node.OnRobotState(StateMessage(Start(), kT0));
+  node.OnTrajectory(Trajectory(1, kT0), kT0);
+  EXPECT_EQ(node.active_id(), 1);
+  node.OnTrajectory(Trajectory(2, kT0 + 500'000), kT0 + 10'000);
+  EXPECT_EQ(node.active_id(), 1);
+  EXPECT_EQ(node.pending_id(), 2);
+  std::int64_t now = kT0;
+  for (; now < kT0 + 500'000; now += kCycle) {
+    node.OnRobotState(StateMessage(Start(), now));
+    const TrackerCycle& c = node.Step(now);
+    EXPECT_EQ(c.status.trajectory_id, 1);
+    EXPECT_EQ(c.command.trajectory_id, 1);
+    EXPECT_EQ(c.status.state, tracker_status_t::TRACKING);
+  }
+  node.OnRobotState(StateMessage(Start(), now));
+  const TrackerCycle& c = node.Step(now);  // its start: the switch
+  EXPECT_EQ(node.active_id(), 2);
+  EXPECT_EQ(node.pending_id(), 0);
+  EXPECT_EQ(c.status.trajectory_id, 2);
+  EXPECT_EQ(c.status.goal_id, 1);
+  EXPECT_NEAR(c.status.t_along_s, 0.0, 1e-9);
+  EXPECT_EQ(node.counts().switches, 2);
+}
+
+TEST(TrackerNode, IgnoresIdsNotNewerAndNewerPendingSupersedes) {
+  TrackerNode node(Options(), MakeTrackerLimits(Robot()));
+  node.OnTrajectory(Trajectory(5, kT0), kT0);
+  node.OnTrajectory(Trajectory(3, kT0), kT0);
+  node.OnTrajectory(Trajectory(5, kT0), kT0);
+  EXPECT_EQ(node.counts().trajectories_ignored, 2);
+  EXPECT_EQ(node.active_id(), 5);
+  node.OnTrajectory(Trajectory(8, kT0 + 1'000'000), kT0);
+  node.OnTrajectory(Trajectory(7, kT0 + 200'000), kT0);  // older than the pending one
+  EXPECT_EQ(node.counts().trajectories_ignored, 3);
+  EXPECT_EQ(node.pending_id(), 8);
+  node.OnTrajectory(Trajectory(9, kT0 + 300'000), kT0);
+  EXPECT_EQ(node.pending_id(), 9);
+  EXPECT_EQ(node.counts().pending_superseded, 1);
+  node.Step(kT0 + 300'000);
+  EXPECT_EQ(node.active_id(), 9);
+  EXPECT_EQ(node.counts().trajectories_rejected, 0);
+}
+
+TEST(TrackerNode, StaleStateStopsWithinTheAccelerationLimits) {
+  const TrackerLimits limits = MakeTrackerLimits(Robot());
+  TrackerNode node(Options(), limits);
+  node.OnTrajectory(Trajectory(1, kT0), kT0);
+  std::int64_t now = kT0;
+  double v = 0.0;
+  for (; now <= kT0 + 800'000; now += kCycle) {  // fresh states: tracking, moving
+    node.OnRobotState(StateMessage(Start(), now));
+    const TrackerCycle& c = node.Step(now);
+    EXPECT_EQ(c.status.state, tracker_status_t::TRACKING);
+    v = c.command.v_mps;
+  }
+  ASSERT_GT(v, 0.05);
+  const std::int64_t last_state = now - kCycle;
+  bool stopping = false;
+  for (int i = 0; i < 100; ++i, now += kCycle) {  // no more states
+    const TrackerCycle& c = node.Step(now);
+    const double age_s = static_cast<double>(now - last_state) * 1e-6;
+    if (age_s > 0.1 + 1e-9) {
+      EXPECT_EQ(c.status.state, tracker_status_t::STOPPING) << age_s;
+      EXPECT_LE(std::abs(c.command.v_mps), std::abs(v) + 1e-12);
+      EXPECT_GE(std::abs(c.command.v_mps), std::abs(v) - limits.base.a_max_mps2 * 0.02 - 1e-9);
+      stopping = true;
+    } else if (age_s < 0.1 - 1e-9) {
+      EXPECT_EQ(c.status.state, tracker_status_t::TRACKING) << age_s;
+    }
+    v = c.command.v_mps;
+  }
+  EXPECT_TRUE(stopping);
+  EXPECT_EQ(v, 0.0);
+  EXPECT_EQ(node.counts().stops_stale, 1);
+  EXPECT_EQ(node.Health(), heartbeat_t::WARN);
+}
+
+TEST(TrackerNode, NoStateEverStopsToo) {
+  TrackerNode node(Options(), MakeTrackerLimits(Robot()));
+  node.OnTrajectory(Trajectory(1, kT0), kT0);
+  const TrackerCycle& c = node.Step(kT0 + kCycle);
+  EXPECT_EQ(c.status.state, tracker_status_t::STOPPING);
+  EXPECT_EQ(c.command.v_mps, 0.0);
+}
+
+TEST(TrackerNode, ForwardsTheLatestGripperTarget) {
+  TrackerNode node(Options(), MakeTrackerLimits(Robot()));
+  node.OnRobotState(StateMessage(Start(), kT0, 0.3));
+  EXPECT_DOUBLE_EQ(node.Step(kT0).command.gripper, 0.3);  // none asked yet: hold the measured one
+  gripper_command_t g{};
+  g.position = 1.0;
+  g.source = "test";
+  node.OnGripper(g);
+  EXPECT_DOUBLE_EQ(node.Step(kT0 + kCycle).command.gripper, 1.0);
+  g.position = 2.0;  // out of [0, 1]: rejected
+  node.OnGripper(g);
+  g.position = std::nan("");
+  node.OnGripper(g);
+  EXPECT_DOUBLE_EQ(node.Step(kT0 + 2 * kCycle).command.gripper, 1.0);
+  EXPECT_EQ(node.counts().grippers, 1);
+  EXPECT_EQ(node.counts().grippers_rejected, 2);
+  g.position = 0.0;
+  node.OnGripper(g);
+  EXPECT_DOUBLE_EQ(node.Step(kT0 + 3 * kCycle).command.gripper, 0.0);
+}
+
+TEST(TrackerNode, MalformedMessagesAreCountedNeverFollowed) {
+  TrackerNode node(Options(), MakeTrackerLimits(Robot()));
+  poly_trajectory_t counts = Trajectory(1, kT0);
+  counts.num_coeffs -= 1;  // disagrees with the array
+  counts.coeffs.pop_back();
+  node.OnTrajectory(counts, kT0);
+  poly_trajectory_t not_minco = Trajectory(2, kT0);
+  not_minco.coeffs[(0 * 9 + 4) * 6 + 5] += 0.1;
+  node.OnTrajectory(not_minco, kT0);
+  poly_trajectory_t nan = Trajectory(3, kT0);
+  nan.coeffs[7] = std::nan("");
+  node.OnTrajectory(nan, kT0);
+  EXPECT_EQ(node.counts().trajectories_rejected, 3);
+  EXPECT_EQ(node.active_id(), 0);
+  robot_state_t state = StateMessage(Start(), kT0);
+  state.pose.x_m = std::nan("");
+  node.OnRobotState(state);
+  robot_state_t joints = StateMessage(Start(), kT0);
+  joints.joints.num_joints = 2;
+  joints.joints.position_rad.resize(2);
+  joints.joints.velocity_radps.resize(2);
+  joints.joints.effort_Nm.resize(2);
+  joints.joints.names.resize(2);
+  node.OnRobotState(joints);
+  EXPECT_EQ(node.counts().states_rejected, 2);
+  EXPECT_EQ(node.counts().states, 0);
+  EXPECT_EQ(node.Step(kT0).status.state, tracker_status_t::IDLE);
+  // A good one after the bad ones is followed.
+  node.OnTrajectory(Trajectory(4, kT0), kT0);
+  EXPECT_EQ(node.active_id(), 4);
+}
+
+TEST(TrackerNode, UndecodableBytesAreCountedByTheLoop) {
+  procs::ProcessOptions process;
+  process.lcm_url = "memq://";
+  process.name = "tracker-test";
+  procs::ProcessLoop loop(process);
+  ASSERT_TRUE(loop.ok());
+  TrackerNode node(Options(), MakeTrackerLimits(Robot()));
+  ConnectTrackerNode(&loop, &node, 0.02);
+  const std::vector<std::uint8_t> garbage = {1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12};
+  for (const char* channel : {"TRAJECTORY", "ROBOT_STATE", "GRIPPER_COMMAND"}) {
+    loop.lcm().publish(channel, garbage.data(), static_cast<unsigned>(garbage.size()));
+  }
+  const poly_trajectory_t good = Trajectory(1, procs::NowUtime());
+  loop.lcm().publish(std::string(channels::TRAJECTORY), &good);
+  loop.RunUntil(procs::ProcessLoop::Clock::now() + std::chrono::milliseconds(100));
+  EXPECT_EQ(loop.stats().Of("TRAJECTORY").malformed, 1);
+  EXPECT_EQ(loop.stats().Of("ROBOT_STATE").malformed, 1);
+  EXPECT_EQ(loop.stats().Of("GRIPPER_COMMAND").malformed, 1);
+  EXPECT_EQ(node.counts().trajectories, 1);
+  EXPECT_EQ(node.active_id(), 1);
+  EXPECT_GE(node.counts().cycles, 3);  // the timer ran, publishing commands
+}
+
+// A new trajectory (here one from rest where the moving robot is: the reference jumps) switches
+// over without a jump in the command: every input changes by at most its acceleration limit
+// times the control period, across the switch too.
+TEST(TrackerNode, SwitchingDoesNotJumpTheCommand) {
+  const TrackerLimits limits = MakeTrackerLimits(Robot());
+  TrackerNode node(Options(), limits);
+  WholeBodyState state = Start();
+  node.OnTrajectory(Trajectory(1, kT0), kT0);
+  control_command_t last{};
+  last.qdot_radps.assign(7, 0.0);
+  bool switched = false;
+  double v_at_switch = 0.0;
+  for (std::int64_t now = kT0; now < kT0 + 3'000'000; now += kCycle) {
+    if (now == kT0 + 1'500'000) node.OnTrajectory(Trajectory(2, now + 200'000, state), now);
+    node.OnRobotState(StateMessage(state, now));
+    const TrackerCycle& c = node.Step(now);
+    if (!switched && c.command.trajectory_id == 2) {
+      switched = true;
+      v_at_switch = last.v_mps;
+    }
+    EXPECT_LE(std::abs(c.command.v_mps - last.v_mps), limits.base.a_max_mps2 * 0.02 + 1e-9) << now - kT0;
+    EXPECT_LE(std::abs(c.command.omega_radps - last.omega_radps), limits.base.beta_max_radps2 * 0.02 + 1e-9);
+    for (int j = 0; j < 7; ++j) {
+      EXPECT_LE(std::abs(c.command.qdot_radps[j] - last.qdot_radps[j]), limits.qdd_max_radps2[j] * 0.02 + 1e-9);
+    }
+    last = c.command;
+    const double dt = 0.02;
+    const double yaw_mid = state.yaw_rad + 0.5 * c.command.omega_radps * dt;
+    state.x_m += c.command.v_mps * dt * std::cos(yaw_mid);
+    state.y_m += c.command.v_mps * dt * std::sin(yaw_mid);
+    state.yaw_rad += c.command.omega_radps * dt;
+    for (int j = 0; j < state.q_rad.size(); ++j) state.q_rad[j] += c.command.qdot_radps[j] * dt;
+  }
+  EXPECT_TRUE(switched);
+  EXPECT_GT(v_at_switch, 0.1);  // it was moving when the new one took over
+  EXPECT_EQ(node.active_id(), 2);
+}
+
+// An ideal plant (the commands integrated exactly, no latency) closed around the node.
+TEST(TrackerNode, ClosedLoopOnAnIdealPlantReachesTheEndAndFinishes) {
+  TrackerOptions options = Options();
+  options.nmpc.latency_s = 0.0;
+  TrackerNode node(options, MakeTrackerLimits(Robot()));
+  WholeBodyState state = Start();
+  const ArcYawTrajectory trajectory = test::TrackerTestTrajectory(Eigen::Vector2d::Zero(), 0.0, state.q_rad);
+  node.OnTrajectory(Trajectory(1, kT0 + 100'000), kT0);
+  double max_position_error = 0.0;
+  std::int8_t last_state = -1;
+  for (std::int64_t now = kT0; now < kT0 + 6'000'000; now += kCycle) {
+    node.OnRobotState(StateMessage(state, now));
+    const TrackerCycle& c = node.Step(now);
+    last_state = c.status.state;
+    if (c.status.state == tracker_status_t::TRACKING) {
+      max_position_error = std::max(max_position_error, c.status.position_error_m);
+    }
+    const double dt = 0.02;
+    const double yaw_mid = state.yaw_rad + 0.5 * c.command.omega_radps * dt;
+    state.x_m += c.command.v_mps * dt * std::cos(yaw_mid);
+    state.y_m += c.command.v_mps * dt * std::sin(yaw_mid);
+    state.yaw_rad += c.command.omega_radps * dt;
+    for (int j = 0; j < state.q_rad.size(); ++j) state.q_rad[j] += c.command.qdot_radps[j] * dt;
+  }
+  TrajectorySample end = trajectory.MakePoint();
+  trajectory.Evaluate(trajectory.duration_s(), &end);
+  EXPECT_EQ(last_state, tracker_status_t::FINISHED);
+  EXPECT_LT(std::hypot(state.x_m - end.state.x_m, state.y_m - end.state.y_m), 0.01);
+  EXPECT_LT(std::abs(WrapAngle(state.yaw_rad - end.state.yaw_rad)), 0.01);
+  EXPECT_LT((state.q_rad - end.state.q_rad).cwiseAbs().maxCoeff(), 0.01);
+  EXPECT_LT(max_position_error, 0.03);
+  EXPECT_EQ(node.counts().stops_ended, 1);
+  EXPECT_NE(node.Report().find("topay-tracker: 300 cycles"), std::string::npos) << node.Report();
+}
+
+}  // namespace
+}  // namespace topay::tracker

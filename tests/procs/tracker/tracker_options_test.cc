@@ -1,0 +1,78 @@
+// topay-tracker's options: the shipped config/tracker/tracker.yaml restates NmpcOptions'
+// defaults; a misspelt key or a bad value is a ConfigError naming the field.
+
+#include "procs/tracker/tracker_options.h"
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+
+#include "core/common/error.h"
+
+namespace topay::tracker {
+namespace {
+
+std::string Write(const std::string& name, const std::string& text) {
+  const std::filesystem::path dir = std::filesystem::path(TOPAY_BINARY_DIR) / "test_out" / "tracker_options";
+  std::filesystem::create_directories(dir);
+  const std::string path = (dir / name).string();
+  std::ofstream(path) << text;
+  return path;
+}
+
+std::string ErrorOf(const std::string& path) {
+  try {
+    LoadTrackerOptions(path);
+  } catch (const ConfigError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+TEST(TrackerOptions, ShippedConfigRestatesTheDefaults) {
+  const TrackerOptions o = LoadTrackerOptions(std::string(TOPAY_SOURCE_DIR) + "/config/tracker/tracker.yaml");
+  const NmpcOptions d;
+  EXPECT_EQ(o.nmpc.horizon_steps, d.horizon_steps);
+  EXPECT_DOUBLE_EQ(o.nmpc.step_s, d.step_s);
+  EXPECT_DOUBLE_EQ(o.nmpc.control_period_s, d.control_period_s);
+  EXPECT_DOUBLE_EQ(o.nmpc.latency_s, d.latency_s);
+  EXPECT_DOUBLE_EQ(o.nmpc.time_budget_s, d.time_budget_s);
+  EXPECT_EQ(o.nmpc.max_iterations, d.max_iterations);
+  EXPECT_DOUBLE_EQ(o.nmpc.position_weight, d.position_weight);
+  EXPECT_DOUBLE_EQ(o.nmpc.qdd_weight, d.qdd_weight);
+  EXPECT_DOUBLE_EQ(o.nmpc.limit_weight, d.limit_weight);
+  EXPECT_DOUBLE_EQ(o.nmpc.stale_state_s, 0.1);
+  EXPECT_DOUBLE_EQ(o.nmpc.end_settle_s, d.end_settle_s);
+  EXPECT_EQ(o.rebuild.trajectory.integrator.panels_per_piece, 12);
+  EXPECT_DOUBLE_EQ(CycleRateHz(o), 50.0);
+}
+
+TEST(TrackerOptions, ReadsValuesAndResolvesRobotPaths) {
+  const std::string path = Write("ok.yaml",
+                                 "robot_urdf: robot.urdf\nnmpc:\n  horizon_steps: 30\n  stale_state_s: 0.2\n"
+                                 "rebuild:\n  panels_per_piece: 8\nrest_command: 0.01\n");
+  const TrackerOptions o = LoadTrackerOptions(path);
+  EXPECT_EQ(o.nmpc.horizon_steps, 30);
+  EXPECT_DOUBLE_EQ(o.nmpc.stale_state_s, 0.2);
+  EXPECT_EQ(o.rebuild.trajectory.integrator.panels_per_piece, 8);
+  EXPECT_DOUBLE_EQ(o.rest_command, 0.01);
+  EXPECT_EQ(o.robot_urdf, (std::filesystem::path(path).parent_path() / "robot.urdf").string());
+  EXPECT_TRUE(o.robot_yaml.empty());
+}
+
+TEST(TrackerOptions, MisspeltKeyIsAnErrorNamingIt) {
+  EXPECT_NE(ErrorOf(Write("typo.yaml", "nmpc:\n  horizon_step: 30\n")).find("nmpc.horizon_step"), std::string::npos);
+  EXPECT_NE(ErrorOf(Write("typo_top.yaml", "rate_hz: 50\n")).find("rate_hz"), std::string::npos);
+}
+
+TEST(TrackerOptions, BadValuesAreErrorsNamingTheField) {
+  EXPECT_NE(ErrorOf(Write("bad.yaml", "nmpc:\n  step_s: -1\n")).find("step_s"), std::string::npos);
+  EXPECT_NE(ErrorOf(Write("bad_type.yaml", "nmpc:\n  latency_s: soon\n")).find("nmpc.latency_s"), std::string::npos);
+  EXPECT_NE(ErrorOf(Write("bad_panels.yaml", "rebuild:\n  panels_per_piece: 0\n")).find("rebuild.panels_per_piece"),
+            std::string::npos);
+  EXPECT_FALSE(ErrorOf("/nonexistent/tracker.yaml").empty());
+}
+
+}  // namespace
+}  // namespace topay::tracker
