@@ -1,5 +1,7 @@
 #include "core/io/yaml_section.h"
 
+#include <filesystem>
+
 #include <cmath>
 #include <limits>
 #include <utility>
@@ -112,6 +114,26 @@ void YamlSection::Finish() const {
       throw ConfigError(source_, FieldPath(key.c_str()), "unknown field (misspelt?)");
     }
   }
+}
+
+YAML::Node LoadYamlFile(const std::string& path) {
+  try {
+    return YAML::LoadFile(path);
+  } catch (const YAML::Exception& e) {
+    throw ConfigError(path, "", std::string("cannot read YAML: ") + e.what());
+  }
+}
+
+std::string ResolveBeside(const std::string& path, const std::string& config_path) {
+  if (path.empty() || std::filesystem::path(path).is_absolute()) return path;
+  return (std::filesystem::path(config_path).parent_path() / path).string();
+}
+
+void ReadRobotFiles(YamlSection* top, std::string* robot_urdf, std::string* robot_yaml) {
+  top->Read("robot_urdf", robot_urdf);
+  top->Read("robot_yaml", robot_yaml);
+  *robot_urdf = ResolveBeside(*robot_urdf, top->source());
+  *robot_yaml = ResolveBeside(*robot_yaml, top->source());
 }
 
 }  // namespace topay

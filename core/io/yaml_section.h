@@ -51,4 +51,16 @@ class YamlSection {
   std::set<std::string> used_;
 };
 
+/// The YAML file at `path`; throws ConfigError(path, "", "cannot read YAML: ...") if it
+/// cannot be read or parsed.
+YAML::Node LoadYamlFile(const std::string& path);
+
+/// `path` as written in the file `config_path`: a relative path is taken beside that file;
+/// an empty or absolute one is returned as is.
+std::string ResolveBeside(const std::string& path, const std::string& config_path);
+
+/// Reads the optional `robot_urdf` and `robot_yaml` keys of `top` (the processes' robot
+/// files), each resolved beside the file `top` came from (ResolveBeside).
+void ReadRobotFiles(YamlSection* top, std::string* robot_urdf, std::string* robot_yaml);
+
 }  // namespace topay

@@ -33,8 +33,7 @@ struct Flags {
 MapperOptions ResolveOptions(const procs::ProcessOptions& process, const Flags& f) {
   MapperOptions o = process.config_path.empty() ? MapperOptions{} : LoadMapperOptions(process.config_path);
   const std::string config_dir = procs::ConfigDir(TOPAY_CONFIG_DIR);
-  if (o.robot_urdf.empty()) o.robot_urdf = config_dir + "/robot/topay_mm.urdf";
-  if (o.robot_yaml.empty()) o.robot_yaml = config_dir + "/robot/topay_mm.yaml";
+  procs::DefaultRobotFiles(config_dir, &o.robot_urdf, &o.robot_yaml);
   if (!f.robot_urdf.empty()) o.robot_urdf = f.robot_urdf;
   if (!f.robot_yaml.empty()) o.robot_yaml = f.robot_yaml;
   if (!f.save.empty()) o.save_path = f.save;

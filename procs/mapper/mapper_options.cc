@@ -50,27 +50,14 @@ void ReadPublish(YamlSection s, MapPublishOptions* o) {
   s.Finish();
 }
 
-std::string Resolve(const std::string& path, const std::string& config_path) {
-  if (path.empty() || std::filesystem::path(path).is_absolute()) return path;
-  return (std::filesystem::path(config_path).parent_path() / path).string();
-}
-
 }  // namespace
 
 MapperOptions LoadMapperOptions(const std::string& path) {
-  YAML::Node root;
-  try {
-    root = YAML::LoadFile(path);
-  } catch (const YAML::Exception& e) {
-    throw ConfigError(path, "", std::string("cannot read YAML: ") + e.what());
-  }
+  const YAML::Node root = LoadYamlFile(path);
   MapperOptions o;
   o.source = path;
   YamlSection top(root, path);
-  top.Read("robot_urdf", &o.robot_urdf);
-  top.Read("robot_yaml", &o.robot_yaml);
-  o.robot_urdf = Resolve(o.robot_urdf, path);
-  o.robot_yaml = Resolve(o.robot_yaml, path);
+  ReadRobotFiles(&top, &o.robot_urdf, &o.robot_yaml);
   ReadMap(top.Section("map"), &o.map);
   if (const YAML::Node filter = top.Raw("filter"); filter) o.filter = LoadScanFilterOptions(filter, path, "filter");
   YamlSection history = top.Section("robot_state");
@@ -84,7 +71,7 @@ MapperOptions LoadMapperOptions(const std::string& path) {
   ReadPublish(top.Section("publish"), &o.publish);
   top.Read("save", &o.save_path);
   top.Read("prior", &o.prior_path);
-  o.prior_path = Resolve(o.prior_path, path);
+  o.prior_path = ResolveBeside(o.prior_path, path);
   top.Finish();
   CheckMapperOptions(o);
   return o;

@@ -12,11 +12,6 @@
 namespace topay::mission {
 namespace {
 
-std::string Resolve(const std::string& path, const std::string& config_path) {
-  if (path.empty() || std::filesystem::path(path).is_absolute()) return path;
-  return (std::filesystem::path(config_path).parent_path() / path).string();
-}
-
 void Require(bool ok, double value, const std::string& source, const char* field, const char* what) {
   if (!ok || !std::isfinite(value)) throw ConfigError(source, field, fmt::format("must be finite and {}, got {}", what, value));
 }
@@ -35,19 +30,11 @@ void CheckMissionOptions(const MissionOptions& o, const std::string& source) {
 }
 
 MissionOptions LoadMissionOptions(const std::string& path) {
-  YAML::Node root;
-  try {
-    root = YAML::LoadFile(path);
-  } catch (const YAML::Exception& e) {
-    throw ConfigError(path, "", std::string("cannot read YAML: ") + e.what());
-  }
+  const YAML::Node root = LoadYamlFile(path);
   MissionOptions o;
   o.source = path;
   YamlSection top(root, path);
-  top.Read("robot_urdf", &o.robot_urdf);
-  top.Read("robot_yaml", &o.robot_yaml);
-  o.robot_urdf = Resolve(o.robot_urdf, path);
-  o.robot_yaml = Resolve(o.robot_yaml, path);
+  ReadRobotFiles(&top, &o.robot_urdf, &o.robot_yaml);
   top.Read("max_attempts", &o.max_attempts);
   top.Read("retry_delay_s", &o.retry_delay_s);
   top.Read("step_timeout_s", &o.step_timeout_s);

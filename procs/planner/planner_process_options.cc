@@ -10,11 +10,6 @@
 namespace topay::planner {
 namespace {
 
-std::string Resolve(const std::string& path, const std::string& config_path) {
-  if (path.empty() || std::filesystem::path(path).is_absolute()) return path;
-  return (std::filesystem::path(config_path).parent_path() / path).string();
-}
-
 void ReadMap(YamlSection s, PlannerMapOptions* o) {
   std::string unknown = ToString(o->unknown);
   s.Read("unknown", &unknown);
@@ -159,21 +154,13 @@ double FieldUpdatePeriod(const PlannerProcessOptions& o) {
 }
 
 PlannerProcessOptions LoadPlannerProcessOptions(const std::string& path) {
-  YAML::Node root;
-  try {
-    root = YAML::LoadFile(path);
-  } catch (const YAML::Exception& e) {
-    throw ConfigError(path, "", std::string("cannot read YAML: ") + e.what());
-  }
+  const YAML::Node root = LoadYamlFile(path);
   PlannerProcessOptions o;
   o.source = path;
   YamlSection top(root, path);
-  top.Read("robot_urdf", &o.robot_urdf);
-  top.Read("robot_yaml", &o.robot_yaml);
+  ReadRobotFiles(&top, &o.robot_urdf, &o.robot_yaml);
   top.Read("planner_config", &o.planner_config);
-  o.robot_urdf = Resolve(o.robot_urdf, path);
-  o.robot_yaml = Resolve(o.robot_yaml, path);
-  o.planner_config = Resolve(o.planner_config, path);
+  o.planner_config = ResolveBeside(o.planner_config, path);
   ReadMap(top.Section("map"), &o.map);
   ReadTiming(top.Section("timing"), &o.timing);
   ReadTriggers(top.Section("triggers"), &o.triggers);

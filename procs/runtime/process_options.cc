@@ -12,6 +12,11 @@ std::string ConfigDir(const std::string& built_in) {
   return env != nullptr && *env != '\0' ? env : built_in;
 }
 
+void DefaultRobotFiles(const std::string& config_dir, std::string* robot_urdf, std::string* robot_yaml) {
+  if (robot_urdf->empty()) *robot_urdf = config_dir + "/robot/topay_mm.urdf";
+  if (robot_yaml->empty()) *robot_yaml = config_dir + "/robot/topay_mm.yaml";
+}
+
 void AddCommonFlags(CLI::App* app, const std::string& default_name, ProcessOptions* options) {
   const char* env_name = std::getenv("TOPAY_PROCESS_NAME");
   options->name = (env_name != nullptr && *env_name != '\0') ? env_name : default_name;

@@ -39,6 +39,10 @@ void AddCommonFlags(CLI::App* app, const std::string& default_name, ProcessOptio
 /// source tree's config/, compiled into each process).
 std::string ConfigDir(const std::string& built_in);
 
+/// Fills an empty robot URDF / robot YAML path with the shipped robot's files in `config_dir`
+/// (robot/topay_mm.urdf, robot/topay_mm.yaml).
+void DefaultRobotFiles(const std::string& config_dir, std::string* robot_urdf, std::string* robot_yaml);
+
 /// Parses argv with `app`. Returns nullopt to go on, or the exit code to return from main:
 /// 0 after --help (printed), 2 after a usage error (printed with the usage hint).
 std::optional<int> ParseFlags(CLI::App* app, int argc, char** argv);

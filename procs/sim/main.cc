@@ -53,8 +53,7 @@ void AddSimFlags(CLI::App* app, Flags* f) {
 simproc::SimOptions ResolveOptions(const procs::ProcessOptions& process, const Flags& f) {
   simproc::SimOptions o = process.config_path.empty() ? simproc::SimOptions{} : simproc::LoadSimOptions(process.config_path);
   const std::string config_dir = procs::ConfigDir(TOPAY_CONFIG_DIR);
-  if (o.robot_urdf.empty()) o.robot_urdf = config_dir + "/robot/topay_mm.urdf";
-  if (o.robot_yaml.empty()) o.robot_yaml = config_dir + "/robot/topay_mm.yaml";
+  procs::DefaultRobotFiles(config_dir, &o.robot_urdf, &o.robot_yaml);
   if (!f.scene.empty()) o.scene = f.scene;
   if (f.seed) o.scene_seed = *f.seed;
   if (!f.robot_urdf.empty()) o.robot_urdf = f.robot_urdf;

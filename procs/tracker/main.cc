@@ -24,8 +24,7 @@ namespace {
 TrackerOptions ResolveOptions(const procs::ProcessOptions& process) {
   TrackerOptions o = process.config_path.empty() ? TrackerOptions{} : LoadTrackerOptions(process.config_path);
   const std::string config_dir = procs::ConfigDir(TOPAY_CONFIG_DIR);
-  if (o.robot_urdf.empty()) o.robot_urdf = config_dir + "/robot/topay_mm.urdf";
-  if (o.robot_yaml.empty()) o.robot_yaml = config_dir + "/robot/topay_mm.yaml";
+  procs::DefaultRobotFiles(config_dir, &o.robot_urdf, &o.robot_yaml);
   return o;
 }
 

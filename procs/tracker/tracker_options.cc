@@ -10,11 +10,6 @@
 namespace topay::tracker {
 namespace {
 
-std::string Resolve(const std::string& path, const std::string& config_path) {
-  if (path.empty() || std::filesystem::path(path).is_absolute()) return path;
-  return (std::filesystem::path(config_path).parent_path() / path).string();
-}
-
 void ReadNmpc(YamlSection s, NmpcOptions* o) {
   s.Read("horizon_steps", &o->horizon_steps);
   s.Read("step_s", &o->step_s);
@@ -63,19 +58,11 @@ void ReadRebuild(YamlSection s, msgs::TrajectoryRebuildOptions* o) {
 double CycleRateHz(const TrackerOptions& options) { return 1.0 / options.nmpc.control_period_s; }
 
 TrackerOptions LoadTrackerOptions(const std::string& path) {
-  YAML::Node root;
-  try {
-    root = YAML::LoadFile(path);
-  } catch (const YAML::Exception& e) {
-    throw ConfigError(path, "", std::string("cannot read YAML: ") + e.what());
-  }
+  const YAML::Node root = LoadYamlFile(path);
   TrackerOptions o;
   o.source = path;
   YamlSection top(root, path);
-  top.Read("robot_urdf", &o.robot_urdf);
-  top.Read("robot_yaml", &o.robot_yaml);
-  o.robot_urdf = Resolve(o.robot_urdf, path);
-  o.robot_yaml = Resolve(o.robot_yaml, path);
+  ReadRobotFiles(&top, &o.robot_urdf, &o.robot_yaml);
   ReadNmpc(top.Section("nmpc"), &o.nmpc);
   ReadRebuild(top.Section("rebuild"), &o.rebuild);
   top.Read("rest_command", &o.rest_command);

@@ -98,6 +98,16 @@ inline int WaitFor(pid_t pid, double timeout_s) {
   return -1;
 }
 
+/// Stops each process still alive: SIGINT, then SIGKILL if it has not exited within 5 s.
+inline void StopProcesses(const std::vector<pid_t>& pids) {
+  for (pid_t pid : pids) {
+    if (pid > 0 && launch::ProcessAlive(pid)) {
+      kill(pid, SIGINT);
+      if (WaitFor(pid, 5.0) == -1) kill(pid, SIGKILL), WaitFor(pid, 3.0);
+    }
+  }
+}
+
 /// Reaps every exited child of this (subreaper) process, orphans included. Call it only after
 /// waiting for the children whose status matters (it would take theirs too).
 inline void ReapOrphans() {

@@ -4,6 +4,9 @@
 
 #include <gtest/gtest.h>
 
+#include <filesystem>
+#include <fstream>
+
 #include "core/common/error.h"
 
 namespace topay {
@@ -34,6 +37,28 @@ TEST(YamlSection, ReadsListsOfNumbersAndNamesTheBadEntry) {
   }
   EXPECT_TRUE(s.Raw("raw").IsMap());
   EXPECT_NO_THROW(s.Finish());  // every key was read (Raw marks its key)
+}
+
+TEST(YamlSection, FilesLoadAndRobotFilesResolveBesideTheConfig) {
+  const std::filesystem::path dir = std::filesystem::temp_directory_path() / "topay_yaml_section_test";
+  std::filesystem::create_directories(dir);
+  const std::string path = (dir / "options.yaml").string();
+  std::ofstream(path) << "robot_urdf: robot/r.urdf\nrobot_yaml: /abs/r.yaml\n";
+  YamlSection top(LoadYamlFile(path), path);
+  std::string urdf, yaml;
+  ReadRobotFiles(&top, &urdf, &yaml);
+  top.Finish();
+  EXPECT_EQ(urdf, (dir / "robot/r.urdf").string());
+  EXPECT_EQ(yaml, "/abs/r.yaml");
+  EXPECT_EQ(ResolveBeside("", path), "");
+  try {
+    LoadYamlFile((dir / "missing.yaml").string());
+    ADD_FAILURE() << "a missing file loaded";
+  } catch (const ConfigError& e) {
+    EXPECT_NE(std::string(e.what()).find("missing.yaml"), std::string::npos) << e.what();
+  }
+  std::ofstream(path) << "a: [1, 2\n";
+  EXPECT_THROW(LoadYamlFile(path), ConfigError);
 }
 
 }  // namespace

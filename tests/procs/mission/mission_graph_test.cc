@@ -60,31 +60,19 @@ class MissionGraph : public testing::Test {
     if (!EnterTestNamespace(&why)) GTEST_SKIP() << why;
     dir_ = TestDir("graph");
     scene_ = WriteUnseenTablesRoom(dir_ + "/room.json");
-    WriteText(dir_ + "/planner.yaml", "planner_config: " + ConfigFile("planner/topay.yaml") +
-                                          "\ntiming: {from_rest_time_limit_s: 10.0}\n");
     watcher_ = std::make_unique<HeartbeatWatcher>(kLcmUrl);
     lcm::LCM& lcm = watcher_->lcm();
     lcm.subscribe(std::string(channels::MISSION_STATUS), &MissionListener::OnMission, &out_);
     lcm.subscribe(std::string(channels::ROBOT_STATE), &MissionListener::OnRobot, &out_);
     lcm.subscribe(std::string(channels::SIM_STATUS), &MissionListener::OnSim, &out_);
-    pids_.push_back(Spawn({Bin("topay-mapper"), "--config", ConfigFile("mapper/mapper.yaml"), "--name", "mapper",
-                           "--lcm-url", kLcmUrl}, dir_ + "/mapper.txt"));
-    pids_.push_back(Spawn({Bin("topay-planner"), "--config", dir_ + "/planner.yaml", "--name", "planner",
-                           "--lcm-url", kLcmUrl}, dir_ + "/planner.txt"));
-    pids_.push_back(Spawn({Bin("topay-sim"), "--config", ConfigFile("sim/sim.yaml"), "--scene", dir_ + "/room.json",
-                           "--follow", "--name", "sim", "--lcm-url", kLcmUrl}, dir_ + "/sim.txt"));
+    pids_ = SpawnFollowGraph(dir_, kLcmUrl);
     ASSERT_TRUE(watcher_->SpinUntil([&] { return out_.robot.has_value() && watcher_->last.contains("planner") &&
                                                   watcher_->last.contains("mapper"); }, 15.0))
         << Logs();
     watcher_->Spin(1.0);  // a few scans into the map
   }
   void TearDown() override {
-    for (pid_t pid : pids_) {
-      if (pid > 0 && launch::ProcessAlive(pid)) {
-        kill(pid, SIGINT);
-        if (WaitFor(pid, 5.0) == -1) kill(pid, SIGKILL), WaitFor(pid, 3.0);
-      }
-    }
+    StopProcesses(pids_);
     if (HasFailure()) std::cout << Logs();
   }
   std::string Logs() const {

@@ -121,8 +121,8 @@ TEST_F(MissionProcess, PlansThatKeepFailingFailTheMissionWithExitCodeThree) {
   ASSERT_NE(status, -1) << Output();
   ASSERT_TRUE(WIFEXITED(status)) << Output();
   EXPECT_EQ(WEXITSTATUS(status), 3) << Output();
-  EXPECT_EQ(bus_.goals.size(), 2u) << "one retry with a new goal id";
-  if (bus_.goals.size() == 2u) EXPECT_NE(bus_.goals[0].goal_id, bus_.goals[1].goal_id);
+  ASSERT_EQ(bus_.goals.size(), 2u) << "one retry with a new goal id";
+  EXPECT_NE(bus_.goals[0].goal_id, bus_.goals[1].goal_id);
   ASSERT_FALSE(bus_.statuses.empty());
   EXPECT_EQ(bus_.statuses.back().state, mission_status_t::FAILED);
   EXPECT_NE(bus_.statuses.back().detail.find("no route (test)"), std::string::npos) << bus_.statuses.back().detail;

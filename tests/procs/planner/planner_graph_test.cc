@@ -44,7 +44,6 @@ namespace {
 
 constexpr const char* kLcmUrl = "udpm://239.255.76.67:7667?ttl=0&recv_buf_size=8388608";
 
-std::string Bin(const std::string& name) { return BinDir() + "/" + name; }
 std::string ConfigFile(const std::string& rel) { return std::string(TOPAY_SOURCE_DIR) + "/config/" + rel; }
 
 struct GraphListener {
@@ -88,8 +87,6 @@ class PlannerGraph : public testing::Test {
     if (!EnterTestNamespace(&why)) GTEST_SKIP() << why;
     dir_ = TestDir("graph");
     scene_ = WriteUnseenTablesRoom(dir_ + "/room.json");  // the sim's room, known exactly here too
-    WriteText(dir_ + "/planner.yaml", "planner_config: " + ConfigFile("planner/topay.yaml") +
-                                          "\ntiming: {from_rest_time_limit_s: 10.0}\n");
     watcher_ = std::make_unique<HeartbeatWatcher>(kLcmUrl);
     lcm::LCM& lcm = watcher_->lcm();
     lcm.subscribe(std::string(channels::TRAJECTORY), &GraphListener::OnTrajectory, &out_);
@@ -97,24 +94,14 @@ class PlannerGraph : public testing::Test {
     lcm.subscribe(std::string(channels::ROBOT_STATE), &GraphListener::OnRobot, &out_);
     lcm.subscribe(std::string(channels::SIM_STATUS), &GraphListener::OnSim, &out_);
     lcm.subscribe(std::string(channels::MAP_UPDATE), &GraphListener::OnMap, &out_);
-    pids_.push_back(Spawn({Bin("topay-mapper"), "--config", ConfigFile("mapper/mapper.yaml"), "--name", "mapper",
-                           "--lcm-url", kLcmUrl}, dir_ + "/mapper.txt"));
-    pids_.push_back(Spawn({Bin("topay-planner"), "--config", dir_ + "/planner.yaml", "--name", "planner",
-                           "--lcm-url", kLcmUrl}, dir_ + "/planner.txt"));
-    pids_.push_back(Spawn({Bin("topay-sim"), "--config", ConfigFile("sim/sim.yaml"), "--scene", dir_ + "/room.json",
-                           "--follow", "--name", "sim", "--lcm-url", kLcmUrl}, dir_ + "/sim.txt"));
+    pids_ = SpawnFollowGraph(dir_, kLcmUrl);
     ASSERT_TRUE(watcher_->SpinUntil([&] { return out_.robot.has_value() && watcher_->last.contains("planner") &&
                                                   watcher_->last.contains("mapper"); }, 15.0))
         << Logs();
     watcher_->Spin(1.0);  // a few scans into the map
   }
   void TearDown() override {
-    for (pid_t pid : pids_) {
-      if (pid > 0 && launch::ProcessAlive(pid)) {
-        kill(pid, SIGINT);
-        if (WaitFor(pid, 5.0) == -1) kill(pid, SIGKILL), WaitFor(pid, 3.0);
-      }
-    }
+    StopProcesses(pids_);
     if (HasFailure()) std::cout << Logs();
     WriteWhatThePlannerSaw();
   }

@@ -340,12 +340,7 @@ class ReplanLatency : public testing::Test {
   }
   static std::string RunSuffix(int run) { return run == 1 ? "" : "." + std::to_string(run); }
   void StopGraph() {
-    for (pid_t pid : pids_) {
-      if (pid > 0 && launch::ProcessAlive(pid)) {
-        kill(pid, SIGINT);
-        if (WaitFor(pid, 5.0) == -1) kill(pid, SIGKILL), WaitFor(pid, 3.0);
-      }
-    }
+    StopProcesses(pids_);
     pids_.clear();
   }
   /// A fresh graph (the robot back at the start, an empty map) when the robot is stuck; the

@@ -5,9 +5,11 @@
 #include <cmath>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include <Eigen/Core>
 
+#include "graph_test_support.h"
 #include "core/collision/scene_clearance.h"
 #include "core/common/random.h"
 #include "core/geometry/scene.h"
@@ -32,6 +34,21 @@ inline Scene WriteUnseenTablesRoom(const std::string& path) {
   Scene room = sim::LoadScene(*sim::ParseSceneArgument("tables", 3), keep_out);
   WriteSceneJson(path, room, nullptr);
   return room;
+}
+
+/// Starts the planner's graph before the tracker exists, in `dir` (logs mapper.txt,
+/// planner.txt, sim.txt): topay-mapper, topay-planner (config/planner/topay.yaml, 10 s for a
+/// plan from rest) and topay-sim --follow (the ideal follower) in the room `dir`/room.json.
+inline std::vector<pid_t> SpawnFollowGraph(const std::string& dir, const std::string& lcm_url) {
+  const auto config = [](const std::string& rel) { return std::string(TOPAY_SOURCE_DIR) + "/config/" + rel; };
+  WriteText(dir + "/planner.yaml",
+            "planner_config: " + config("planner/topay.yaml") + "\ntiming: {from_rest_time_limit_s: 10.0}\n");
+  return {Spawn({BinDir() + "/topay-mapper", "--config", config("mapper/mapper.yaml"), "--name", "mapper",
+                 "--lcm-url", lcm_url}, dir + "/mapper.txt"),
+          Spawn({BinDir() + "/topay-planner", "--config", dir + "/planner.yaml", "--name", "planner", "--lcm-url",
+                 lcm_url}, dir + "/planner.txt"),
+          Spawn({BinDir() + "/topay-sim", "--config", config("sim/sim.yaml"), "--scene", dir + "/room.json",
+                 "--follow", "--name", "sim", "--lcm-url", lcm_url}, dir + "/sim.txt")};
 }
 
 /// The clearance (m) each passage on the way to a goal keeps beyond the robot's footprint
