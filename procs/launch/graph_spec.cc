@@ -90,7 +90,7 @@ ProcessSpec ParseProcess(const YAML::Node& node, int index, const std::string& f
   if (!p.name.empty()) where.path += " (" + p.name + ")";
   CheckKeys(node, {"name", "command", "args", "env", "working_dir", "depends_on", "restart",
                    "restart_delay_s", "restart_delay_max_s", "max_restarts", "heartbeat",
-                   "heartbeat_timeout_s", "startup_timeout_s", "ready_delay_s", "group", "autostart", "publishes", "realtime"},
+                   "heartbeat_timeout_s", "startup_timeout_s", "ready_delay_s", "group", "autostart", "publishes", "ends_graph", "realtime"},
             where);
   if (p.name.empty()) where.Fail(node, "name", "missing");
   Read(node, "command", where, &p.command);
@@ -111,6 +111,7 @@ ProcessSpec ParseProcess(const YAML::Node& node, int index, const std::string& f
   Read(node, "group", where, &p.group);
   Read(node, "autostart", where, &p.autostart);
   Read(node, "publishes", where, &p.publishes);
+  Read(node, "ends_graph", where, &p.ends_graph);
   p.realtime = ParseRealtime(node["realtime"], where);
   return p;
 }

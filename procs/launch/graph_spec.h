@@ -50,6 +50,9 @@ struct ProcessSpec {
   std::string group;                  ///< label; --group GROUP starts only those groups
   bool autostart = true;              ///< false: started only when its group is selected
   std::vector<std::string> publishes; ///< channels it publishes (left out of a replay)
+  /// The graph's job (e.g. a mission): once it exits for good (not restarted), the launcher
+  /// stops the graph and exits with its exit code (128 + signal if it was killed).
+  bool ends_graph = false;
   RealtimeSettings realtime;
 };
 

@@ -190,6 +190,10 @@ void Supervisor::OnExit(Process& p, int status, Clock::time_point now) {
   if (!restart || !allowed) {
     p.state = ProcState::kExited;
     Log(p.spec.name + ": " + what + (restart ? ", restart limit reached" : "") + ", not restarted");
+    if (p.spec.ends_graph) {
+      exit_code_ = p.killed_silent ? 128 + SIGKILL : WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
+      BeginStop(p.spec.name + " ended the graph (exit code " + std::to_string(exit_code_) + ")", now);
+    }
     return;
   }
   const double delay = std::min(p.spec.restart_delay_s * std::pow(2.0, p.consecutive_failures),

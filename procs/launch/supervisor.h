@@ -46,9 +46,10 @@ class Supervisor {
   Supervisor(GraphSpec graph, SupervisorOptions options);
   ~Supervisor();
 
-  /// Runs the graph until a signal, the duration, the end of the replay or every process has
-  /// exited for good. Returns 0, or 1 after an internal error (fork or poll failed; the graph
-  /// is stopped).
+  /// Runs the graph until a signal, the duration, the end of the replay, the exit of an
+  /// `ends_graph` process or every process has exited for good. Returns 0, the exit code of the
+  /// `ends_graph` process that ended it, or 1 after an internal error (fork or poll failed; the
+  /// graph is stopped).
   int Run();
 
  private:

@@ -54,6 +54,7 @@ processes:
     startup_timeout_s: 9
     group: planning
     publishes: [TRAJECTORY]
+    ends_graph: true
     realtime: {nice: -5, fifo_priority: 40, cpus: [0, 1], mlockall: true}
   - name: model
     command: model-bin
@@ -86,6 +87,8 @@ processes:
   EXPECT_EQ(p.startup_timeout_s, 9.0);
   EXPECT_EQ(p.group, "planning");
   EXPECT_EQ(p.publishes, std::vector<std::string>{"TRAJECTORY"});
+  EXPECT_TRUE(p.ends_graph);
+  EXPECT_FALSE(g.processes[0].ends_graph);
   EXPECT_EQ(p.realtime.nice, -5);
   EXPECT_EQ(p.realtime.fifo_priority, 40);
   EXPECT_EQ(p.realtime.cpus, (std::vector<int>{0, 1}));

@@ -37,5 +37,25 @@ processes:
   EXPECT_NE(ReadText(dir + "/run/failing.log").find("=== started pid"), std::string::npos);
 }
 
+// An `ends_graph` process (a mission) ends the graph when it exits for good: the others are
+// stopped (a sleeper that would run for a minute) and the launcher exits with its exit code.
+TEST(LaunchRestartPolicy, AnEndsGraphProcessStopsTheGraphAndGivesItsExitCode) {
+  const std::string dir = TestDir("ends_graph");
+  WriteText(dir + "/graph.yaml", R"(name: job
+lcm_url: memq://
+processes:
+  - {name: sleeper, command: /bin/sleep, args: ["60"], heartbeat: false, restart: always}
+  - {name: job, command: /bin/sh, args: [-c, "sleep 0.5; exit 3"], heartbeat: false, restart: never,
+     ends_graph: true, depends_on: [sleeper]}
+)");
+  const pid_t launcher = StartLauncher(dir + "/graph.yaml", dir + "/run", {});
+  const int status = WaitFor(launcher, 10.0);
+  const std::string log = ReadText(dir + "/run/launch.log");
+  ASSERT_TRUE(WIFEXITED(status)) << log;
+  EXPECT_EQ(WEXITSTATUS(status), 3) << log;
+  EXPECT_NE(log.find("job ended the graph (exit code 3)"), std::string::npos) << log;
+  EXPECT_NE(log.find("sleeper: killed by"), std::string::npos) << log;
+}
+
 }  // namespace
 }  // namespace topay::test
