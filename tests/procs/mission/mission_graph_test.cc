@@ -1,5 +1,6 @@
-// topay-mission in the loop: topay-sim (--follow: the ideal follower, no tracker), topay-mapper,
-// topay-planner and topay-mission as real processes over real LCM in a private network
+// topay-mission in the closed loop: topay-sim (its plant driven by the tracker's commands, with
+// command latency and actuator lag), topay-mapper, topay-planner, topay-tracker and topay-mission
+// as real processes over real LCM in a private network
 // namespace (skipped, with the reason, where none can be made), in a Tables room the planner
 // has never seen. A two-goal mission (goto, close the gripper, goto, open it, home) written by the
 // test with goals it can prove reachable (tests/procs/planner/unseen_room.h) must end with the
@@ -17,6 +18,7 @@
 #include "core/io/robot_loader.h"
 #include "core/robot/kinematics.h"
 #include "procs/msgs/convert_robot_state.h"
+#include "tests/procs/mission/closed_loop_graph.h"
 #include "tests/procs/planner/unseen_room.h"
 #include "topay/mission_status_t.hpp"
 #include "topay/robot_state_t.hpp"
@@ -65,9 +67,10 @@ class MissionGraph : public testing::Test {
     lcm.subscribe(std::string(channels::MISSION_STATUS), &MissionListener::OnMission, &out_);
     lcm.subscribe(std::string(channels::ROBOT_STATE), &MissionListener::OnRobot, &out_);
     lcm.subscribe(std::string(channels::SIM_STATUS), &MissionListener::OnSim, &out_);
-    pids_ = SpawnFollowGraph(dir_, kLcmUrl);
+    pids_ = SpawnClosedLoopGraph(dir_, kLcmUrl);
     ASSERT_TRUE(watcher_->SpinUntil([&] { return out_.robot.has_value() && watcher_->last.contains("planner") &&
-                                                  watcher_->last.contains("mapper"); }, 15.0))
+                                                  watcher_->last.contains("mapper") &&
+                                                  watcher_->last.contains("tracker"); }, 15.0))
         << Logs();
     watcher_->Spin(1.0);  // a few scans into the map
   }
@@ -77,7 +80,8 @@ class MissionGraph : public testing::Test {
   }
   std::string Logs() const {
     return "--- mission\n" + ReadText(dir_ + "/mission.txt") + "--- planner\n" + ReadText(dir_ + "/planner.txt") +
-           "--- sim\n" + ReadText(dir_ + "/sim.txt") + "--- mapper\n" + ReadText(dir_ + "/mapper.txt");
+           "--- tracker\n" + ReadText(dir_ + "/tracker.txt") + "--- sim\n" + ReadText(dir_ + "/sim.txt") +
+           "--- mapper\n" + ReadText(dir_ + "/mapper.txt");
   }
   // Handles messages until `pid` exits (its wait status) or timeout_s (-1).
   int SpinUntilExit(pid_t pid, double timeout_s) {
