@@ -278,7 +278,8 @@ void PlannerNode::RequestPlan(PlanTrigger trigger, const std::string& reason, bo
   PlanJob job;
   std::string error;
   const std::int64_t now = clock_.Now();
-  if (!FillStart(trigger, now, &job, &error)) {
+  if (!map_.has_map()) error = "no map yet (no MAP_UPDATE snapshot received)";  // e.g. a goal at start-up
+  if (!error.empty() || !FillStart(trigger, now, &job, &error)) {
     spdlog::warn("goal {}: cannot plan yet: {}", goal_->goal.goal_id, error);
     retry_at_utime_ = now + Micros(options_.timing.retry_period_s);
     PublishStatus(planner_status_t::PLANNING, "", "waiting: " + error);

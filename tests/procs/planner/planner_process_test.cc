@@ -60,14 +60,17 @@ class PlannerProcess : public testing::Test {
     boxes_.push_back(MakeBox({1.0, 0.0, 0.6}, {0.1, 8.0, 1.2}));  // splits the room at x = 1
     StartPlanner();
   }
-  // Starts the planner with dir_/planner.yaml and sends it the room's map.
-  void StartPlanner() {
+  // Starts the planner with dir_/planner.yaml and (with_map) sends it the room's map.
+  void StartPlanner(bool with_map = true) {
     planner_ = Spawn({BinDir() + "/topay-planner", "--config", dir_ + "/planner.yaml", "--name", "planner",
                       "--lcm-url", kLcmUrl},
                      dir_ + "/planner.txt");
     ASSERT_TRUE(watcher_->SpinUntil([&] { return watcher_->last.contains("planner") &&
                                                   watcher_->last["planner"].pid == planner_; }, 10.0))
         << ReadText(dir_ + "/planner.txt");
+    if (with_map) SendMap();
+  }
+  void SendMap() {
     const GridGeometry3 g = planner::testing::RoomGeometry();
     const map_update_t map = msgs::EncodeFullMap(g, planner::testing::StatesOf(g, boxes_), 1, 1);
     watcher_->lcm().publish(std::string(channels::MAP_UPDATE), &map);
@@ -181,6 +184,26 @@ TEST_F(PlannerProcess, AGoalGetsATrajectoryWithItsIdStartingAtTheRobot) {
   EXPECT_NEAR(poly->yaw0_rad, start_.yaw_rad, 1e-3);
   EXPECT_NEAR((poly->Evaluate(0.0).tail(7) - start_.q_rad).cwiseAbs().maxCoeff(), 0.0, 1e-3);
   EXPECT_GT(out_.Last(11, planner_status_t::SUCCEEDED)->total_ms, 0.0);
+}
+
+// At start-up a goal can come before the mapper's first snapshot (the mission starts as soon as
+// the planner heartbeats): it waits for the map, saying so, and is planned once the map is there.
+TEST_F(PlannerProcess, AGoalBeforeTheFirstMapWaitsForItAndIsPlanned) {
+  kill(planner_, SIGKILL);
+  WaitFor(planner_, 3.0);
+  StartPlanner(/*with_map=*/false);
+  Send(ReachableGoal(12));
+  const auto waiting = [&] {
+    const planner_status_t* s = out_.Last(12, planner_status_t::PLANNING);
+    return s != nullptr && s->detail.find("waiting: no map yet") != std::string::npos;
+  };
+  ASSERT_TRUE(SpinWithRobot(waiting, 10.0)) << ReadText(dir_ + "/planner.txt");
+  SpinWithRobot([] { return false; }, 1.0);  // retries meanwhile: still waiting, never failed
+  EXPECT_EQ(out_.Last(12, planner_status_t::FAILED), nullptr) << ReadText(dir_ + "/planner.txt");
+  SendMap();
+  ASSERT_TRUE(SpinWithRobot([&] { return out_.Last(12, planner_status_t::SUCCEEDED) != nullptr; }, 60.0))
+      << ReadText(dir_ + "/planner.txt");
+  EXPECT_EQ(out_.trajectories.back().goal_id, 12);
 }
 
 TEST_F(PlannerProcess, EveryBadGoalFailsAtOnceWithItsReason) {
