@@ -100,7 +100,10 @@ void MissionNode::OnPlannerStatus(const planner_status_t& msg, std::int64_t now)
                  msg.failure_reason.empty() ? "" : ": " + msg.failure_reason);
   }
   attempt_replans_ = std::max(attempt_replans_, static_cast<int>(msg.replans));
-  if (msg.state == planner_status_t::SUCCEEDED && msg.detail.find("ended") != std::string::npos) {
+  // Its last trajectory ran to its end ("trajectory N ended"), or the robot stood at the
+  // target when a plan from rest was due ("goal reached at rest ...").
+  if (msg.state == planner_status_t::SUCCEEDED &&
+      (msg.detail.find("ended") != std::string::npos || msg.detail.find("goal reached") != std::string::npos)) {
     planner_ended_ = true;
     ended_trajectory_id_ = msg.trajectory_id;
   } else if ((msg.state == planner_status_t::FAILED || msg.state == planner_status_t::CANCELLED) &&

@@ -285,6 +285,7 @@ void PlannerNode::RequestPlan(PlanTrigger trigger, const std::string& reason, bo
     PublishStatus(planner_status_t::PLANNING, "", "waiting: " + error);
     return;
   }
+  if (job.from_rest && ReachedAtRest(job.start.state)) return;
   job.job_id = latest_job_ = ++job_seq_;
   job.goal_id = goal_->goal.goal_id;
   job.trigger = fmt::format("{}: {}", ToString(trigger), reason);
@@ -450,6 +451,14 @@ void PlannerNode::HandleFailure(const PlanJobOutcome& outcome) {
     PublishStatus(planner_status_t::FAILED, r.failure_reason, outcome.job.trigger, &r);
     return;
   }
+  if (outcome.job.from_rest && ++goal_->failed_from_rest >= options_.timing.max_failed_plans_from_rest) {
+    goal_->done = true;  // stopped with no way on: the mission decides (resend, give up)
+    PublishStatus(planner_status_t::FAILED,
+                  fmt::format("stuck: {} plans from rest failed in a row; the last: {}", goal_->failed_from_rest,
+                              r.failure_reason),
+                  outcome.job.trigger, &r);
+    return;
+  }
   // A replan while moving: keep trying; the safe stop guards the trajectory under way.
   ScheduleRetry(clock_.Now(), "replan failed, retrying: " + r.failure_reason, &r);
 }
@@ -467,6 +476,7 @@ void PlannerNode::PublishTrajectory(const PlanJobOutcome& outcome, std::int64_t 
   active.trajectory = std::make_shared<const ArcYawTrajectory>(*outcome.result.trajectory);
   MakeActive(std::move(active));
   goal_->planned_once = true;
+  goal_->failed_from_rest = 0;
   ++counts_.trajectories;
   PublishActive("plan");
   PublishStatus(planner_status_t::SUCCEEDED, "", outcome.job.trigger, &outcome.result);
@@ -565,6 +575,20 @@ void PlannerNode::MaybeSafeStop(std::int64_t now) {
                 fmt::format("collision {:.2f} s ahead, no new trajectory yet: stopping", until_collision_s));
   // A plan in progress started on the trajectory the stop replaces: it would not join.
   RequestPlan(PlanTrigger::kRetry, "replanning from the safe stop", /*preempt=*/true);
+}
+
+bool PlannerNode::ReachedAtRest(const WholeBodyState& state) {
+  const GoalCheckOptions& o = options_.goals;
+  const Eigen::Isometry3d X_WE = kinematics_.EndEffectorPose(state);
+  const Eigen::Isometry3d& X_WT = goal_->goal.X_WE;
+  const double position_m = (X_WE.translation() - X_WT.translation()).norm();
+  const double angle_rad = Eigen::AngleAxisd(X_WT.linear().transpose() * X_WE.linear()).angle();
+  if (position_m > o.reached_position_m || angle_rad > o.reached_orientation_rad) return false;
+  goal_->done = true;
+  PublishStatus(planner_status_t::SUCCEEDED, "",
+                fmt::format("goal reached at rest: end effector {:.3f} m / {:.3f} rad from the target", position_m,
+                            angle_rad));
+  return true;
 }
 
 void PlannerNode::MaybeFinishGoal(std::int64_t now) {

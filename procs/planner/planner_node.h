@@ -97,6 +97,7 @@ class PlannerNode {
     bool done = false;          // failed, or its trajectory ended
     int replans = 0;
     int failed_attempts = 0;    // plans that failed before its first trajectory went out
+    int failed_from_rest = 0;   // plans from rest that failed in a row after it
   };
 
   void Dispatch(const PlannerInput& msg);
@@ -130,6 +131,9 @@ class PlannerNode {
   /// Straight-line distance (m) from the robot's place on active_ now to the predicted collision.
   double CollisionDistance(std::int64_t now) const;
   void MaybeFinishGoal(std::int64_t now);
+  // At rest with the end effector within goals.reached_* of the target: the goal is reached
+  // (SUCCEEDED "goal reached at rest ..."), no plan. True if so.
+  bool ReachedAtRest(const WholeBodyState& state);
   void PublishStatus(std::int8_t state, const std::string& reason, const std::string& detail,
                      const WholeBodyPlanResult* result = nullptr);
   void UpdateHealth();

@@ -36,6 +36,7 @@ void ReadTiming(YamlSection s, PlanTimingOptions* o) {
   s.Read("rest_speed", &o->rest_speed);
   s.Read("retry_period_s", &o->retry_period_s);
   s.Read("first_plan_attempts", &o->first_plan_attempts);
+  s.Read("max_failed_plans_from_rest", &o->max_failed_plans_from_rest);
   s.Finish();
 }
 
@@ -60,6 +61,8 @@ void ReadStop(YamlSection s, SafeStopOptions* o) {
 void ReadGoals(YamlSection s, GoalCheckOptions* o) {
   s.Read("target_clearance_m", &o->target_clearance_m);
   s.Read("certify_reachability", &o->certify_reachability);
+  s.Read("reached_position_m", &o->reached_position_m);
+  s.Read("reached_orientation_rad", &o->reached_orientation_rad);
   s.Finish();
 }
 
@@ -119,6 +122,9 @@ void CheckPlannerProcessOptions(const PlannerProcessOptions& o, const std::strin
   if (o.timing.first_plan_attempts < 1) {
     throw ConfigError(source, "timing.first_plan_attempts", "must be >= 1");
   }
+  if (o.timing.max_failed_plans_from_rest < 1) {
+    throw ConfigError(source, "timing.max_failed_plans_from_rest", "must be >= 1");
+  }
   RequirePositive(o.triggers.check.sample_period_s, source, "triggers.check_sample_period_s");
   RequireNonNegative(o.triggers.check.obstacle_margin_m, source, "triggers.check_obstacle_margin_m");
   RequirePositive(o.triggers.drift_position_m, source, "triggers.drift_position_m");
@@ -130,6 +136,8 @@ void CheckPlannerProcessOptions(const PlannerProcessOptions& o, const std::strin
   RequirePositive(o.stop.replan_grace_s, source, "stop.replan_grace_s");
   RequireNonNegative(o.stop.grace_reach_m, source, "stop.grace_reach_m");
   RequireNonNegative(o.goals.target_clearance_m, source, "goals.target_clearance_m");
+  RequireNonNegative(o.goals.reached_position_m, source, "goals.reached_position_m");
+  RequireNonNegative(o.goals.reached_orientation_rad, source, "goals.reached_orientation_rad");
   RequirePositive(o.status_period_s, source, "status_period_s");
   if (o.deterministic.prm_samples < 1) throw ConfigError(source, "deterministic.prm_samples", "must be >= 1");
   if (o.deterministic.rrt_iterations < 1) {

@@ -66,6 +66,10 @@ struct PlanTimingOptions {
   /// certificate proves unreachable, or bad input, at once): in a room seen for the first
   /// time a first plan is often overtaken by the next scan. >= 1.
   int first_plan_attempts = 3;
+  /// A goal that had its trajectory fails (FAILED, "stuck: ...") after this many plans in a
+  /// row from rest fail (e.g. stopped beside a new obstacle with no way on): the mission may
+  /// resend it or give up, rather than the planner retrying for ever. >= 1.
+  int max_failed_plans_from_rest = 10;
 };
 
 /// What makes the planner replan (each counted and logged with its reason).
@@ -112,6 +116,12 @@ struct GoalCheckOptions {
   /// Run the base reachability certificate (core/planning/base_reachability.h) on the map's
   /// voxels: a target no base pose the robot can reach lets the arm touch fails at once.
   bool certify_reachability = true;
+  /// A plan from rest is not made when the robot's end effector already is within these of the
+  /// target (a safe stop that ended at the goal; a goal where the robot stands): the goal
+  /// counts as reached (SUCCEEDED, "goal reached at rest ..."). Position (m) and the angle of
+  /// R_WE,target^T R_WE (rad); >= 0 (0, 0: never).
+  double reached_position_m = 0.02;
+  double reached_orientation_rad = 0.05;
 };
 
 /// Deterministic mode (docs/planner.md#replay): the same message sequence gives the same

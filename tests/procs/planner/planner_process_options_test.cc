@@ -25,19 +25,26 @@ TEST(PlannerProcessOptionsTest, ShippedFileLoadsWithTheDefaults) {
   EXPECT_EQ(o.stop.margin_s, d.stop.margin_s);
   EXPECT_EQ(o.stop.replan_grace_s, d.stop.replan_grace_s);
   EXPECT_EQ(o.map.flush_all_from_rest, d.map.flush_all_from_rest);
+  EXPECT_EQ(o.timing.max_failed_plans_from_rest, d.timing.max_failed_plans_from_rest);
+  EXPECT_EQ(o.goals.reached_position_m, d.goals.reached_position_m);
+  EXPECT_EQ(o.goals.reached_orientation_rad, d.goals.reached_orientation_rad);
   EXPECT_TRUE(std::filesystem::exists(o.planner_config)) << o.planner_config;
 }
 
 TEST(PlannerProcessOptionsTest, ValuesAreReadAndBadOnesNamed) {
   const PlannerProcessOptions o = LoadPlannerProcessOptions(
       WriteYaml("good", "map: {unknown: occupied, field_update_period_s: 0.5, flush_all_from_rest: false}\n"
-                        "timing: {replan_budget_s: 0.4}\nstop: {replan_grace_s: 0.6, grace_reach_m: 3.0}\n"));
+                        "timing: {replan_budget_s: 0.4, max_failed_plans_from_rest: 4}\n"
+                        "goals: {reached_position_m: 0.01, reached_orientation_rad: 0.02}\nstop: {replan_grace_s: 0.6, grace_reach_m: 3.0}\n"));
   EXPECT_EQ(o.map.unknown, UnknownVoxelPolicy::kOccupied);
   EXPECT_FALSE(o.map.flush_all_from_rest);
   EXPECT_EQ(o.stop.replan_grace_s, 0.6);
   EXPECT_EQ(o.stop.grace_reach_m, 3.0);
   EXPECT_EQ(o.map.field_update_period_s, 0.5);
   EXPECT_EQ(o.timing.replan_budget_s, 0.4);
+  EXPECT_EQ(o.timing.max_failed_plans_from_rest, 4);
+  EXPECT_EQ(o.goals.reached_position_m, 0.01);
+  EXPECT_EQ(o.goals.reached_orientation_rad, 0.02);
   const auto expect_error = [](const std::string& text, const std::string& field) {
     try {
       LoadPlannerProcessOptions(WriteYaml("bad", text));
@@ -49,6 +56,9 @@ TEST(PlannerProcessOptionsTest, ValuesAreReadAndBadOnesNamed) {
   expect_error("map: {unknown: maybe}\n", "map.unknown");
   expect_error("timing: {replan_budget_s: 0.01}\n", "replan_budget_s");
   expect_error("triggers: {drift_position_m: -1}\n", "drift_position_m");
+  expect_error("timing: {max_failed_plans_from_rest: 0}\n", "timing.max_failed_plans_from_rest");
+  expect_error("goals: {reached_position_m: -0.1}\n", "goals.reached_position_m");
+  expect_error("goals: {reached_orientation_rad: .nan}\n", "goals.reached_orientation_rad");
   expect_error("stop: {latency: 1}\n", "stop.latency");
   expect_error("stop: {replan_grace_s: 0}\n", "stop.replan_grace_s");
   expect_error("stop: {grace_reach_m: -1}\n", "stop.grace_reach_m");

@@ -136,14 +136,18 @@ class PlannerProcess : public testing::Test {
   }
   static Eigen::Vector2d BaseAt(const msgs::PolyTrajectory& t, double t_s) { return BasePath(t, t_s, 2000).back(); }
   // A 0.3 x 0.3 x 1.0 m pillar at p, as a map delta with sequence number `seq`.
-  void SendPillar(const Eigen::Vector2d& p, std::int64_t seq) {
+  void SendPillar(const Eigen::Vector2d& p, std::int64_t seq) { SendPillars({p}, seq); }
+  // Such pillars at every point, as one map delta.
+  void SendPillars(const std::vector<Eigen::Vector2d>& points, std::int64_t seq) {
     const GridGeometry3 g = planner::testing::RoomGeometry();
     std::vector<VoxelChange> pillar;
-    const CellBox cells = VoxelsOverlapping(g, {Eigen::Vector3d(p.x() - kPillarHalf_m, p.y() - kPillarHalf_m, 0.0),
-                                                Eigen::Vector3d(p.x() + kPillarHalf_m, p.y() + kPillarHalf_m, 1.0)});
-    for (int iz = cells.begin.z(); iz < cells.end.z(); ++iz)
-      for (int iy = cells.begin.y(); iy < cells.end.y(); ++iy)
-        for (int ix = cells.begin.x(); ix < cells.end.x(); ++ix) pillar.push_back({{ix, iy, iz}, VoxelState::kOccupied});
+    for (const Eigen::Vector2d& p : points) {
+      const CellBox cells = VoxelsOverlapping(g, {Eigen::Vector3d(p.x() - kPillarHalf_m, p.y() - kPillarHalf_m, 0.0),
+                                                  Eigen::Vector3d(p.x() + kPillarHalf_m, p.y() + kPillarHalf_m, 1.0)});
+      for (int iz = cells.begin.z(); iz < cells.end.z(); ++iz)
+        for (int iy = cells.begin.y(); iy < cells.end.y(); ++iy)
+          for (int ix = cells.begin.x(); ix < cells.end.x(); ++ix) pillar.push_back({{ix, iy, iz}, VoxelState::kOccupied});
+    }
     const map_update_t delta = msgs::EncodeMapDelta(g, pillar, procs::NowUtime(), seq);
     watcher_->lcm().publish(std::string(channels::MAP_UPDATE), &delta);
   }
@@ -204,6 +208,52 @@ TEST_F(PlannerProcess, AGoalBeforeTheFirstMapWaitsForItAndIsPlanned) {
   ASSERT_TRUE(SpinWithRobot([&] { return out_.Last(12, planner_status_t::SUCCEEDED) != nullptr; }, 60.0))
       << ReadText(dir_ + "/planner.txt");
   EXPECT_EQ(out_.trajectories.back().goal_id, 12);
+}
+
+// A goal whose target the robot's end effector already holds, at rest (e.g. a safe stop that
+// ended at the goal, whose surroundings the map now shows too close for a plan to it): reached,
+// no plan, no trajectory.
+TEST_F(PlannerProcess, AGoalTheRobotAlreadyHoldsAtRestIsReachedWithoutAPlan) {
+  msgs::PlanGoal goal;
+  goal.utime = procs::NowUtime();
+  goal.goal_id = 13;
+  goal.X_WE = kinematics_.EndEffectorPose(start_);
+  goal.X_WE.translation().x() += 0.01;  // within goals.reached_position_m (0.02 m)
+  Send(msgs::ToMessage(goal));
+  ASSERT_TRUE(SpinWithRobot([&] { return out_.Last(13, planner_status_t::SUCCEEDED) != nullptr; }, 10.0))
+      << ReadText(dir_ + "/planner.txt");
+  EXPECT_NE(out_.Last(13, planner_status_t::SUCCEEDED)->detail.find("goal reached at rest: end effector 0.010 m"),
+            std::string::npos)
+      << out_.Last(13, planner_status_t::SUCCEEDED)->detail;
+  EXPECT_TRUE(out_.trajectories.empty());
+}
+
+// A goal that had its trajectory, whose robot is then walled in (pillars all round it, closer
+// than the route's first metre): the trajectory is stopped, and after
+// timing.max_failed_plans_from_rest plans from rest in a row fail, the goal FAILS ("stuck")
+// instead of being retried for ever.
+TEST_F(PlannerProcess, AGoalWhoseRobotIsWalledInFailsAsStuckAfterItsPlansFromRest) {
+  std::string yaml = ReadText(dir_ + "/planner.yaml");  // its timing map gets the limit
+  const std::size_t at = yaml.find("from_rest_time_limit_s: 20.0");
+  ASSERT_NE(at, std::string::npos) << yaml;
+  yaml.replace(at, std::string("from_rest_time_limit_s: 20.0").size(),
+               "from_rest_time_limit_s: 5.0, max_failed_plans_from_rest: 3");
+  WriteText(dir_ + "/planner.yaml", yaml);
+  RestartPlanner();
+  Send(ReachableGoal(51));
+  ASSERT_TRUE(SpinWithRobot([&] { return !out_.trajectories.empty(); }, 60.0)) << ReadText(dir_ + "/planner.txt");
+  std::vector<Eigen::Vector2d> ring;
+  for (int k = 0; k < 16; ++k) {
+    const double a = 2.0 * M_PI * k / 16.0;
+    ring.emplace_back(start_.x_m + 0.9 * std::cos(a), start_.y_m + 0.9 * std::sin(a));
+  }
+  SendPillars(ring, 2);
+  const auto stuck = [&] {
+    const planner_status_t* s = out_.Last(51, planner_status_t::FAILED);
+    return s != nullptr && s->failure_reason.find("stuck: 3 plans from rest failed in a row") != std::string::npos;
+  };
+  ASSERT_TRUE(SpinWithRobot(stuck, 90.0)) << ReadText(dir_ + "/planner.txt");
+  EXPECT_TRUE(launch::ProcessAlive(planner_));
 }
 
 TEST_F(PlannerProcess, EveryBadGoalFailsAtOnceWithItsReason) {
