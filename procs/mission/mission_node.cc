@@ -108,18 +108,10 @@ void MissionNode::OnPlannerStatus(const planner_status_t& msg, std::int64_t now)
     ended_trajectory_id_ = msg.trajectory_id;
   } else if ((msg.state == planner_status_t::FAILED || msg.state == planner_status_t::CANCELLED) &&
              retry_utime_ == 0) {
-    last_failure_ = msg.state == planner_status_t::FAILED
-                        ? (msg.failure_reason.empty() ? std::string("plan failed") : msg.failure_reason)
-                        : std::string("goal cancelled");
-    if (attempts_ >= options_.max_attempts) {
-      Finish(mission_status_t::FAILED,
-             fmt::format("step {} ({}): no plan after {} attempt{}: {}", step_index_ + 1, step().Describe(),
-                         attempts_, attempts_ == 1 ? "" : "s", last_failure_),
-             now);
-      return;
-    }
-    retry_utime_ = now + Micros(options_.retry_delay_s);
-    Publish(now, fmt::format("attempt {} failed ({}), retrying", attempts_, last_failure_));
+    AttemptFailed(msg.state == planner_status_t::FAILED
+                      ? (msg.failure_reason.empty() ? std::string("plan failed") : msg.failure_reason)
+                      : std::string("goal cancelled"),
+                  "no plan", now);
     return;
   }
   CheckArrival(now);
@@ -236,6 +228,7 @@ void MissionNode::SendGoal(std::int64_t now) {
   attempt_replans_ = 0;
   planner_ended_ = false;
   ended_trajectory_id_ = 0;
+  outside_since_utime_ = 0;
   tracker_finished_id_ = 0;
   last_planner_state_ = -1;
   last_planner_detail_.clear();
@@ -262,13 +255,34 @@ std::optional<std::pair<double, double>> MissionNode::EndEffectorError() const {
   return std::make_pair(position_m, std::abs(angle_rad));
 }
 
+void MissionNode::AttemptFailed(const std::string& reason, const char* outcome, std::int64_t now) {
+  last_failure_ = reason;
+  if (attempts_ >= options_.max_attempts) {
+    Finish(mission_status_t::FAILED,
+           fmt::format("step {} ({}): {} after {} attempt{}: {}", step_index_ + 1, step().Describe(), outcome,
+                       attempts_, attempts_ == 1 ? "" : "s", last_failure_),
+           now);
+    return;
+  }
+  retry_utime_ = now + Micros(options_.retry_delay_s);
+  Publish(now, fmt::format("attempt {} failed ({}), retrying", attempts_, last_failure_));
+}
+
 void MissionNode::CheckArrival(std::int64_t now) {
   if (!MovingStep() || !planner_ended_ || retry_utime_ != 0) return;
   if (tracker_seen_ && !TrackerFinished()) return;
   const std::optional<std::pair<double, double>> error = EndEffectorError();
   if (!error) return;
   const ArrivalTolerance tolerance = Tolerance();
-  if (error->first > tolerance.position_m || error->second > tolerance.orientation_rad) return;
+  if (error->first > tolerance.position_m || error->second > tolerance.orientation_rad) {
+    if (outside_since_utime_ == 0) outside_since_utime_ = now;
+    if (now - outside_since_utime_ >= Micros(options_.arrival_settle_s)) {
+      AttemptFailed(fmt::format("ended with the end effector {:.3f} m / {:.3f} rad from the target", error->first,
+                                error->second),
+                    "not arrived", now);
+    }
+    return;
+  }
   status_.detail = fmt::format("arrived: end effector {:.3f} m / {:.3f} rad from the target", error->first, error->second);
   CompleteStep(now);
 }

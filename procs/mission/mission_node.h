@@ -81,6 +81,9 @@ class MissionNode {
   void BeginStep(std::size_t index, std::int64_t now);
   void SendGoal(std::int64_t now);
   void CheckArrival(std::int64_t now);
+  // An attempt of a goto / home step failed (`reason`): the goal is sent again after
+  // retry_delay_s, or after max_attempts the mission FAILS ("<outcome> after N attempts: ...").
+  void AttemptFailed(const std::string& reason, const char* outcome, std::int64_t now);
   void CompleteStep(std::int64_t now);
   void Finish(std::int8_t state, const std::string& detail, std::int64_t now);
   // Publishes MISSION_STATUS with `detail` (logged as a progress line if it changed).
@@ -124,6 +127,7 @@ class MissionNode {
   std::int64_t retry_utime_ = 0;       // 0: none scheduled
   bool planner_ended_ = false;         // SUCCEEDED "ended" for goal_id_
   std::int64_t ended_trajectory_id_ = 0;     // the trajectory the planner reported ended
+  std::int64_t outside_since_utime_ = 0;     // ended, but the end effector outside the tolerance since
   std::int64_t tracker_finished_id_ = 0;     // the trajectory of goal_id_ the tracker FINISHED (0: none)
   std::int8_t last_planner_state_ = -1;  // for goal_id_, to log its changes
   std::string last_planner_detail_;

@@ -25,6 +25,7 @@ void CheckMissionOptions(const MissionOptions& o, const std::string& source) {
   Require(o.tolerance.position_m >= 0.0, o.tolerance.position_m, source, "tolerance.position_m", ">= 0");
   Require(o.tolerance.orientation_rad >= 0.0, o.tolerance.orientation_rad, source, "tolerance.orientation_rad", ">= 0");
   Require(o.gripper_settle_s >= 0.0, o.gripper_settle_s, source, "gripper_settle_s", ">= 0");
+  Require(o.arrival_settle_s > 0.0, o.arrival_settle_s, source, "arrival_settle_s", "> 0");
   Require(o.status_period_s > 0.0, o.status_period_s, source, "status_period_s", "> 0");
   Require(o.start_timeout_s > 0.0, o.start_timeout_s, source, "start_timeout_s", "> 0");
 }
@@ -43,6 +44,7 @@ MissionOptions LoadMissionOptions(const std::string& path) {
   tolerance.Read("orientation_rad", &o.tolerance.orientation_rad);
   tolerance.Finish();
   top.Read("gripper_settle_s", &o.gripper_settle_s);
+  top.Read("arrival_settle_s", &o.arrival_settle_s);
   top.Read("status_period_s", &o.status_period_s);
   top.Read("wait_for_planner", &o.wait_for_planner);
   top.Read("start_timeout_s", &o.start_timeout_s);

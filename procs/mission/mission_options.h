@@ -23,6 +23,11 @@ struct MissionOptions {
   double step_timeout_s = 120.0;
   /// Arrival tolerance of goto / home steps without their own (default 3 cm, 0.1 rad).
   ArrivalTolerance tolerance;
+  /// The planner reported the goal reached (and the tracker FINISHED) but the end effector is
+  /// outside the tolerance for this long (s): the attempt failed ("ended ... from the target")
+  /// and the goal is sent again (a plan from where the robot stands corrects what the tracker
+  /// left, e.g. a lateral offset after a corner), up to max_attempts. > 0.
+  double arrival_settle_s = 1.0;
   /// A gripper step waits this long (s) after its command unless it sets settle_s. >= 0.
   double gripper_settle_s = 1.0;
   /// MISSION_STATUS goes out on every change and at least this often (s): 2 Hz. > 0.

@@ -278,6 +278,54 @@ TEST_F(MissionNodeTest, ArrivalNeedsTheEndEffectorWithinTheTolerance) {
   EXPECT_EQ(node_->state(), mission_status_t::SUCCEEDED);
 }
 
+// The planner says the goal is reached but the robot stands 5 cm off (e.g. the tracker's
+// lateral offset after a corner): after arrival_settle_s the goal is sent again, and the new
+// attempt arrives.
+TEST_F(MissionNodeTest, AnArrivalOutsideTheToleranceIsRetriedAfterTheSettleTime) {
+  options_.arrival_settle_s = 1.0;
+  options_.retry_delay_s = 0.5;
+  Make({Goto(a_, "pickup")});
+  Start();
+  WholeBodyState off = a_;
+  off.x_m += 0.05;
+  Arrive(kFirstGoalId, off, 5.0);
+  node_->Tick(At(5.9));
+  EXPECT_EQ(goals_.size(), 1u) << "within the settle time";
+  node_->Tick(At(6.1));
+  EXPECT_NE(statuses_.back().detail.find("ended with the end effector 0.050 m"), std::string::npos)
+      << statuses_.back().detail;
+  node_->Tick(At(6.7));
+  ASSERT_EQ(goals_.size(), 2u);
+  EXPECT_EQ(goals_[1].goal_id, kFirstGoalId + 1);
+  Arrive(kFirstGoalId + 1, a_, 10.0);
+  EXPECT_EQ(node_->state(), mission_status_t::SUCCEEDED);
+  EXPECT_EQ(node_->steps()[0].attempts, 2);
+}
+
+TEST_F(MissionNodeTest, AnArrivalOutsideTheToleranceOnTheLastAttemptFailsTheMission) {
+  options_.max_attempts = 1;
+  Make({Goto(a_, "pickup")});
+  Start();
+  WholeBodyState off = a_;
+  off.y_m -= 0.04;
+  Arrive(kFirstGoalId, off, 5.0);
+  node_->Tick(At(6.5));
+  EXPECT_EQ(node_->state(), mission_status_t::FAILED);
+  EXPECT_NE(statuses_.back().detail.find("not arrived after 1 attempt: ended with the end effector 0.040 m"),
+            std::string::npos)
+      << statuses_.back().detail;
+}
+
+// A goal the robot already held at rest (the planner's "goal reached at rest ...", no
+// trajectory) counts as the planner's arrival too.
+TEST_F(MissionNodeTest, APlannerGoalReachedAtRestCountsAsArrival) {
+  Make({Goto(a_, "pickup")});
+  Start();
+  Robot(a_, 1.0);
+  Planner(kFirstGoalId, planner_status_t::SUCCEEDED, 1.1, "goal reached at rest: end effector 0.004 m / 0.001 rad");
+  EXPECT_EQ(node_->state(), mission_status_t::SUCCEEDED);
+}
+
 TEST_F(MissionNodeTest, AbortEndsTheMissionAsAborted) {
   Make({Goto(a_, "pickup")});
   Start();

@@ -171,6 +171,7 @@ TEST(MissionOptionsTest, DefaultsAndAFileWithEveryKey) {
   const MissionOptions shipped = LoadMissionOptions(std::string(TOPAY_SOURCE_DIR) + "/config/mission/mission.yaml");
   EXPECT_EQ(shipped.max_attempts, defaults.max_attempts);
   EXPECT_DOUBLE_EQ(shipped.step_timeout_s, defaults.step_timeout_s);
+  EXPECT_DOUBLE_EQ(shipped.arrival_settle_s, defaults.arrival_settle_s);
 
   const std::string dir = std::string(TOPAY_BINARY_DIR) + "/test_out/mission_options";
   std::filesystem::create_directories(dir);
@@ -178,6 +179,10 @@ TEST(MissionOptionsTest, DefaultsAndAFileWithEveryKey) {
   EXPECT_THROW(LoadMissionOptions(dir + "/bad.yaml"), ConfigError);
   std::ofstream(dir + "/typo.yaml") << "tolerance: {position: 0.1}\n";
   EXPECT_THROW(LoadMissionOptions(dir + "/typo.yaml"), ConfigError);
+  std::ofstream(dir + "/settle.yaml") << "arrival_settle_s: 0\n";
+  EXPECT_THROW(LoadMissionOptions(dir + "/settle.yaml"), ConfigError);
+  std::ofstream(dir + "/settle_ok.yaml") << "arrival_settle_s: 2.5\n";
+  EXPECT_DOUBLE_EQ(LoadMissionOptions(dir + "/settle_ok.yaml").arrival_settle_s, 2.5);
 }
 
 }  // namespace
