@@ -45,7 +45,8 @@ class TableTopGoalSampler {
   /// Throws std::invalid_argument if the roles do not match the boxes.
   TableTopGoalSampler(const GeneratedScene& room, const Kinematics& kinematics, const PickPlaceScenarioOptions& options);
 
-  /// Up to options.max_targets draws, each: a table top (uniform among the allowed), p_WE
+  /// Up to options.max_targets draws, each: a table top (uniform among the allowed: upper face
+  /// at most top_height_max_m high, not excluded, NextToReachedBase), p_WE
   /// uniform over its footprint inset by edge_inset_m at a uniform height in range, the tool's
   /// yaw uniform; a whole-body IK (seeded from `rng`, deterministic) with obstacle clearance
   /// > obstacle_clearance_m; its solutions, cheapest first, until one meets the query and
@@ -61,6 +62,9 @@ class TableTopGoalSampler {
   std::optional<TableTopGoal> Solve(int top, const Eigen::Isometry3d& X_WE, const TableTopGoalQuery& query,
                                     Rng* rng) const;
   bool ArmAboveFloor(const WholeBodyState& state) const;
+  /// Some base position next to `top` (on its footprint grown by the base radius + 0.1 m) is
+  /// reached and far enough from the query's `from`: else no goal there is likely.
+  bool NextToReachedBase(const OrientedBox& top, const TableTopGoalQuery& query) const;
 
   const GeneratedScene& room_;
   const Kinematics& kinematics_;
