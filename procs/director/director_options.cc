@@ -35,7 +35,6 @@ BoxOnRouteEvent ReadEvent(const YAML::Node& node, const std::string& source, int
   event.name = "box on route " + std::to_string(index);
   e.Read("name", &event.name);
   e.Read("during_step", &event.during_step);
-  if (event.during_step.empty()) throw ConfigError(source, e.FieldPath("during_step"), "required (a step's name)");
   e.Read("min_speed_mps", &event.min_speed_mps);
   if (!(event.min_speed_mps >= 0.0)) throw ConfigError(source, e.FieldPath("min_speed_mps"), "must be >= 0");
   ReadRange(&e, "ahead_m", &event.box.ahead_min_m, &event.box.ahead_max_m);
@@ -47,7 +46,8 @@ BoxOnRouteEvent ReadEvent(const YAML::Node& node, const std::string& source, int
   e.Read("tries", &event.box.tries);
   e.Read("box_id", &event.box_id);
   if (event.box_id < -1) throw ConfigError(source, e.FieldPath("box_id"), "must be >= 0 (or -1: automatic)");
-  e.Finish();
+  e.Finish();  // a misspelt key first: it may be the missing one
+  if (event.during_step.empty()) throw ConfigError(source, e.FieldPath("during_step"), "required (a step's name)");
   try {
     CheckRouteBoxOptions(event.box);
   } catch (const std::invalid_argument& error) {
