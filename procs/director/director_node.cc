@@ -1,0 +1,135 @@
+#include "procs/director/director_node.h"
+
+#include <algorithm>
+#include <cmath>
+#include <utility>
+
+#include <fmt/format.h>
+
+namespace topay::director {
+namespace {
+
+constexpr int kFirstAutomaticBoxId = 1000;
+
+}  // namespace
+
+DirectorNode::DirectorNode(DirectorOptions options, Scene scene, const Kinematics& kinematics,
+                           DirectorOutputs outputs)
+    : options_(std::move(options)),
+      scene_(std::move(scene)),
+      kinematics_(kinematics),
+      outputs_(std::move(outputs)),
+      rng_(options_.seed) {
+  const int first_free = std::max(kFirstAutomaticBoxId, static_cast<int>(scene_.boxes.size()));
+  for (std::size_t i = 0; i < options_.events.size(); ++i) {
+    Pending p;
+    p.event = options_.events[i];
+    p.box_id = p.event.box_id >= 0 ? p.event.box_id : first_free + static_cast<int>(i);
+    pending_.push_back(p);
+  }
+  if (!pending_.empty()) status_ = "waiting for step " + pending_.front().event.during_step;
+}
+
+void DirectorNode::OnMissionStatus(const mission_status_t& msg) { mission_ = msg; }
+
+void DirectorNode::OnTrajectory(const poly_trajectory_t& msg) {
+  std::string error;
+  std::optional<BasePath> path = SampleBasePath(msg, options_.path_sample_s, &error);
+  if (!path) {
+    Log(true, "trajectory " + std::to_string(msg.trajectory_id) + " ignored: " + error);
+    return;
+  }
+  path_ = std::move(path);
+}
+
+void DirectorNode::OnRobotState(const robot_state_t& msg) {
+  if (!std::isfinite(msg.pose.x_m) || !std::isfinite(msg.pose.y_m) || !std::isfinite(msg.velocity.v_mps)) return;
+  p_WR_m_ = Eigen::Vector2d(msg.pose.x_m, msg.pose.y_m);
+  speed_mps_ = std::abs(msg.velocity.v_mps);
+}
+
+bool DirectorNode::all_done() const {
+  return std::all_of(pending_.begin(), pending_.end(), [](const Pending& p) { return p.done; });
+}
+
+bool DirectorNode::StepRunning(const Pending& p) const {
+  return mission_ && mission_->state == mission_status_t::RUNNING &&
+         (mission_->step == "goto " + p.event.during_step || mission_->step == p.event.during_step);
+}
+
+bool DirectorNode::RobotDriving(const Pending& p) const { return p_WR_m_ && speed_mps_ >= p.event.min_speed_mps; }
+
+std::optional<RouteQuery> DirectorNode::Route(std::int64_t now_utime) const {
+  if (!path_ || !p_WR_m_) return std::nullopt;
+  const std::optional<std::size_t> index = path_->IndexAt(now_utime);
+  if (!index) return std::nullopt;  // a replan not joined yet
+  RouteQuery route;
+  route.path_W_m = path_->p_W_m;
+  route.robot_index = *index;
+  route.p_WR_m = *p_WR_m_;
+  return route;
+}
+
+void DirectorNode::Tick(std::int64_t now_utime) {
+  for (Pending& p : pending_) {
+    if (p.done) continue;
+    if (StepRunning(p)) {
+      p.step_seen = true;
+      status_ = "step " + p.event.during_step + " runs: waiting for a place for box " + std::to_string(p.box_id);
+      if (RobotDriving(p)) TryPlace(&p, now_utime);
+    } else if (p.step_seen) {
+      p.done = true;
+      ++given_up_;
+      status_ = "no place for box " + std::to_string(p.box_id) + " before step " + p.event.during_step + " ended";
+      Log(true, p.event.name + ": " + status_ + "; nothing published");
+    } else {
+      status_ = "waiting for step " + p.event.during_step;
+    }
+    return;  // one event at a time, in order
+  }
+}
+
+void DirectorNode::TryPlace(Pending* p, std::int64_t now_utime) {
+  const std::optional<RouteQuery> route = Route(now_utime);
+  if (!route) return;
+  const std::int64_t trajectory_id = path_->trajectory_id;
+  const std::optional<RouteBox> placed = PlaceRouteBox(*route, scene_, kinematics_, p->event.box, &rng_);
+  if (!placed) return;
+  // The checks took a while (flood fills over the room): the robot drove on meanwhile.
+  if (outputs_.refresh) outputs_.refresh();
+  if (!path_ || path_->trajectory_id != trajectory_id || !StepRunning(*p)) return;
+  const std::optional<RouteQuery> now = Route(now_utime);
+  if (!now) return;
+  const std::optional<RouteBox> checked = RecheckRouteBox(*placed, *now, p->event.box);
+  if (!checked) return;
+  Publish(*p, *checked, now_utime);
+  p->done = true;
+}
+
+void DirectorNode::Publish(const Pending& p, const RouteBox& placed, std::int64_t now_utime) {
+  sim_event_t m{};
+  m.utime = now_utime;
+  m.name = p.event.name;
+  m.action = sim_event_t::APPEAR;
+  m.box_id = p.box_id;
+  m.has_box = true;
+  for (int a = 0; a < 3; ++a) {
+    m.center_m[a] = placed.box.center_W_m[a];
+    m.size_m[a] = placed.box.size_m[a];
+  }
+  m.yaw_rad = placed.box.yaw_rad;
+  m.trigger = sim_event_t::NOW;
+  if (outputs_.event) outputs_.event(m);
+  scene_.boxes.push_back(placed.box);  // later events keep clear of it
+  ++boxes_placed_;
+  status_ = fmt::format("box {} placed at ({:.2f}, {:.2f}) {:.1f} m ahead", p.box_id, placed.box.center_W_m.x(),
+                        placed.box.center_W_m.y(), placed.ahead_m);
+  Log(false, p.event.name + ": " + status_ + fmt::format(" (side {:.2f} m, robot at {:.1f} m/s)",
+                                                         placed.box.size_m.x(), speed_mps_));
+}
+
+void DirectorNode::Log(bool warning, const std::string& line) {
+  if (outputs_.log) outputs_.log(warning, line);
+}
+
+}  // namespace topay::director

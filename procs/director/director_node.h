@@ -1,0 +1,83 @@
+#pragma once
+// topay-director's logic, free of the bus: the mission's status, the active trajectory and the
+// robot's state in, SIM_EVENTs out through a callback (docs/director.md).
+
+#include <cstdint>
+#include <functional>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "core/common/random.h"
+#include "core/geometry/scene.h"
+#include "core/robot/kinematics.h"
+#include "procs/director/base_path.h"
+#include "procs/director/director_options.h"
+#include "topay/mission_status_t.hpp"
+#include "topay/poly_trajectory_t.hpp"
+#include "topay/robot_state_t.hpp"
+#include "topay/sim_event_t.hpp"
+
+namespace topay::director {
+
+struct DirectorOutputs {
+  std::function<void(const sim_event_t&)> event;  ///< publishes SIM_EVENT
+  /// Delivers the messages that came meanwhile (the On* calls) before a placement's re-check;
+  /// may be empty.
+  std::function<void()> refresh;
+  /// A line for the log (placements, give-ups); may be empty.
+  std::function<void(bool warning, const std::string&)> log;
+};
+
+class DirectorNode {
+ public:
+  /// `scene`: the room the simulator runs (the same scene JSON). The kinematics must outlive
+  /// the node.
+  DirectorNode(DirectorOptions options, Scene scene, const Kinematics& kinematics, DirectorOutputs outputs);
+
+  void OnMissionStatus(const mission_status_t& msg);
+  /// A trajectory that cannot be rebuilt is logged and ignored.
+  void OnTrajectory(const poly_trajectory_t& msg);
+  void OnRobotState(const robot_state_t& msg);
+  /// Each pending event: gives up once its step has run and ended; else, while its step runs
+  /// and the robot drives at min_speed_mps, tries to place its box on the active trajectory
+  /// ahead of the robot (PlaceRouteBox), re-checks it after refresh (RecheckRouteBox) and
+  /// publishes it (APPEAR, NOW).
+  void Tick(std::int64_t now_utime);
+
+  int boxes_placed() const { return boxes_placed_; }
+  int events_given_up() const { return given_up_; }
+  bool all_done() const;
+  /// For the heartbeat: "box 1 placed at (x, y) 3.1 m ahead", "waiting for step dropoff", ...
+  const std::string& StatusLine() const { return status_; }
+
+ private:
+  struct Pending {
+    BoxOnRouteEvent event;
+    int box_id = 0;
+    bool step_seen = false;
+    bool done = false;
+  };
+  bool StepRunning(const Pending& p) const;
+  bool RobotDriving(const Pending& p) const;
+  std::optional<RouteQuery> Route(std::int64_t now_utime) const;
+  void TryPlace(Pending* p, std::int64_t now_utime);
+  void Publish(const Pending& p, const RouteBox& placed, std::int64_t now_utime);
+  void Log(bool warning, const std::string& line);
+
+  DirectorOptions options_;
+  Scene scene_;
+  const Kinematics& kinematics_;
+  DirectorOutputs outputs_;
+  Rng rng_;
+  std::vector<Pending> pending_;
+  std::optional<mission_status_t> mission_;
+  std::optional<BasePath> path_;
+  std::optional<Eigen::Vector2d> p_WR_m_;
+  double speed_mps_ = 0.0;
+  int boxes_placed_ = 0;
+  int given_up_ = 0;
+  std::string status_ = "waiting for the mission";
+};
+
+}  // namespace topay::director

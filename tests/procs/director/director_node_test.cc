@@ -1,0 +1,134 @@
+// topay-director's node with direct calls: no box before its step runs or while the robot
+// stands, one box once the step runs and the robot drives (on the trajectory ahead of it, an
+// id clear of the room's), never a second; a step that ends first gives the event up.
+
+#include "procs/director/director_node.h"
+
+#include <gtest/gtest.h>
+
+#include <vector>
+
+#include "core/io/robot_loader.h"
+#include "tests/procs/tracker/tracker_test_trajectory.h"
+
+namespace topay::director {
+namespace {
+
+constexpr std::int64_t kT0 = 1'700'000'000'000'000;
+
+class DirectorNodeTest : public testing::Test {
+ protected:
+  DirectorNodeTest() {
+    room_.bounds_W_m = Eigen::AlignedBox3d(Eigen::Vector3d(-10, -10, 0), Eigen::Vector3d(10, 10, 1.6));
+    OrientedBox far;  // one box of the room, far from the route
+    far.center_W_m = Eigen::Vector3d(5, 8, 0.5);
+    far.size_m = Eigen::Vector3d(0.5, 0.5, 1);
+    room_.boxes.push_back(far);
+    BoxOnRouteEvent event;
+    event.during_step = "dropoff";
+    options_.events.push_back(event);
+  }
+
+  DirectorNode MakeNode() {
+    DirectorOutputs outputs;
+    outputs.event = [this](const sim_event_t& m) { events_.push_back(m); };
+    outputs.refresh = [this] { ++refreshes_; };
+    outputs.log = [this](bool warning, const std::string&) { warnings_ += warning ? 1 : 0; };
+    return DirectorNode(options_, room_, kinematics_, outputs);
+  }
+  static mission_status_t Status(std::int8_t state, const std::string& step) {
+    mission_status_t m{};
+    m.state = state;
+    m.step = step;
+    return m;
+  }
+  // The robot on a straight 8 m trajectory from (-4, 0) along x (10 s), `t_s` into it.
+  void Drive(DirectorNode* node, double t_s, double speed_mps) {
+    const Eigen::Vector2d p0(-4.0, 0.0);
+    const ArcYawTrajectory trajectory = test::TrackerTestTrajectory(p0, 0.0, Eigen::VectorXd::Zero(7), 8.0, 0.0,
+                                                                    Eigen::VectorXd::Zero(7), 5.0);
+    node->OnTrajectory(test::TrackerTestMessage(trajectory, p0, kT0, 7));
+    TrajectorySample sample = trajectory.MakePoint();
+    trajectory.Evaluate(t_s, &sample);
+    robot_state_t state{};
+    state.pose.x_m = p0.x() + sample.s_m;
+    state.pose.y_m = 0.0;
+    state.velocity.v_mps = speed_mps;
+    node->OnRobotState(state);
+    x_robot_m_ = state.pose.x_m;
+  }
+  static std::int64_t At(double t_s) { return kT0 + static_cast<std::int64_t>(t_s * 1e6); }
+
+  RobotModel model_ = LoadRobotModel(std::string(TOPAY_SOURCE_DIR) + "/config/robot/topay_mm.urdf",
+                                     std::string(TOPAY_SOURCE_DIR) + "/config/robot/topay_mm.yaml");
+  Kinematics kinematics_{model_};
+  Scene room_;
+  DirectorOptions options_;
+  std::vector<sim_event_t> events_;
+  int refreshes_ = 0, warnings_ = 0;
+  double x_robot_m_ = 0.0;
+};
+
+TEST_F(DirectorNodeTest, OneBoxOnceTheStepRunsAndTheRobotDrives) {
+  DirectorNode node = MakeNode();
+  Drive(&node, 2.0, 0.8);
+  node.OnMissionStatus(Status(mission_status_t::RUNNING, "goto pickup"));
+  node.Tick(At(2.0));
+  EXPECT_TRUE(events_.empty()) << "not before its step";
+  EXPECT_EQ(node.StatusLine(), "waiting for step dropoff");
+  node.OnMissionStatus(Status(mission_status_t::RUNNING, "goto dropoff"));
+  Drive(&node, 2.0, 0.1);
+  node.Tick(At(2.0));
+  EXPECT_TRUE(events_.empty()) << "not while the robot is slow";
+  Drive(&node, 2.0, 0.8);
+  node.Tick(At(2.0));
+  ASSERT_EQ(events_.size(), 1u);
+  const sim_event_t& e = events_[0];
+  EXPECT_EQ(e.action, sim_event_t::APPEAR);
+  EXPECT_EQ(e.trigger, sim_event_t::NOW);
+  EXPECT_TRUE(e.has_box);
+  EXPECT_EQ(e.box_id, 1000);  // the room has 1 box: the first automatic id
+  EXPECT_NEAR(e.center_m[1], 0.0, 1e-6);
+  EXPECT_GE(e.center_m[0] - x_robot_m_, 2.0);
+  EXPECT_LE(e.center_m[0] - x_robot_m_, 3.6);
+  EXPECT_EQ(e.size_m[2], 1.0);
+  EXPECT_EQ(refreshes_, 1);
+  EXPECT_EQ(node.boxes_placed(), 1);
+  EXPECT_TRUE(node.all_done());
+  EXPECT_NE(node.StatusLine().find("box 1000 placed at"), std::string::npos) << node.StatusLine();
+  for (double t = 2.2; t < 4.0; t += 0.2) {
+    Drive(&node, t, 0.8);
+    node.Tick(At(t));
+  }
+  EXPECT_EQ(events_.size(), 1u) << "once per event";
+}
+
+TEST_F(DirectorNodeTest, GivesUpWhenTheStepEndsFirst) {
+  DirectorNode node = MakeNode();
+  node.OnMissionStatus(Status(mission_status_t::RUNNING, "goto dropoff"));
+  Drive(&node, 8.5, 0.8);  // 1.5 s from the end: too near it for a box
+  node.Tick(At(8.5));
+  EXPECT_TRUE(events_.empty());
+  node.OnMissionStatus(Status(mission_status_t::RUNNING, "gripper open"));
+  node.Tick(At(9.0));
+  EXPECT_TRUE(events_.empty());
+  EXPECT_EQ(node.events_given_up(), 1);
+  EXPECT_EQ(warnings_, 1);
+  EXPECT_TRUE(node.all_done());
+  EXPECT_NE(node.StatusLine().find("no place for box 1000"), std::string::npos) << node.StatusLine();
+}
+
+TEST_F(DirectorNodeTest, ConfiguredBoxIdAndNoBoxBeforeTheTrajectoryStarts) {
+  options_.events[0].box_id = 42;
+  DirectorNode node = MakeNode();
+  node.OnMissionStatus(Status(mission_status_t::RUNNING, "goto dropoff"));
+  Drive(&node, 0.0, 0.8);
+  node.Tick(kT0 - 100'000);  // a replan not joined yet
+  EXPECT_TRUE(events_.empty());
+  node.Tick(At(1.0));
+  ASSERT_EQ(events_.size(), 1u);
+  EXPECT_EQ(events_[0].box_id, 42);
+}
+
+}  // namespace
+}  // namespace topay::director
