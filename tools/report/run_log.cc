@@ -37,7 +37,8 @@ Decoder AppendTo(std::vector<Msg> RunLog::*member) {
 bool DecodeRobotState(const lcm::LogEvent& event, RunLog* run) {
   const auto msg = CheckedDecode<robot_state_t>(event.data, event.datalen, nullptr);
   if (!msg) return false;
-  std::optional<msgs::RobotStateEstimate> estimate = msgs::FromMessage(*msg, nullptr);
+  std::string error;  // the converters write their reason here (not used: the message is counted)
+  std::optional<msgs::RobotStateEstimate> estimate = msgs::FromMessage(*msg, &error);
   if (!estimate) return false;
   run->robot_states.push_back(std::move(*estimate));
   return true;
@@ -48,10 +49,11 @@ bool DecodeRobotState(const lcm::LogEvent& event, RunLog* run) {
 bool DecodeTrajectory(const lcm::LogEvent& event, RunLog* run) {
   const auto msg = CheckedDecode<poly_trajectory_t>(event.data, event.datalen, nullptr);
   if (!msg) return false;
-  std::optional<msgs::PolyTrajectory> poly = msgs::FromMessage(*msg, nullptr);
+  std::string error;  // the converters write their reason here (not used: the message is counted)
+  std::optional<msgs::PolyTrajectory> poly = msgs::FromMessage(*msg, &error);
   if (!poly) return false;
   ++run->trajectory_messages;
-  std::optional<ArcYawTrajectory> trajectory = msgs::ToArcYaw(*poly, {}, nullptr);
+  std::optional<ArcYawTrajectory> trajectory = msgs::ToArcYaw(*poly, {}, &error);
   if (trajectory) run->trajectories.push_back({std::move(*poly), std::move(*trajectory)});
   return true;
 }
@@ -85,7 +87,8 @@ std::unordered_map<std::string_view, Decoder> Decoders(msgs::MapReceiver* receiv
 bool CheckOtherChannel(const lcm::LogEvent& event) {
   if (event.channel.starts_with("LCM_SELF_TEST")) return true;  // LCM's start-up probe
   const std::optional<msgs::MessageTypeInfo> type = msgs::IdentifyMessage(event.data, event.datalen);
-  return type && type->check(event.data, event.datalen, nullptr);
+  std::string error;
+  return type && type->check(event.data, event.datalen, &error);
 }
 
 void CountEvent(const lcm::LogEvent& event, RunLog* run) {
