@@ -41,9 +41,10 @@ MissionSummary SummarizeMission(const std::vector<mission_status_t>& statuses) {
     std::vector<MissionStepSummary>& steps = summary.steps;
     if (steps.empty() || status.step_index != steps.back().index) {
       EndLastStep(status, &steps);
-      steps.push_back({status.step_index, status.step, status.elapsed_s, 0.0, 0, status.utime});
+      const bool moving = status.step.starts_with("goto") || status.step.starts_with("home");
+      steps.push_back({status.step_index, status.step, status.elapsed_s, 0.0, moving, 0, status.utime});
     }
-    steps.back().attempts = std::max(steps.back().attempts, static_cast<int>(status.attempts));
+    if (steps.back().moving) steps.back().attempts = std::max(steps.back().attempts, static_cast<int>(status.attempts));
     EndLastStep(status, &steps);
   }
   if (statuses.empty()) return summary;

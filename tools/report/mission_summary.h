@@ -23,7 +23,10 @@ struct MissionStepSummary {
   std::string description;    ///< e.g. "goto pickup"
   double start_s = 0.0;       ///< elapsed_s of the first status of this step
   double time_s = 0.0;        ///< until the first status of a later step (or the last status)
-  int attempts = 0;           ///< the largest `attempts` reported for the step
+  bool moving = false;        ///< a goto or home step (its description starts with "goto" or "home")
+  /// Moving steps: the largest `attempts` reported for the step (plans sent). 0 for the
+  /// others (MISSION_STATUS.attempts keeps the last goto's count during them).
+  int attempts = 0;
   std::int64_t end_utime = 0; ///< utime of the status that ended it (the next step's first, or the last)
 };
 

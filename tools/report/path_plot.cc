@@ -36,7 +36,7 @@ void DrawSceneOutlines(viz::WorldCanvas* canvas, const Scene& scene) {
 void DrawPlannedPaths(viz::WorldCanvas* canvas, const RunLog& log, const PathPlotOptions& options) {
   for (const LoggedTrajectory& t : log.trajectories) {
     canvas->DrawPolyline(viz::SampleBasePath(t.trajectory, options.planned_sample_period_s), false, kPlanned, 1.2,
-                         0.45);
+                         0.7);
   }
 }
 
@@ -73,7 +73,7 @@ void DrawCross(viz::WorldCanvas* canvas, const Eigen::Vector2d& p, const viz::Rg
 void DrawMarkers(viz::WorldCanvas* canvas, const RunLog& log) {
   for (const goal_t& goal : log.goals) DrawCross(canvas, {goal.p_WE[0], goal.p_WE[1]}, colors::kGoal);
   for (const MissionStepSummary& step : SummarizeMission(log.mission_statuses).steps) {
-    if (!step.description.starts_with("goto") && !step.description.starts_with("home")) continue;
+    if (!step.moving) continue;
     const auto at = BasePositionAt(log.robot_states, step.end_utime);
     if (at) canvas->StrokeCircle(*at, Metres(*canvas, kMarkerPx + 2.0), kArrival, 2.5);
   }
@@ -89,16 +89,19 @@ void DrawLayers(viz::WorldCanvas* canvas, const RunLog& log, const Scene* scene,
   canvas->painter().FillRect(o.x(), o.y(), o.x() + view.width_px(), o.y() + view.height_px(), colors::kWhite);
   if (log.map) DrawOccupiedColumns(canvas, *log.map);
   if (scene != nullptr) DrawSceneOutlines(canvas, *scene);
-  DrawPlannedPaths(canvas, log, options);
   DrawAppearedBoxes(canvas, log);
   DrawDrivenPath(canvas, log);
+  DrawPlannedPaths(canvas, log, options);  // thin, over the bold driven path: both stay visible
   DrawContacts(canvas, log);
   DrawMarkers(canvas, log);
 }
 
 // The legend's items; with a null painter in `legend` this only measures.
 void LayOutLegend(const RunLog& log, const Scene* scene, const viz::ViewTransform& view, viz::LegendLayout* legend) {
+  const MissionSummary mission = SummarizeMission(log.mission_statuses);
   legend->Text(log.path);
+  legend->Text(fmt::format("mission '{}': {} after {:.1f} s; {} SIM_CONTACT", mission.name, ToString(mission.result),
+                           mission.elapsed_s, log.sim_contacts.size()));
   legend->NewRow();
   legend->LineKey(kDriven, 3.0, "driven base path (ROBOT_STATE)");
   legend->LineKey(kPlanned, 1.5, fmt::format("planned base paths ({} TRAJECTORY)", log.trajectories.size()));

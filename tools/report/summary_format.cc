@@ -5,8 +5,8 @@
 namespace topay::report {
 namespace {
 
-std::string Plural(std::int64_t n, const std::string& word) {
-  return fmt::format("{} {}{}", n, word, n == 1 ? "" : "s");
+std::string Plural(std::int64_t n, const std::string& word, const std::string& words = "") {
+  return fmt::format("{} {}", n, n == 1 ? word : (words.empty() ? word + "s" : words));
 }
 
 std::string MissionLines(const MissionSummary& m) {
@@ -17,7 +17,7 @@ std::string MissionLines(const MissionSummary& m) {
                                 ToString(m.result), m.elapsed_s, m.steps.size(), m.num_steps);
   for (const MissionStepSummary& step : m.steps) {
     out += fmt::format("  {:>2}. {:<28} {:7.1f} s{}\n", step.index + 1, step.description, step.time_s,
-                       step.attempts > 0 ? ", " + Plural(step.attempts, "attempt") : "");
+                       step.moving ? ", " + Plural(step.attempts, "attempt") : "");
   }
   if (!m.detail.empty()) out += fmt::format("  detail: {}\n", m.detail);
   return out;
@@ -27,7 +27,7 @@ std::string PlannerLines(const RunSummary& s) {
   const PlannerSummary& p = s.planner;
   std::string out = fmt::format("replans: {} over {}; {} ({} rebuilt); {}\n", p.replans, Plural(p.goals, "goal"),
                                 Plural(s.trajectory_messages, "TRAJECTORY message"), s.trajectories_rebuilt,
-                                Plural(p.stopping, "stopping trajectory"));
+                                Plural(p.stopping, "stopping trajectory", "stopping trajectories"));
   const TimingStats& t = p.planning_ms;
   out += fmt::format("planning (SUCCEEDED): {}, total median {:.1f} ms, p95 {:.1f} ms, max {:.1f} ms; {}\n",
                      Plural(t.count, "plan"), t.median, t.p95, t.max, Plural(p.failures, "failed goal"));

@@ -18,7 +18,7 @@ json MissionJson(const MissionSummary& m) {
   json steps = json::array();
   for (const MissionStepSummary& s : m.steps) {
     steps.push_back({{"index", s.index}, {"description", s.description}, {"start_s", s.start_s},
-                     {"time_s", s.time_s}, {"attempts", s.attempts}});
+                     {"time_s", s.time_s}, {"moving", s.moving}, {"attempts", s.attempts}});
   }
   return {{"name", m.name},           {"result", ToString(m.result)}, {"detail", m.detail},
           {"elapsed_s", m.elapsed_s}, {"num_steps", m.num_steps},     {"steps", steps}};

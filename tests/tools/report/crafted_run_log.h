@@ -194,7 +194,8 @@ inline void WriteMap(CraftedLogWriter* log) {
 }
 
 // Statuses at log times 0, 0.5, 0.7, 1.0, 1.1 and 2.0 s (utime = log time) with the mission's
-// own elapsed times 0, 0.5, 3.0, 4.5, 5.0 and 9.0 s.
+// own elapsed times 0, 0.5, 3.0, 4.5, 5.0 and 9.0 s. The gripper step carries the goto's
+// attempts, as topay-mission's statuses do.
 inline void WriteMission(CraftedLogWriter* log) {
   auto publish = [log](double log_s, mission_status_t status) {
     status.utime = At(log_s);
@@ -203,7 +204,7 @@ inline void WriteMission(CraftedLogWriter* log) {
   publish(0.0, Mission(0.0, mission_status_t::IDLE, 0, "goto pickup", 0));
   publish(0.5, Mission(0.5, mission_status_t::RUNNING, 0, "goto pickup", 1));
   publish(0.7, Mission(3.0, mission_status_t::RUNNING, 0, "goto pickup", 2, "attempt 1 failed"));
-  publish(1.0, Mission(4.5, mission_status_t::RUNNING, 1, "gripper close", 0));
+  publish(1.0, Mission(4.5, mission_status_t::RUNNING, 1, "gripper close", 2));
   publish(1.1, Mission(5.0, mission_status_t::RUNNING, 2, "home", 1));
   publish(2.0, Mission(9.0, mission_status_t::SUCCEEDED, 2, "home", 1, "every step done"));
 }

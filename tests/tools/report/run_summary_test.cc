@@ -42,7 +42,10 @@ TEST_F(RunSummaryTest, MissionResultTimeAndStepsFromTheStatusTransitions) {
   EXPECT_EQ(m.steps[0].end_utime, test::At(1.0));
   EXPECT_EQ(m.steps[1].description, "gripper close");
   EXPECT_DOUBLE_EQ(m.steps[1].time_s, 0.5);  // 4.5 -> 5.0
-  EXPECT_EQ(m.steps[1].attempts, 0);
+  EXPECT_FALSE(m.steps[1].moving);
+  EXPECT_EQ(m.steps[1].attempts, 0);  // the status's 2 is the goto's, left over
+  EXPECT_TRUE(m.steps[0].moving);
+  EXPECT_TRUE(m.steps[2].moving);
   EXPECT_DOUBLE_EQ(m.steps[2].time_s, 4.0);  // 5.0 -> 9.0 (the final status)
   EXPECT_EQ(m.steps[2].attempts, 1);
   EXPECT_EQ(m.steps[2].end_utime, test::At(2.0));
