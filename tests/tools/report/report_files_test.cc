@@ -128,6 +128,23 @@ TEST_F(ReportFilesTest, TimePlotsHaveTheirSizeAndCurves) {
   EXPECT_GT(measured, 500);
 }
 
+TEST(ReportFiles, AnEmptyLogStillGivesEveryFile) {
+  const std::string dir = std::string(TOPAY_BINARY_DIR) + "/test_out/report/empty";
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir);
+  { test::CraftedLogWriter log(dir + "/graph.lcmlog"); }
+  ReportOptions options;
+  options.log_path = dir + "/graph.lcmlog";
+  const RunSummary summary = WriteReport(options);
+  EXPECT_FALSE(summary.succeeded());
+  const viz::Image time_plots = viz::ReadPng(summary.files.time_plots_png);
+  EXPECT_EQ(time_plots.height(), RunTimePlotPanels(-1, {}).back().y1 + 4);  // one panel: "no motion"
+  const viz::Image path = viz::ReadPng(summary.files.path_png);
+  const viz::ViewTransform view = PathPlotView(ReadRunLog(options.log_path), nullptr, {});
+  EXPECT_DOUBLE_EQ(view.region_W_m().sizes().x(), 3.0);  // 2 x 2 m at the origin, 0.5 m margin
+  EXPECT_EQ(path.width(), PathPlotWidth(view, {}));
+}
+
 TEST(ReportFiles, ASceneAddsItsOutlinesAndABadSceneIsAnErrorNamingIt) {
   const std::string dir = std::string(TOPAY_BINARY_DIR) + "/test_out/report/scene";
   std::filesystem::remove_all(dir);
