@@ -4,6 +4,7 @@
 // how), three malformed payloads, two rebuildable trajectories and one that is not a MINCO
 // solution, and a small map (snapshot + delta). Written with lcm::LogFile; no LCM bus.
 
+#include <gtest/gtest.h>
 #include <lcm/lcm-cpp.hpp>
 
 #include <cstdint>
@@ -29,6 +30,16 @@
 #include "topay/tracker_status_t.hpp"
 
 namespace topay::report::test {
+
+/// A fresh folder for the running test: <build>/test_out/report/<suite>/<test> (ctest runs the
+/// cases of one file in parallel processes, so no two share a folder).
+inline std::string FreshTestDir(const std::string& suite) {
+  const std::string dir = std::string(TOPAY_BINARY_DIR) + "/test_out/report/" + suite + "/" +
+                          ::testing::UnitTest::GetInstance()->current_test_info()->name();
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir);
+  return dir;
+}
 
 /// t = 0 of the crafted run, us since the epoch.
 inline constexpr std::int64_t kT0Utime = 1'700'000'000'000'000;

@@ -23,9 +23,8 @@ namespace {
 
 class ReportFilesTest : public ::testing::Test {
  protected:
-  static void SetUpTestSuite() {
-    dir_ = std::string(TOPAY_BINARY_DIR) + "/test_out/report/files";
-    std::filesystem::remove_all(dir_);
+  void SetUp() override {
+    dir_ = test::FreshTestDir("files");
     test::WriteCraftedRunLog(dir_ + "/run/graph.lcmlog");
     ReportOptions options;
     options.log_path = dir_ + "/run/graph.lcmlog";
@@ -33,13 +32,10 @@ class ReportFilesTest : public ::testing::Test {
     summary_ = WriteReport(options);
     log_ = ReadRunLog(options.log_path);
   }
-  static std::string dir_;
-  static RunSummary summary_;
-  static RunLog log_;
+  std::string dir_;
+  RunSummary summary_;
+  RunLog log_;
 };
-std::string ReportFilesTest::dir_;
-RunSummary ReportFilesTest::summary_;
-RunLog ReportFilesTest::log_;
 
 int DistinctColours(const viz::Image& image) {
   std::set<int> colours;
@@ -129,9 +125,7 @@ TEST_F(ReportFilesTest, TimePlotsHaveTheirSizeAndCurves) {
 }
 
 TEST(ReportFiles, AnEmptyLogStillGivesEveryFile) {
-  const std::string dir = std::string(TOPAY_BINARY_DIR) + "/test_out/report/empty";
-  std::filesystem::remove_all(dir);
-  std::filesystem::create_directories(dir);
+  const std::string dir = test::FreshTestDir("files");
   { test::CraftedLogWriter log(dir + "/graph.lcmlog"); }
   ReportOptions options;
   options.log_path = dir + "/graph.lcmlog";
@@ -146,8 +140,7 @@ TEST(ReportFiles, AnEmptyLogStillGivesEveryFile) {
 }
 
 TEST(ReportFiles, ASceneAddsItsOutlinesAndABadSceneIsAnErrorNamingIt) {
-  const std::string dir = std::string(TOPAY_BINARY_DIR) + "/test_out/report/scene";
-  std::filesystem::remove_all(dir);
+  const std::string dir = test::FreshTestDir("files");
   test::WriteCraftedRunLog(dir + "/graph.lcmlog");
   std::ofstream(dir + "/room.json")
       << R"({"bounds": {"min": [-2, -2, 0], "max": [5, 5, 1.6]}, "boxes": [{"center": [4, 0, 0.5], "size": [1, 1, 1], "yaw": 0}]})";

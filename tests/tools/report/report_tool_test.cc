@@ -27,16 +27,15 @@ int ExitCodeOf(const std::string& command) {
 class ReportTool : public ::testing::Test {
  protected:
   void SetUp() override {
-    std::filesystem::remove_all(dir_);
-    std::filesystem::create_directories(dir_);
+    dir_ = test::FreshTestDir("tool");
+    out_ = dir_ + "/stdout.txt";
+    err_ = dir_ + "/stderr.txt";
   }
   int Run(const std::string& args) {
     return ExitCodeOf("'" + bin_ + "' " + args + " > '" + out_ + "' 2> '" + err_ + "'");
   }
-  const std::string dir_ = std::string(TOPAY_BINARY_DIR) + "/test_out/report/tool";
   const std::string bin_ = std::string(TOPAY_BINARY_DIR) + "/bin/topay-report";
-  const std::string out_ = dir_ + "/stdout.txt";
-  const std::string err_ = dir_ + "/stderr.txt";
+  std::string dir_, out_, err_;
 };
 
 TEST_F(ReportTool, WritesTheReportAndExitsZero) {

@@ -15,16 +15,14 @@ namespace {
 
 class RunSummaryTest : public ::testing::Test {
  protected:
-  static void SetUpTestSuite() {
-    path_ = std::string(TOPAY_BINARY_DIR) + "/test_out/report/run_summary/graph.lcmlog";
+  void SetUp() override {
+    path_ = test::FreshTestDir("run_summary") + "/graph.lcmlog";
     test::WriteCraftedRunLog(path_);
     summary_ = Summarize(path_);
   }
-  static std::string path_;
-  static RunSummary summary_;
+  std::string path_;
+  RunSummary summary_;
 };
-std::string RunSummaryTest::path_;
-RunSummary RunSummaryTest::summary_;
 
 TEST_F(RunSummaryTest, MissionResultTimeAndStepsFromTheStatusTransitions) {
   const MissionSummary& m = summary_.mission;
@@ -127,7 +125,7 @@ TEST_F(RunSummaryTest, MessagesPerChannelAndMalformedOnesCounted) {
 }
 
 TEST(RunSummary, AnEmptyLogGivesAnEmptySummary) {
-  const std::string path = std::string(TOPAY_BINARY_DIR) + "/test_out/report/run_summary/empty.lcmlog";
+  const std::string path = test::FreshTestDir("run_summary") + "/empty.lcmlog";
   { test::CraftedLogWriter log(path); }
   const RunSummary s = Summarize(path);
   EXPECT_EQ(s.mission.result, MissionResult::kNone);
@@ -137,8 +135,7 @@ TEST(RunSummary, AnEmptyLogGivesAnEmptySummary) {
 }
 
 TEST(RunSummary, AMissingOrForeignFileThrowsNamingIt) {
-  const std::string dir = std::string(TOPAY_BINARY_DIR) + "/test_out/report/run_summary";
-  std::filesystem::create_directories(dir);
+  const std::string dir = test::FreshTestDir("run_summary");
   try {
     Summarize(dir + "/missing.lcmlog");
     FAIL() << "no exception";

@@ -13,7 +13,7 @@ namespace topay::report {
 namespace {
 
 TEST(RunTimeSeries, PlannedIsTheActiveTrajectoryMeasuredIsTheRobotState) {
-  const std::string path = std::string(TOPAY_BINARY_DIR) + "/test_out/report/time_series/graph.lcmlog";
+  const std::string path = test::FreshTestDir("time_series") + "/graph.lcmlog";
   test::WriteCraftedRunLog(path);
   const RunTimeSeries s = SampleRunTimeSeries(ReadRunLog(path));
   ASSERT_EQ(s.t_s.size(), static_cast<std::size_t>(test::kRobotStates));

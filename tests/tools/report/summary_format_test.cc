@@ -10,7 +10,7 @@ namespace topay::report {
 namespace {
 
 TEST(SummaryFormat, NamesResultStepsCountsAndMalformedMessages) {
-  const std::string path = std::string(TOPAY_BINARY_DIR) + "/test_out/report/format/graph.lcmlog";
+  const std::string path = test::FreshTestDir("format") + "/graph.lcmlog";
   test::WriteCraftedRunLog(path);
   RunSummary summary = Summarize(path);
   summary.files.path_png = "/x/path.png";
