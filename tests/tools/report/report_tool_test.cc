@@ -1,5 +1,5 @@
 // The built topay-report: 0 with the summary printed and the files written, 1 for a missing log
-// (naming it) or a file that is not a log, 2 for usage errors.
+// or scene (naming it) or a file that is not a log, 2 for usage errors.
 
 #include <gtest/gtest.h>
 #include <sys/wait.h>
@@ -50,12 +50,15 @@ TEST_F(ReportTool, WritesTheReportAndExitsZero) {
   }
 }
 
-TEST_F(ReportTool, AMissingLogExitsOneNamingIt) {
+TEST_F(ReportTool, AMissingLogOrSceneExitsOneNamingIt) {
   EXPECT_EQ(Run("--log '" + dir_ + "/nope.lcmlog'"), 1);
   EXPECT_NE(ReadText(err_).find(dir_ + "/nope.lcmlog"), std::string::npos) << ReadText(err_);
   std::ofstream(dir_ + "/text.lcmlog") << "hello, not a log\n";
   EXPECT_EQ(Run("--log '" + dir_ + "/text.lcmlog'"), 1);
   EXPECT_NE(ReadText(err_).find("text.lcmlog: not an LCM log"), std::string::npos) << ReadText(err_);
+  test::WriteCraftedRunLog(dir_ + "/graph.lcmlog");
+  EXPECT_EQ(Run("--log '" + dir_ + "/graph.lcmlog' --scene '" + dir_ + "/no_room.json'"), 1);
+  EXPECT_NE(ReadText(err_).find("no_room.json"), std::string::npos) << ReadText(err_);
 }
 
 TEST_F(ReportTool, UsageErrorsExitTwo) {
