@@ -113,7 +113,8 @@ void LayOutLegend(const RunLog& log, const Scene* scene, const viz::ViewTransfor
   if (scene != nullptr) legend->Swatch(colors::kWhite, kOutline, "scene boxes (outline)");
   if (log.map) {
     const viz::ScalarRange z = MapHeightRange(*log.map);
-    legend->ColourBar("map: occupied, top", viz::GreyRamp, fmt::format("{:.2g}", z.min), fmt::format("{:.2g} m", z.max));
+    legend->ColourBar("map: occupied, top", viz::GreyRamp, fmt::format("{:.2g}", z.min),
+                      fmt::format("{:.2g} m", z.max));
   }
   legend->ScaleBar(view);
 }

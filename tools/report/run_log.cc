@@ -102,7 +102,9 @@ void CountEvent(const lcm::LogEvent& event, RunLog* run) {
 
 RunLog ReadRunLog(const std::string& path) {
   std::error_code error;
-  if (!std::filesystem::exists(path, error)) throw std::runtime_error(path + ": cannot open the LCM log (no such file)");
+  if (!std::filesystem::exists(path, error)) {
+    throw std::runtime_error(path + ": cannot open the LCM log (no such file)");
+  }
   if (!std::filesystem::is_regular_file(path, error)) throw std::runtime_error(path + ": not a file");
   lcm::LogFile log(path, "r");
   if (!log.good()) throw std::runtime_error(path + ": cannot open the LCM log");

@@ -25,6 +25,10 @@ viz::LineChart Panel(const std::string& title, const std::vector<double>& t, con
   chart.series.push_back({t, planned, kPlanned, "planned", 2.0});
   chart.series.push_back({t, measured, kMeasured, "measured", 1.5});
   chart.x_range = {t.front(), t.back()};
+  const auto finite = [](const std::vector<double>& y) {
+    return std::any_of(y.begin(), y.end(), [](double v) { return std::isfinite(v); });
+  };
+  if (!finite(planned) && !finite(measured)) chart.y_range = {-1.0, 1.0};  // nothing to fit: an empty panel
   return chart;
 }
 
@@ -43,7 +47,8 @@ std::vector<viz::LineChart> Panels(const RunTimeSeries& s) {
 void MarkSwitches(viz::Painter* painter, const viz::ChartLayout& layout, const std::vector<double>& switch_t_s) {
   for (double t : switch_t_s) {
     if (t < layout.x_min || t > layout.x_max) continue;
-    const Eigen::Vector2d top = layout.ToPixel(t, layout.y_max), bottom = layout.ToPixel(t, layout.y_min);
+    const double x_px = std::floor(layout.ToPixel(t, layout.y_max).x()) + 0.5;  // on a pixel column: crisp
+    const Eigen::Vector2d top(x_px, layout.plot.y0), bottom(x_px, layout.plot.y1);
     painter->DrawDashedLine(top, bottom, kSwitch, 1.0, {3.0, 3.0});
   }
 }

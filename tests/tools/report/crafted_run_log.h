@@ -197,7 +197,8 @@ inline GridGeometry3 MapGeometry() {
 
 inline void WriteMap(CraftedLogWriter* log) {
   const GridGeometry3 g = MapGeometry();
-  std::vector<std::uint8_t> states(static_cast<std::size_t>(g.NumCells()), static_cast<std::uint8_t>(VoxelState::kFree));
+  std::vector<std::uint8_t> states(static_cast<std::size_t>(g.NumCells()),
+                                   static_cast<std::uint8_t>(VoxelState::kFree));
   states[g.Index(1, 25, 4)] = static_cast<std::uint8_t>(VoxelState::kOccupied);
   log->Publish(At(0.5), "MAP_UPDATE", msgs::EncodeFullMap(g, states, At(0.5), 1));
   const std::vector<VoxelChange> changes = {{Eigen::Vector3i(1, 25, 7), VoxelState::kOccupied}};

@@ -143,7 +143,8 @@ TEST(ReportFiles, ASceneAddsItsOutlinesAndABadSceneIsAnErrorNamingIt) {
   const std::string dir = test::FreshTestDir("files");
   test::WriteCraftedRunLog(dir + "/graph.lcmlog");
   std::ofstream(dir + "/room.json")
-      << R"({"bounds": {"min": [-2, -2, 0], "max": [5, 5, 1.6]}, "boxes": [{"center": [4, 0, 0.5], "size": [1, 1, 1], "yaw": 0}]})";
+      << R"({"bounds": {"min": [-2, -2, 0], "max": [5, 5, 1.6]},)"
+      << R"( "boxes": [{"center": [4, 0, 0.5], "size": [1, 1, 1], "yaw": 0}]})";
   ReportOptions options;
   options.log_path = dir + "/graph.lcmlog";
   options.scene_path = dir + "/room.json";

@@ -17,7 +17,8 @@ TEST(SummaryFormat, NamesResultStepsCountsAndMalformedMessages) {
   const std::string text = FormatSummary(summary);
   for (const std::string& expected :
        {std::string("mission 'two_goals': SUCCEEDED after 9.0 s (3 of 3 steps seen)"),
-        std::string("goto pickup"), std::string("4.0 s, 2 attempts"), std::string("gripper close                    0.5 s\n"),
+        std::string("goto pickup"), std::string("4.0 s, 2 attempts"),
+        std::string("gripper close                    0.5 s\n"),
         std::string("4.0 s, 1 attempt\n"), std::string("replans: 3 over 4 goals"),
         std::string("3 TRAJECTORY messages (2 rebuilt); 1 stopping trajectory"),
         std::string("3 plans, total median 200.0 ms, p95 290.0 ms, max 300.0 ms; 2 failed goals"),
