@@ -32,6 +32,9 @@ std::string PlannerLines(const RunSummary& s) {
   out += fmt::format("planning (SUCCEEDED): {}, total median {:.1f} ms, p95 {:.1f} ms, max {:.1f} ms; {}\n",
                      Plural(t.count, "plan"), t.median, t.p95, t.max, Plural(p.failures, "failed goal"));
   for (const auto& [reason, count] : p.failure_reasons) out += fmt::format("  failed {}x: {}\n", count, reason);
+  if (p.reached_at_rest > 0) {
+    out += fmt::format("  {} reached at rest (no plan needed)\n", Plural(p.reached_at_rest, "goal"));
+  }
   return out;
 }
 

@@ -31,6 +31,7 @@ json PlannerJson(const RunSummary& s) {
           {"trajectory_messages", s.trajectory_messages},
           {"trajectories_rebuilt", s.trajectories_rebuilt},
           {"stopping", p.stopping},
+          {"reached_at_rest", p.reached_at_rest},
           {"planning_total_ms", TimingJson(p.planning_ms)},
           {"failures", p.failures},
           {"failure_reasons", p.failure_reasons}};

@@ -47,5 +47,19 @@ TEST(PlannerSummary, MaxReplansPerGoalSummedAndEachPlanOnce) {
   EXPECT_EQ(p.failure_reasons.at("x"), 1);
 }
 
+TEST(PlannerSummary, AStatusKeepingAnotherGoalsTrajectoryIsNoPlan) {
+  using P = planner_status_t;
+  planner_status_t at_rest = Status(P::SUCCEEDED, 2, 10, 50.0, 0);  // goal 2, goal 1's trajectory and time
+  at_rest.detail = "goal reached at rest: end effector 0.010 m / 0.020 rad from the target";
+  planner_status_t later = at_rest;
+  later.detail = "";  // a periodic repeat with another detail is still goal 1's trajectory
+  const PlannerSummary p = SummarizePlanner({Status(P::SUCCEEDED, 1, 10, 50.0, 0), at_rest, later,
+                                             Status(P::SUCCEEDED, 3, 0, 80.0, 0)});  // no trajectory id
+  EXPECT_EQ(p.planning_ms.count, 1);
+  EXPECT_DOUBLE_EQ(p.planning_ms.max, 50.0);
+  EXPECT_EQ(p.reached_at_rest, 1);
+  EXPECT_EQ(p.goals, 3);
+}
+
 }  // namespace
 }  // namespace topay::report
