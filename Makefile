@@ -1,7 +1,7 @@
 # Two commands on a fresh Debian 12 machine:
 #   make demo   install what is missing, build, run the main job
 #   make test   install what is missing, build (with assertions), run every test
-.PHONY: all deps build build-test test test-fast demo graph bench bench-replan clean
+.PHONY: all deps build build-test test test-fast demo missions demo-plan graph bench bench-replan clean
 
 BUILD_DIR      ?= build
 TEST_BUILD_DIR ?= build-test
@@ -32,16 +32,33 @@ test: build-test
 test-fast: build-test
 	@cd $(TEST_BUILD_DIR) && ctest --output-on-failure -j $(JOBS) -LE '^long'
 
-# The main job until the process graph exists: one TopAY plan (front end, parallel trajectory
-# optimization, independent validation) on a seeded Tables room and a medium-range task,
-# writing the summary, the trajectory JSON and the plots. Exit code 3 (the plan failed, reason
-# printed, JSON and top-down PNG still written) does not fail the demo; any other error does.
+# The main job: the closed loop (docs/demo.md). The paper's pick-and-place task in a Tables room
+# the robot has never seen (mapped only by its LiDAR as it goes), through the real processes
+# (sim, director, mapper, planner, tracker, mission, logger) in a private network namespace,
+# headless; a box appears on the route mid-run. Prints the mission's progress and, at the end,
+# the summary (result, time, replans, ground-truth collisions, tracking error, planning and
+# solve times) and where the log and plots are (out/demo/seed-<S>/). Exits non-zero if the
+# mission failed or touched anything.
+DEMO_SEED ?= 1
 demo: build
-	@mkdir -p $(DEMO_OUT)
+	$(BUILD_DIR)/bin/topay-missions --seeds 1 --first-seed $(DEMO_SEED) --out $(DEMO_OUT)
+
+# The same mission over SEEDS rooms, one graph after another, with a table of results
+# (out/missions/results.md).
+SEEDS      ?= 20
+FIRST_SEED ?= 1
+missions: build
+	$(BUILD_DIR)/bin/topay-missions --seeds $(SEEDS) --first-seed $(FIRST_SEED) --out out/missions
+
+# One TopAY plan (the main job before the closed loop): a seeded Tables room and a medium-range
+# task; the summary, the trajectory JSON and the plots in out/plan/. Exit code 3 (the plan failed,
+# reason printed, JSON and top-down PNG still written) does not fail it; any other error does.
+demo-plan: build
+	@mkdir -p out/plan
 	$(BUILD_DIR)/bin/topay-plan --scene tables --seed 2 --range medium \
-	  --json $(DEMO_OUT)/trajectory.json --png $(DEMO_OUT)/path.png \
-	  --time-png $(DEMO_OUT)/time_plots.png || [ $$? -eq 3 ]
-	@echo "demo: wrote $(DEMO_OUT)/trajectory.json, path.png, time_plots.png"
+	  --json out/plan/trajectory.json --png out/plan/path.png \
+	  --time-png out/plan/time_plots.png || [ $$? -eq 3 ]
+	@echo "demo-plan: wrote out/plan/trajectory.json, path.png, time_plots.png"
 
 # The simulation process graph (config/graphs/sim.yaml), isolated in a private network
 # namespace; Ctrl-C stops it. Run folder: out/runs/<date-time>/ (docs/running.md).
