@@ -33,6 +33,34 @@ int ClearBaseFootprint(const GridGeometry3& geometry, const Eigen::Vector2d& p_W
   return cleared;
 }
 
+int ClearArmOverlaps(const GridGeometry3& geometry, const Kinematics& kinematics, const WholeBodyState& state,
+                     double max_depth_m, UnknownVoxelPolicy unknown, std::vector<std::uint8_t>* states) {
+  KinematicsCache cache = kinematics.MakeCache();
+  kinematics.Update(state, &cache);
+  const double half = 0.5 * geometry.resolution_m;
+  int cleared = 0;
+  for (std::size_t s = 0; s < cache.p_WS.size(); ++s) {
+    const Eigen::Vector3d& p_WS = cache.p_WS[s];
+    const double r = kinematics.model().spheres[s].radius_m;
+    const CellBox cells = VoxelsOverlapping(geometry, {p_WS - Eigen::Vector3d::Constant(r), p_WS + Eigen::Vector3d::Constant(r)});
+    for (int iz = cells.begin.z(); iz < cells.end.z(); ++iz) {
+      for (int iy = cells.begin.y(); iy < cells.end.y(); ++iy) {
+        for (int ix = cells.begin.x(); ix < cells.end.x(); ++ix) {
+          std::uint8_t& voxel = (*states)[geometry.Index(ix, iy, iz)];
+          if (!VoxelBlocksPlanner(static_cast<VoxelState>(voxel), unknown)) continue;
+          // Distance from the sphere's centre to the voxel's box (0 inside it).
+          const Eigen::Vector3d c = geometry.CellCenter(ix, iy, iz);
+          const double d = ((p_WS - c).cwiseAbs().array() - half).max(0.0).matrix().norm();
+          if (d >= r || d <= r - max_depth_m) continue;
+          voxel = static_cast<std::uint8_t>(VoxelState::kFree);
+          ++cleared;
+        }
+      }
+    }
+  }
+  return cleared;
+}
+
 bool SameGeometry(const GridGeometry3& a, const GridGeometry3& b) {
   return a.origin_W_m == b.origin_W_m && a.resolution_m == b.resolution_m && a.dims == b.dims;
 }

@@ -13,6 +13,7 @@
 
 #include "core/geometry/oriented_box.h"
 #include "core/map/grid_geometry.h"
+#include "core/robot/kinematics.h"
 #include "core/map/voxel_map_fields.h"
 #include "core/robot/robot_model.h"
 #include "procs/msgs/map_receiver.h"
@@ -67,6 +68,17 @@ class MapIntake {
 int ClearBaseFootprint(const GridGeometry3& geometry, const Eigen::Vector2d& p_WB_m,
                        const BaseCylinder& base, UnknownVoxelPolicy unknown,
                        std::vector<std::uint8_t>* states);
+
+/// Sets free every blocked voxel that a collision sphere of the robot standing at `state`
+/// reaches into by at most max_depth_m (the distance from the sphere's centre to the voxel's
+/// box is less than its radius, and more than radius - max_depth_m): as for the base, the
+/// robot stands there, and a shallow overlap is the sensed map standing out of a surface the
+/// arm is near (a safe stop beside a table left an arm sphere 2 mm "inside" a voxel, and every
+/// plan from rest failed on its start). Deeper overlaps stay: the map's word that the arm is
+/// in something. Only the exact check loses them (the fields keep them). Returns the voxels
+/// cleared.
+int ClearArmOverlaps(const GridGeometry3& geometry, const Kinematics& kinematics, const WholeBodyState& state,
+                     double max_depth_m, UnknownVoxelPolicy unknown, std::vector<std::uint8_t>* states);
 
 /// True if `a` and `b` are the same grid (origin, resolution, dims).
 bool SameGeometry(const GridGeometry3& a, const GridGeometry3& b);

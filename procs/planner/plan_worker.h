@@ -59,6 +59,9 @@ struct PlanJob {
   /// The plan waits until its fields hold every map update submitted before it (a full
   /// flush: deterministic, but up to ~0.4 s more while the robot drives into unseen space).
   bool flush_all_map = false;
+  /// From rest: the blocked voxels the arm at the start reaches into by at most this much (m)
+  /// are left out of the exact check (ClearArmOverlaps; the base's all are).
+  double clear_arm_overlap_m = 0.0;
   std::int64_t map_seq = 0;            ///< the newest map update the LCM thread had (the record)
 };
 

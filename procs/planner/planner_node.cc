@@ -296,6 +296,7 @@ void PlannerNode::RequestPlan(PlanTrigger trigger, const std::string& reason, bo
   job.fresh_regions_xy_W_m = FreshRegions(job.start);
   // From rest there is time (the robot waits): the fields take every map update first.
   job.flush_all_map = job.from_rest && options_.map.flush_all_from_rest;
+  job.clear_arm_overlap_m = options_.map.start_arm_overlap_m;
   if (clock_.message_time()) {
     job.flush_all_map = true;  // fields from every map update handled before it
     job.time_limit_s = options_.deterministic.time_limit_s;

@@ -22,6 +22,7 @@ void ReadMap(YamlSection s, PlannerMapOptions* o) {
   s.Read("field_update_period_s", &o->field_update_period_s);
   s.Read("slice_m", &o->slice_m);
   s.Read("flush_all_from_rest", &o->flush_all_from_rest);
+  s.Read("start_arm_overlap_m", &o->start_arm_overlap_m);
   s.Read("fresh_radius_m", &o->fresh_radius_m);
   s.Read("fresh_collision_radius_m", &o->fresh_collision_radius_m);
   s.Read("validator_margin_m", &o->validator_margin_m);
@@ -112,6 +113,7 @@ void CheckPlannerProcessOptions(const PlannerProcessOptions& o, const std::strin
   RequirePositive(o.map.fresh_radius_m, source, "map.fresh_radius_m");
   RequirePositive(o.map.fresh_collision_radius_m, source, "map.fresh_collision_radius_m");
   RequireNonNegative(o.map.validator_margin_m, source, "map.validator_margin_m");
+  RequireNonNegative(o.map.start_arm_overlap_m, source, "map.start_arm_overlap_m");
   RequirePositive(o.timing.from_rest_time_limit_s, source, "timing.from_rest_time_limit_s");
   RequirePositive(o.timing.publish_margin_s, source, "timing.publish_margin_s");
   RequirePositive(o.timing.replan_budget_s - o.timing.publish_margin_s, source,

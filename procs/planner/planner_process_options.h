@@ -33,6 +33,11 @@ struct PlannerMapOptions {
   double fresh_collision_radius_m = 1.5;
   /// A plan from rest (the robot waits for it) first brings every change into the fields.
   bool flush_all_from_rest = true;
+  /// A plan from rest validates against the map without the blocked voxels the robot's base
+  /// reaches into, and without those its arm spheres reach into by at most this much (m;
+  /// ClearArmOverlaps: the sensed map standing out of a surface the arm stopped near). 0: the
+  /// arm's overlaps all stay. >= 0.
+  double start_arm_overlap_m = 0.03;
   /// Added to the core planner's validator obstacle margin (m) when it validates a plan
   /// against the map's voxel boxes (the check of the trajectory ahead triggers at
   /// triggers.check_obstacle_margin_m). 0 by default: the fields do not carry a margin, and

@@ -2,7 +2,9 @@
 
 #include <gtest/gtest.h>
 
+#include "core/io/robot_loader.h"
 #include "procs/msgs/map_codec.h"
+#include "tests/common/arm_state.h"
 #include "tests/procs/planner/planner_test_support.h"
 
 namespace topay::planner {
@@ -99,6 +101,53 @@ TEST(MapIntakeTest, ClearBaseFootprintFreesOnlyBlockedVoxelsInsideTheBase) {
   int changed = 0;
   for (std::size_t i = 0; i < states.size(); ++i) changed += states[i] != before[i];
   EXPECT_EQ(changed, 10);
+}
+
+// Around one arm sphere of the robot standing in a block of occupied voxels: the voxels the
+// sphere reaches into by at most 3 cm are cleared, deeper ones and those it does not reach stay
+// (judged on the voxels no other sphere reaches, so that the one sphere decides).
+TEST(MapIntakeTest, ClearArmOverlapsFreesOnlyShallowOverlapsOfTheArm) {
+  const RobotModel model = LoadRobotModel(TOPAY_SOURCE_DIR "/config/robot/topay_mm.urdf",
+                                          TOPAY_SOURCE_DIR "/config/robot/topay_mm.yaml");
+  const Kinematics kinematics(model);
+  const WholeBodyState state = BentArmState(0.0, 0.0, 0.0);
+  KinematicsCache cache = kinematics.MakeCache();
+  kinematics.Update(state, &cache);
+  const int s = static_cast<int>(cache.p_WS.size()) - 1;  // the outermost sphere
+  const Eigen::Vector3d p = cache.p_WS[s];
+  const double r = model.spheres[s].radius_m;
+  const GridGeometry3 g = testing::RoomGeometry();
+  std::vector<std::uint8_t> states = testing::StatesOf(g, {MakeBox(p, Eigen::Vector3d::Constant(2.0 * r + 0.2))});
+  const std::vector<std::uint8_t> before = states;
+  const int cleared = ClearArmOverlaps(g, kinematics, state, 0.03, UnknownVoxelPolicy::kFree, &states);
+  EXPECT_GT(cleared, 0);
+  const double half = 0.5 * g.resolution_m;
+  const auto distance = [&](const Eigen::Vector3d& centre, const Eigen::Vector3d& c) {
+    return ((centre - c).cwiseAbs().array() - half).max(0.0).matrix().norm();
+  };
+  int shallow = 0, deep = 0;
+  for (std::size_t i = 0; i < states.size(); ++i) {
+    if (before[i] != static_cast<std::uint8_t>(VoxelState::kOccupied)) continue;
+    const int ix = static_cast<int>(i % g.dims.x()), iy = static_cast<int>((i / g.dims.x()) % g.dims.y()),
+              iz = static_cast<int>(i / (static_cast<std::size_t>(g.dims.x()) * g.dims.y()));
+    const Eigen::Vector3d c = g.CellCenter(ix, iy, iz);
+    bool other = false;
+    for (std::size_t o = 0; o < cache.p_WS.size(); ++o) {
+      other |= static_cast<int>(o) != s && distance(cache.p_WS[o], c) < model.spheres[o].radius_m;
+    }
+    if (other) continue;
+    const double d = distance(p, c);
+    const bool expect_cleared = d < r && d > r - 0.03;
+    shallow += expect_cleared;
+    deep += d <= r - 0.03;
+    EXPECT_EQ(states[i], static_cast<std::uint8_t>(expect_cleared ? VoxelState::kFree : VoxelState::kOccupied))
+        << "voxel at " << c.transpose() << ", " << d << " m from the sphere's centre (radius " << r << ")";
+  }
+  EXPECT_GT(shallow, 0);
+  EXPECT_GT(deep, 0);
+  // Depth 0: nothing of the arm is cleared.
+  std::vector<std::uint8_t> untouched = before;
+  EXPECT_EQ(ClearArmOverlaps(g, kinematics, state, 0.0, UnknownVoxelPolicy::kFree, &untouched), 0);
 }
 
 }  // namespace

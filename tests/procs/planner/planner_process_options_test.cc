@@ -27,6 +27,7 @@ TEST(PlannerProcessOptionsTest, ShippedFileLoadsWithTheDefaults) {
   EXPECT_EQ(o.map.flush_all_from_rest, d.map.flush_all_from_rest);
   EXPECT_EQ(o.timing.max_failed_plans_from_rest, d.timing.max_failed_plans_from_rest);
   EXPECT_EQ(o.goals.reached_position_m, d.goals.reached_position_m);
+  EXPECT_EQ(o.map.start_arm_overlap_m, d.map.start_arm_overlap_m);
   EXPECT_EQ(o.goals.reached_orientation_rad, d.goals.reached_orientation_rad);
   EXPECT_TRUE(std::filesystem::exists(o.planner_config)) << o.planner_config;
 }
@@ -57,6 +58,7 @@ TEST(PlannerProcessOptionsTest, ValuesAreReadAndBadOnesNamed) {
   expect_error("timing: {replan_budget_s: 0.01}\n", "replan_budget_s");
   expect_error("triggers: {drift_position_m: -1}\n", "drift_position_m");
   expect_error("timing: {max_failed_plans_from_rest: 0}\n", "timing.max_failed_plans_from_rest");
+  expect_error("map: {start_arm_overlap_m: -0.01}\n", "map.start_arm_overlap_m");
   expect_error("goals: {reached_position_m: -0.1}\n", "goals.reached_position_m");
   expect_error("goals: {reached_orientation_rad: .nan}\n", "goals.reached_orientation_rad");
   expect_error("stop: {latency: 1}\n", "stop.latency");
