@@ -9,20 +9,12 @@
 #include <fstream>
 #include <string>
 
+#include "tests/common/tool_test.h"
+
 #include "tests/tools/report/crafted_run_log.h"
 
 namespace topay::report {
 namespace {
-
-std::string ReadText(const std::string& path) {
-  std::ifstream file(path);
-  return std::string(std::istreambuf_iterator<char>(file), {});
-}
-
-int ExitCodeOf(const std::string& command) {
-  const int status = std::system(command.c_str());
-  return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-}
 
 class ReportTool : public ::testing::Test {
  protected:

@@ -10,21 +10,13 @@
 #include <fstream>
 #include <string>
 
+#include "tests/common/tool_test.h"
+
 #include "core/trajectory/arc_yaw_trajectory.h"
 #include "tools/topay_plan/trajectory_json.h"
 
 namespace topay {
 namespace {
-
-std::string ReadText(const std::string& path) {
-  std::ifstream file(path);
-  return std::string(std::istreambuf_iterator<char>(file), {});
-}
-
-int ExitCodeOf(const std::string& command) {
-  const int status = std::system(command.c_str());
-  return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-}
 
 // 1.5 m of arc, a 0.6 rad turn and every joint +0.4 rad over 6 s, from rest to rest.
 ArcYawTrajectory Smooth(const Eigen::VectorXd& q0) {
