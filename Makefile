@@ -1,7 +1,7 @@
 # Two commands on a fresh Debian 12 machine:
 #   make demo   install what is missing, build, run the main job
 #   make test   install what is missing, build (with assertions), run every test
-.PHONY: all deps build build-test test test-fast demo missions demo-plan graph bench bench-replan clean
+.PHONY: all deps build build-test test test-fast test-demo demo missions demo-plan graph bench bench-replan clean
 
 BUILD_DIR      ?= build
 TEST_BUILD_DIR ?= build-test
@@ -42,6 +42,11 @@ test-fast: build-test
 DEMO_SEED ?= 1
 demo: build
 	$(BUILD_DIR)/bin/topay-missions --seeds 1 --first-seed $(DEMO_SEED) --out $(DEMO_OUT)
+
+# The closed-loop demo's end-to-end test (topay-missions on seed 1 through the whole graph; not
+# in `make test`: docs/demo.md "Known problems").
+test-demo: build-test
+	@cd $(TEST_BUILD_DIR) && TOPAY_DEMO_TEST=1 ctest --output-on-failure -R MissionsDemo
 
 # The same mission over SEEDS rooms, one graph after another, with a table of results
 # (out/missions/results.md).

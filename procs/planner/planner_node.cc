@@ -231,7 +231,11 @@ void PlannerNode::CheckActiveAgainstMap(std::int64_t now) {
 bool PlannerNode::FillStart(PlanTrigger trigger, std::int64_t now, PlanJob* job, std::string* error) const {
   const PlanTimingOptions& t = options_.timing;
   const std::int64_t t0 = now + Micros(t.replan_budget_s);
-  if (trigger != PlanTrigger::kDrift && active_ && !active_->EndedBy(t0)) {
+  // A trajectory still running now: the robot will be where it says at t0 (at its end, at
+  // rest, if it ends before t0). Not the measured state extrapolated with its rates: a robot
+  // braking on a stopping trajectory that ended within the budget was extrapolated 1 s at its
+  // yaw rate, the new trajectory began 0.47 rad off, and drift replans compounded it into a box.
+  if (trigger != PlanTrigger::kDrift && active_ && !active_->EndedBy(now)) {
     job->start = active_->SampleAt(t0);  // where the robot will be at t0 on the trajectory
     if (!AtRest(job->start, t.rest_speed) || active_->TimeAt(t0) > 0.0) {
       job->from_rest = false;
