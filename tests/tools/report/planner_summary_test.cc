@@ -5,25 +5,15 @@
 
 #include <gtest/gtest.h>
 
+#include "tests/tools/report/crafted_run_log.h"
+
 namespace topay::report {
 namespace {
 
-planner_status_t Status(std::int8_t state, std::int64_t goal, std::int64_t trajectory, double total_ms, int replans,
-                        const std::string& reason = "") {
-  planner_status_t p;
-  p.utime = 0;
-  p.state = state;
-  p.goal_id = goal;
-  p.trajectory_id = trajectory;
-  p.failure_reason = reason;
-  p.front_end_ms = p.sampling_ms = p.optimization_ms = 0.0;
-  p.total_ms = total_ms;
-  p.replans = replans;
-  return p;
-}
+using test::Planner;  // a PLANNER_STATUS with these fields (crafted_run_log.h)
 
 TEST(PlannerSummary, NothingIsZero) {
-  const PlannerSummary p = SummarizePlanner({Status(planner_status_t::IDLE, 0, 0, 0.0, 0)});
+  const PlannerSummary p = SummarizePlanner({Planner(planner_status_t::IDLE, 0, 0, 0.0, 0)});
   EXPECT_EQ(p.goals, 0);  // goal id 0: none
   EXPECT_EQ(p.replans, 0);
   EXPECT_EQ(p.planning_ms.count, 0);
@@ -32,11 +22,11 @@ TEST(PlannerSummary, NothingIsZero) {
 TEST(PlannerSummary, MaxReplansPerGoalSummedAndEachPlanOnce) {
   using P = planner_status_t;
   const PlannerSummary p = SummarizePlanner(
-      {Status(P::SUCCEEDED, 1, 10, 50.0, 0), Status(P::PLANNING, 1, 10, 50.0, 2), Status(P::SUCCEEDED, 1, 11, 70.0, 2),
-       Status(P::SUCCEEDED, 1, 11, 70.0, 1),  // a lower count later does not lower the max
-       Status(P::STOPPING, 2, 20, 0.0, 4), Status(P::STOPPING, 2, 21, 0.0, 5), Status(P::STOPPING, 2, 21, 0.0, 5),
-       Status(P::FAILED, 3, 0, 0.0, 0, "x"), Status(P::FAILED, 3, 0, 0.0, 0, "x"),
-       Status(P::CANCELLED, 4, 0, 0.0, 1)});
+      {Planner(P::SUCCEEDED, 1, 10, 50.0, 0), Planner(P::PLANNING, 1, 10, 50.0, 2), Planner(P::SUCCEEDED, 1, 11, 70.0, 2),
+       Planner(P::SUCCEEDED, 1, 11, 70.0, 1),  // a lower count later does not lower the max
+       Planner(P::STOPPING, 2, 20, 0.0, 4), Planner(P::STOPPING, 2, 21, 0.0, 5), Planner(P::STOPPING, 2, 21, 0.0, 5),
+       Planner(P::FAILED, 3, 0, 0.0, 0, "x"), Planner(P::FAILED, 3, 0, 0.0, 0, "x"),
+       Planner(P::CANCELLED, 4, 0, 0.0, 1)});
   EXPECT_EQ(p.goals, 4);
   EXPECT_EQ(p.replans, 2 + 5 + 0 + 1);
   EXPECT_EQ(p.stopping, 2);
@@ -49,12 +39,12 @@ TEST(PlannerSummary, MaxReplansPerGoalSummedAndEachPlanOnce) {
 
 TEST(PlannerSummary, AStatusKeepingAnotherGoalsTrajectoryIsNoPlan) {
   using P = planner_status_t;
-  planner_status_t at_rest = Status(P::SUCCEEDED, 2, 10, 50.0, 0);  // goal 2, goal 1's trajectory and time
+  planner_status_t at_rest = Planner(P::SUCCEEDED, 2, 10, 50.0, 0);  // goal 2, goal 1's trajectory and time
   at_rest.detail = "goal reached at rest: end effector 0.010 m / 0.020 rad from the target";
   planner_status_t later = at_rest;
   later.detail = "";  // a periodic repeat with another detail is still goal 1's trajectory
-  const PlannerSummary p = SummarizePlanner({Status(P::SUCCEEDED, 1, 10, 50.0, 0), at_rest, later,
-                                             Status(P::SUCCEEDED, 3, 0, 80.0, 0)});  // no trajectory id
+  const PlannerSummary p = SummarizePlanner({Planner(P::SUCCEEDED, 1, 10, 50.0, 0), at_rest, later,
+                                             Planner(P::SUCCEEDED, 3, 0, 80.0, 0)});  // no trajectory id
   EXPECT_EQ(p.planning_ms.count, 1);
   EXPECT_DOUBLE_EQ(p.planning_ms.max, 50.0);
   EXPECT_EQ(p.reached_at_rest, 1);
