@@ -9,6 +9,7 @@
 #include "core/optimization/endpoint_relief.h"
 #include "core/optimization/smooth_penalty.h"
 #include "core/planning/base_band.h"
+#include "core/robot/fixed_height_links.h"
 
 namespace topay {
 namespace {
@@ -163,6 +164,10 @@ SamplePenalties::SamplePenalties(const Kinematics& kinematics,
   CheckNonNegative(arm_margin, "arm_field_margin_m");
   base_threshold_m_ = options_.base_radius_factor * model.base_cylinder.radius_m + base_margin;
   arm_field_spheres_ = SpheresToCheckOnArmField(kinematics, base_field);
+  const std::vector<bool> fixed_height = FixedHeightLinks(model);
+  for (int s = 0; s < static_cast<int>(model.spheres.size()); ++s) {
+    if (!fixed_height[static_cast<std::size_t>(model.spheres[s].link)]) chassis_spheres_.push_back(s);
+  }
   sphere_thresholds_m_.resize(static_cast<int>(model.spheres.size()));
   for (int s = 0; s < sphere_thresholds_m_.size(); ++s) {
     sphere_thresholds_m_(s) =
@@ -399,9 +404,8 @@ bool SamplePenalties::AddSelfCollision(bool with_gradient, double* total, Penalt
 bool SamplePenalties::AddChassis(bool with_gradient, double* total, PenaltyValues* costs) {
   const RobotModel& model = kinematics_.model();
   const double top = model.base_cylinder.height_m;
-  const int num_spheres = static_cast<int>(model.spheres.size());
   bool any_active = false;
-  for (int s = 0; s < num_spheres; ++s) {
+  for (const int s : chassis_spheres_) {
     const double clearance = cache_.p_WS[s].z() - model.spheres[s].radius_m - top;
     const double slope =
         Add(PenaltyTerm::kChassis, options_.chassis_margin_m - clearance, total, costs);

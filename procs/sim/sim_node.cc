@@ -3,6 +3,7 @@
 #include <spdlog/spdlog.h>
 
 #include <algorithm>
+#include <string>
 
 #include "procs/sim/sim_messages.h"
 #include "topay/heartbeat_t.hpp"
@@ -140,8 +141,10 @@ void SimNode::OnWorldChanged(const std::vector<OrientedBox>& boxes) { scan_worke
 void SimNode::OnContact(const ContactResult& contact, int box_id) {
   const sim_contact_t msg = ToContactMessage(contact, box_id, start_utime_);
   loop_->lcm().publish(std::string(channels::SIM_CONTACT), &msg);
-  spdlog::error("CONTACT at t={:.3f} s: {} with box {} depth {:.4f} m", contact.t_s, contact.body, box_id,
-                contact.depth_m);
+  // Self and chassis contacts involve no box (id -1): the body ("chassis: sphere 11 (link
+  // link7)", "self: sphere 3 - sphere 9") names both parts.
+  const std::string with = box_id < 0 ? "" : fmt::format(" with box {}", box_id);
+  spdlog::error("CONTACT at t={:.3f} s: {}{}, depth {:.4f} m", contact.t_s, contact.body, with, contact.depth_m);
 }
 
 void SimNode::OnEvent(const sim::SimEvent& event, double t_s, const std::string& error) {

@@ -241,6 +241,36 @@ TEST_F(SamplePenaltiesTest, SelfCollisionAndChassisGradients) {
   }
 }
 
+// The chassis margin (20 mm by default) applies to the spheres the joints can raise: the
+// stowed arm (its shoulder sphere a constant 5 mm above the top, link7 37 mm) costs nothing;
+// the same margin on the shoulder sphere would cost everywhere with no gradient to follow.
+// Folding the wrist down until link7's sphere is within the margin costs.
+TEST_F(SamplePenaltiesTest, ChassisMarginLeavesFixedHeightSpheresOutAndHoldsTheRest) {
+  penalties_.set_enabled(Only(PenaltyTerm::kChassis));
+  ASSERT_EQ(world_->model.stow_q_rad.size(), world_->model.num_joints());
+  sample_.x_m = -2.0;
+  sample_.q_rad = world_->model.stow_q_rad;
+  EXPECT_EQ(penalties_.Evaluate(sample_, nullptr), 0.0);
+  const Kinematics& kinematics = *world_->kinematics;
+  KinematicsCache cache = kinematics.MakeCache();
+  const double top_m = world_->model.base_cylinder.height_m;
+  const auto sphere_margin_m = [&](int s) {
+    WholeBodyState state = testing::MakeState(sample_.x_m, sample_.y_m, sample_.yaw_rad, sample_.q_rad);
+    kinematics.Update(state, &cache);
+    return cache.p_WS[s].z() - world_->model.spheres[s].radius_m - top_m;
+  };
+  EXPECT_NEAR(sphere_margin_m(0), 0.005, 1e-3);  // below the 20 mm margin, yet no cost
+  // Lower the wrist (joint 6) in small steps until sphere 11 is within the margin.
+  bool lowered = false;
+  for (int step = 0; step < 400 && !lowered; ++step) {
+    sample_.q_rad(5) += (step % 2 == 0 ? 1 : -1) * 0.005 * (step + 1);
+    lowered = sphere_margin_m(11) > 0.0 && sphere_margin_m(11) < 0.015;
+  }
+  ASSERT_TRUE(lowered) << "no wrist angle put link7's sphere 0-15 mm above the chassis";
+  EXPECT_GT(penalties_.Evaluate(sample_, nullptr), 0.0);
+  ExpectActiveAndGradientMatches(PenaltyTerm::kChassis);
+}
+
 TEST_F(SamplePenaltiesTest, AllTermsTogetherSumTheirParts) {
   sample_.x_m = 0.6231;
   sample_.y_m = 0.0123;
