@@ -60,12 +60,12 @@ void TrackerNode::OnTrajectory(const poly_trajectory_t& msg, std::int64_t now_ut
       spdlog::warn("rejected TRAJECTORY {} (#{}): {}", msg.trajectory_id, counts_.trajectories_rejected, why);
     }
   };
-  if ((active_ && msg.trajectory_id <= active_->id) || (pending_ && msg.trajectory_id <= pending_->id)) {
+  const std::int64_t newest = !pending_.empty() ? pending_.back().id : active_ ? active_->id : 0;
+  if (msg.trajectory_id <= newest) {
     ++counts_.trajectories_ignored;
     if (Every(counts_.trajectories_ignored)) {
       spdlog::info("ignored TRAJECTORY {} (#{}): not newer than {} {}", msg.trajectory_id,
-                   counts_.trajectories_ignored, pending_ ? "pending" : "active",
-                   pending_ ? pending_->id : active_->id);
+                   counts_.trajectories_ignored, !pending_.empty() ? "pending" : "active", newest);
     }
     return;
   }
@@ -94,12 +94,16 @@ void TrackerNode::OnTrajectory(const poly_trajectory_t& msg, std::int64_t now_ut
   };
   spdlog::info("TRAJECTORY {} (goal {}) accepted: {:.2f} s, starts in {:.3f} s", loaded.id, loaded.goal_id,
                loaded.reference.duration_s, static_cast<double>(msg.start_utime - now_utime) * 1e-6);
+  // It takes over at its start: a pending one starting then or later would never run; one
+  // starting earlier runs until then (the planner planned this one from where that one leads).
+  while (!pending_.empty() && pending_.back().start_utime >= msg.start_utime) {
+    ++counts_.pending_superseded;
+    pending_.pop_back();
+  }
   if (msg.start_utime <= now_utime) {
-    pending_.reset();
     Activate(std::move(loaded));
   } else {
-    if (pending_) ++counts_.pending_superseded;
-    pending_ = std::move(loaded);
+    pending_.push_back(std::move(loaded));
   }
 }
 
@@ -140,10 +144,10 @@ void TrackerNode::OnGripper(const gripper_command_t& msg) {
 
 const TrackerCycle& TrackerNode::Step(std::int64_t now_utime) {
   ++counts_.cycles;
-  if (pending_ && pending_->start_utime <= now_utime) {
-    Loaded next = std::move(*pending_);
-    pending_.reset();
-    Activate(std::move(next));
+  // Pending ones start in order; of those whose start has come the last is the one to follow.
+  while (!pending_.empty() && pending_.front().start_utime <= now_utime) {
+    Activate(std::move(pending_.front()));
+    pending_.pop_front();
   }
   TrackerInput input;
   input.now_s = Seconds(now_utime);

@@ -6,12 +6,17 @@
 //
 // Trajectories: a TRAJECTORY is rebuilt into the core trajectory (msgs::ToArcYaw, exact MINCO
 // check); one whose start_utime is in the future waits (pending) and becomes active at its
-// start, the current one being followed until then; a newer id replaces a pending one; an id
-// older than or equal to the active's (or the pending's) is ignored. Bad ones are counted and
+// start, the current one being followed until then. A new one replaces the pending ones that
+// start at or after its own start (they would never run) and keeps those that start before it:
+// they run from their start until its own, as the planner assumes (it plans a replan from the
+// trajectory the robot will be on at the replan's start; dropping such a one left the robot
+// stopped where the next trajectory expected it moving, 0.3 m behind). An id older than or
+// equal to the active's (or the newest pending one's) is ignored. Bad ones are counted and
 // logged, never followed. Safe behaviour (no trajectory, an ended one, a robot state older than
 // nmpc.stale_state_s or none) is NmpcTracker's: decelerate to a stop within the limits.
 
 #include <cstdint>
+#include <deque>
 #include <memory>
 #include <optional>
 #include <string>
@@ -38,8 +43,8 @@ namespace topay::tracker {
 struct TrackerCounts {
   std::int64_t trajectories = 0;          ///< TRAJECTORY messages handled
   std::int64_t trajectories_rejected = 0; ///< malformed, wrong joint count or not MINCO
-  std::int64_t trajectories_ignored = 0;  ///< id not newer than the active or the pending one
-  std::int64_t pending_superseded = 0;    ///< a pending trajectory replaced by a newer one
+  std::int64_t trajectories_ignored = 0;  ///< id not newer than the active or the newest pending one
+  std::int64_t pending_superseded = 0;    ///< pending ones dropped: a newer one starts first
   std::int64_t switches = 0;              ///< trajectories that became active
   std::int64_t states = 0, states_rejected = 0;
   std::int64_t grippers = 0, grippers_rejected = 0;
@@ -68,9 +73,9 @@ class TrackerNode {
 
   const TrackerCounts& counts() const { return counts_; }
   const NmpcTracker& tracker() const { return tracker_; }
-  /// The active trajectory's id (0: none) and the pending one's (0: none).
+  /// The active trajectory's id (0: none) and the next pending one's (0: none).
   std::int64_t active_id() const { return active_ ? active_->id : 0; }
-  std::int64_t pending_id() const { return pending_ ? pending_->id : 0; }
+  std::int64_t pending_id() const { return pending_.empty() ? 0 : pending_.front().id; }
   /// heartbeat_t::WARN while stopping on a stale or missing robot state with a trajectory,
   /// else OK; and the heartbeat's status line (mode, ids, solves, fallbacks, rejected messages).
   std::int8_t Health() const;
@@ -94,7 +99,8 @@ class TrackerNode {
   int num_joints_;
   NmpcTracker tracker_;
   std::optional<std::int64_t> origin_utime_;  // utime of the core's t = 0 s (first one seen)
-  std::optional<Loaded> active_, pending_;
+  std::optional<Loaded> active_;
+  std::deque<Loaded> pending_;  // by start time, all in the future
   std::optional<msgs::RobotStateEstimate> state_;
   std::optional<double> gripper_;       // the latest GRIPPER_COMMAND target
   double measured_gripper_ = 0.0;       // the robot's, until a GRIPPER_COMMAND comes

@@ -107,6 +107,42 @@ TEST(TrackerNode, IgnoresIdsNotNewerAndNewerPendingSupersedes) {
   EXPECT_EQ(node.counts().trajectories_rejected, 0);
 }
 
+// The demo's sequence: a stop (5) running, a replan (6) pending from +600 ms, then the next
+// replan (7), planned from where 6 leads at +1000 ms, arrives before 6 starts. 6 must still run
+// from +600 ms to +1000 ms, then 7; a later arrival starting before both replaces both.
+TEST(TrackerNode, PendingTrajectoriesThatStartEarlierRunInTurn) {
+  TrackerNode node(Options(), MakeTrackerLimits(Robot()));
+  node.OnTrajectory(Trajectory(5, kT0), kT0);
+  node.OnTrajectory(Trajectory(6, kT0 + 600'000), kT0 + 10'000);
+  node.OnTrajectory(Trajectory(7, kT0 + 1'000'000), kT0 + 300'000);
+  EXPECT_EQ(node.pending_id(), 6);
+  EXPECT_EQ(node.counts().pending_superseded, 0);
+  std::vector<std::int64_t> followed;
+  for (std::int64_t now = kT0; now <= kT0 + 1'200'000; now += kCycle) {
+    node.OnRobotState(StateMessage(Start(), now));
+    const std::int64_t id = node.Step(now).status.trajectory_id;
+    if (followed.empty() || followed.back() != id) followed.push_back(id);
+    const std::int64_t expected = now < kT0 + 600'000 ? 5 : now < kT0 + 1'000'000 ? 6 : 7;
+    ASSERT_EQ(id, expected) << "at +" << (now - kT0) / 1000 << " ms";
+  }
+  EXPECT_EQ(followed, (std::vector<std::int64_t>{5, 6, 7}));
+  EXPECT_EQ(node.pending_id(), 0);
+  EXPECT_EQ(node.counts().switches, 3);
+
+  // 9 starts before 8 (pending): 8 would never run and is dropped; 10 starts at once and
+  // replaces every pending one.
+  const std::int64_t t = kT0 + 2'000'000;
+  node.OnTrajectory(Trajectory(8, t + 800'000), t);
+  node.OnTrajectory(Trajectory(9, t + 400'000), t);
+  EXPECT_EQ(node.pending_id(), 9);
+  EXPECT_EQ(node.counts().pending_superseded, 1);
+  node.OnTrajectory(Trajectory(10, t + 100'000), t);
+  node.OnTrajectory(Trajectory(11, t + 50'000), t + 60'000);  // its start has passed: at once
+  EXPECT_EQ(node.active_id(), 11);
+  EXPECT_EQ(node.pending_id(), 0);
+  EXPECT_EQ(node.counts().pending_superseded, 3);
+}
+
 TEST(TrackerNode, StaleStateStopsWithinTheAccelerationLimits) {
   const TrackerLimits limits = MakeTrackerLimits(Robot());
   TrackerNode node(Options(), limits);
