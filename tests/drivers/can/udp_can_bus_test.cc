@@ -174,6 +174,27 @@ TEST(UdpCanBusTest, SequenceGapsCountAsLostFrames) {
   EXPECT_EQ(receiver->status().lost_frames, 3u);
 }
 
+TEST(UdpCanBusTest, ReceiveBufferOverflowShowsAsLostFrames) {
+  std::string why;
+  if (!EnterTestNamespace(&why)) GTEST_SKIP() << why;
+  constexpr int kPort = 19008;
+  constexpr int kFrames = 200;
+  CanBusOptions small;
+  small.receive_buffer_bytes = 1;  // the kernel's minimum: a few datagrams
+  std::unique_ptr<CanBus> receiver = OpenNode(kPort, small);
+  std::unique_ptr<CanBus> sender = OpenNode(kPort);
+  ASSERT_TRUE(receiver && sender);
+  for (int i = 0; i < kFrames; ++i) ASSERT_TRUE(sender->Send(CanFrame::Standard(0x10)).ok());
+  const std::size_t kept = Drain(*receiver).size();
+  ASSERT_LT(kept, static_cast<std::size_t>(kFrames));
+  EXPECT_EQ(receiver->status().lost_frames, 0u);  // not known until the sender's next frame
+  ASSERT_TRUE(sender->Send(CanFrame::Standard(0x11)).ok());
+  const std::vector<ReceivedCanFrame> next = Drain(*receiver);
+  ASSERT_EQ(next.size(), 1u);
+  EXPECT_EQ(next[0].frame, CanFrame::Standard(0x11));
+  EXPECT_EQ(receiver->status().lost_frames, kFrames - kept);
+}
+
 TEST(UdpCanBusTest, ErrorFramesDriveTheBusState) {
   std::string why;
   if (!EnterTestNamespace(&why)) GTEST_SKIP() << why;
