@@ -128,8 +128,9 @@ CanResult UdpCanBus::Send(const CanFrame& frame) {
 void UdpCanBus::TrackSequence(std::uint32_t sender, std::uint32_t sequence) {
   const auto [entry, first] = expected_sequence_.try_emplace(sender, sequence);
   if (!first) {
-    // Unsigned difference: wraps correctly; a late (older) datagram would look like a huge gap,
-    // so only gaps below 2^31 count as lost.
+    // Unsigned difference: wraps correctly. An older sequence (a huge gap) is not a loss: the
+    // loopback does not reorder, so it is a sender restarted with a fixed udp_node_id, and the
+    // count starts again from it.
     const std::uint32_t gap = sequence - entry->second;
     if (gap != 0 && gap < 0x80000000u) status_.lost_frames += gap;
   }
