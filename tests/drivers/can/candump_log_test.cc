@@ -3,6 +3,7 @@
 
 #include <gtest/gtest.h>
 
+#include <random>
 #include <sstream>
 #include <stdexcept>
 
@@ -94,6 +95,36 @@ TEST(CandumpLogTest, BadLinesGiveTheLineNumberAndTheProblem) {
             "line 1: interface name 'averyveryverylongname' is longer than 15");
   EXPECT_EQ(ReadError("(-1.000000) can0 123#00\n"),
             "line 1: timestamp '(-1.000000)' must be (SECONDS.MICROSECONDS) with 6 decimals");
+}
+
+TEST(CandumpLogTest, MangledLinesAreRejectedOrParsedNeverCrash) {
+  std::mt19937 random(20);
+  const std::string good = "(1700000000.123456) can0 12345678#DEADBEEF";
+  const std::string alphabet = "0123456789ABCDEFabcdef#R.() \tx-";
+  for (int i = 0; i < 20000; ++i) {
+    std::string line = good;
+    for (int k = 0; k < 1 + i % 4; ++k) {
+      const std::size_t at = random() % (line.size() + 1);
+      const char c = alphabet[random() % alphabet.size()];
+      switch (random() % 3) {
+        case 0: if (at < line.size()) line[at] = c; break;
+        case 1: line.insert(line.begin() + at, c); break;
+        default: if (at < line.size()) line.erase(at, 1); break;
+      }
+    }
+    std::string error;
+    const std::optional<CandumpRecord> record = ParseCandumpLine(line, &error);
+    if (record) {
+      EXPECT_EQ(CheckCanFrame(record->frame), "") << line;
+      // What parses prints back to a line that parses to the same record.
+      const std::optional<CandumpRecord> again = ParseCandumpLine(FormatCandumpLine(*record), &error);
+      ASSERT_TRUE(again) << line << ": " << error;
+      EXPECT_EQ(again->frame, record->frame) << line;
+      EXPECT_EQ(again->timestamp_us, record->timestamp_us) << line;
+    } else {
+      EXPECT_FALSE(error.empty()) << line;
+    }
+  }
 }
 
 }  // namespace

@@ -4,6 +4,8 @@
 #include <gtest/gtest.h>
 
 #include <cstring>
+#include <random>
+#include <vector>
 
 namespace topay::can {
 namespace {
@@ -71,6 +73,31 @@ TEST(UdpCanDatagramTest, EncodingAnInvalidFrameThrows) {
   CanFrame frame = CanFrame::Standard(1);
   frame.dlc = 9;
   EXPECT_THROW(EncodeUdpCanDatagram({1, 1, frame}), std::invalid_argument);
+}
+
+TEST(UdpCanDatagramTest, RandomBytesAreRejectedOrDecodedNeverCrash) {
+  std::mt19937 random(20);
+  const auto good = EncodeUdpCanDatagram({1, 2, CanFrame::Extended(0x100, {1, 2, 3})});
+  int decoded = 0;
+  for (int i = 0; i < 20000; ++i) {
+    // Half: a valid datagram with a few random bytes flipped; half: random sizes and bytes.
+    std::vector<std::uint8_t> bytes(good.begin(), good.end());
+    if (i % 2 == 0) {
+      for (int k = 0; k < 3; ++k) bytes[random() % bytes.size()] = static_cast<std::uint8_t>(random());
+    } else {
+      bytes.resize(random() % 64);
+      for (std::uint8_t& byte : bytes) byte = static_cast<std::uint8_t>(random());
+    }
+    std::string error;
+    const std::optional<UdpCanDatagram> datagram = DecodeUdpCanDatagram(bytes.data(), bytes.size(), &error);
+    if (datagram) {
+      ++decoded;
+      EXPECT_EQ(CheckCanFrame(datagram->frame), "");
+    } else {
+      EXPECT_FALSE(error.empty());
+    }
+  }
+  EXPECT_GT(decoded, 0);
 }
 
 }  // namespace
