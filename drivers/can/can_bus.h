@@ -81,7 +81,9 @@ class CanBus {
   /// with CanBusOptions::deliver_error_frames. Returns kTimeout when none came.
   virtual CanResult Receive(double timeout_s, ReceivedCanFrame* received) = 0;
 
-  /// State and counters.
+  /// State and counters. Error frames are read by Receive(): a node that only sends must still
+  /// call Receive() (e.g. with timeout 0 each cycle) for the state to follow the bus, and for a
+  /// bus-off's restart to be seen (Send() refuses while the state is bus-off).
   virtual const CanBusStatus& status() const = 0;
 
   /// Closes and opens the socket again with the same URL and options (recovery after the
