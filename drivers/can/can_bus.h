@@ -87,8 +87,9 @@ class CanBus {
   virtual const CanBusStatus& status() const = 0;
 
   /// Closes and opens the socket again with the same URL and options (recovery after the
-  /// interface went down or away). On failure the bus is closed (Send/Receive give kClosed)
-  /// and the result says why; call again later.
+  /// interface went down or away). The state starts error-active again (counters are kept).
+  /// On failure the bus is closed (Send/Receive give kClosed) and the result says why; call
+  /// again later.
   virtual CanResult Reopen() = 0;
 
   /// The socket's file descriptor, readable when a frame may be waiting (for poll/epoll in a

@@ -107,6 +107,11 @@ CanResult UdpCanBus::Send(const CanFrame& frame) {
   if (fd_ < 0) return Failure(CanResult::Code::kClosed, url() + ": not open (Reopen() failed)");
   const std::string problem = CheckCanFrame(frame);
   if (!problem.empty()) return Failure(CanResult::Code::kInvalidFrame, "invalid frame: " + problem);
+  // Like a controller, a node whose bus is off does not transmit; error frames (a simulator's
+  // way to drive the bus state, including its restart) always go out.
+  if (status_.state == CanBusState::kBusOff && !frame.error) {
+    return Failure(CanResult::Code::kBusOff, url() + ": bus-off, waiting for a restart (CAN_ERR_RESTARTED)");
+  }
   const auto bytes = EncodeUdpCanDatagram({node_id_, next_sequence_, frame});
   const sockaddr_in group = GroupAddress(url_);
   const ssize_t sent = sendto(fd_, bytes.data(), bytes.size(), MSG_DONTWAIT,
@@ -178,6 +183,7 @@ CanResult UdpCanBus::Reopen() {
   std::string why;
   if (!OpenSocket(&why)) return Failure(CanResult::Code::kClosed, url() + ": reopen failed: " + why);
   ++status_.reopen_count;
+  status_.state = CanBusState::kErrorActive;  // a fresh node, as SocketCanBus::Reopen()
   return CanResult::Ok();
 }
 

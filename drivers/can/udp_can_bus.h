@@ -20,7 +20,8 @@ namespace topay::can {
 ///  - a node does not receive its own frames unless CanBusOptions::receive_own_frames;
 ///  - the same id/mask filters as SocketCAN, applied in user space;
 ///  - error frames may be sent (a simulator's way to put the bus into bus-off or error-passive)
-///    and update every receiver's status() like a controller's error frames;
+///    and update every receiver's status() like a controller's error frames; while a node's
+///    state is bus-off its Send() refuses data and remote frames (kBusOff), as SocketCAN's;
 ///  - malformed datagrams (wrong size or magic, bad DLC or id) are counted
 ///    (status().malformed) and dropped.
 /// The socket: SO_REUSEADDR, bound to GROUP:PORT, group joined on the default interface,

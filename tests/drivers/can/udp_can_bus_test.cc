@@ -218,9 +218,14 @@ TEST(UdpCanBusTest, ErrorFramesDriveTheBusState) {
   EXPECT_TRUE(recorded[1].frame.error);
   EXPECT_EQ(recorder->status().state, CanBusState::kBusOff);
 
+  const CanResult refused = node->Send(CanFrame::Standard(0x1));
+  EXPECT_EQ(refused.code, CanResult::Code::kBusOff);  // a bus-off node does not transmit
+  EXPECT_EQ(refused.message, Url(kPort) + ": bus-off, waiting for a restart (CAN_ERR_RESTARTED)");
+
   ASSERT_TRUE(simulator->Send(MakeCanErrorFrame(CAN_ERR_RESTARTED)).ok());
   Drain(*node);
   EXPECT_EQ(node->status().state, CanBusState::kErrorActive);
+  EXPECT_TRUE(node->Send(CanFrame::Standard(0x1)).ok());
 }
 
 TEST(UdpCanBusTest, KernelTimestampsTimeoutsAndReopen) {
