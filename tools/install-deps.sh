@@ -7,7 +7,7 @@ packages=(
   build-essential cmake ninja-build pkg-config ccache
   libeigen3-dev
   liblcm-dev liblcm-bin liblcm-java libglib2.0-dev default-jdk-headless
-  iproute2 util-linux python3
+  iproute2 util-linux python3 can-utils
   liburdfdom-dev libyaml-cpp-dev nlohmann-json3-dev
   libcli11-dev libspdlog-dev libcairo2-dev libtbb-dev libceres-dev
   googletest libgtest-dev libbenchmark-dev

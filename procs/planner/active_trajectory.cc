@@ -18,6 +18,15 @@ TrajectorySample ActiveTrajectory::SampleAt(std::int64_t utime) const {
   return sample;
 }
 
+const ActiveTrajectory* TrajectoryOnAt(const ActiveTrajectory* newest, const std::deque<ActiveTrajectory>& replaced,
+                                       std::int64_t utime) {
+  if (newest != nullptr && newest->start_utime <= utime) return newest;
+  for (auto it = replaced.rbegin(); it != replaced.rend(); ++it) {
+    if (it->start_utime <= utime) return &*it;
+  }
+  return nullptr;
+}
+
 Drift MeasureDrift(const ActiveTrajectory& active, const msgs::RobotStateEstimate& robot) {
   const TrajectorySample ref = active.SampleAt(robot.utime);
   Drift drift;

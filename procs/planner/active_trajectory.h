@@ -4,6 +4,7 @@
 // the region its rest sweeps (what the map check looks at).
 
 #include <cstdint>
+#include <deque>
 #include <memory>
 
 #include <Eigen/Geometry>
@@ -29,6 +30,15 @@ struct ActiveTrajectory {
   /// its end the end, at rest).
   TrajectorySample SampleAt(std::int64_t utime) const;
 };
+
+/// The trajectory the robot is on at `utime` (null: none yet): the newest published one whose
+/// start has come, `newest` first (null: none), then `replaced` from its back (published
+/// earlier, oldest first). The tracker follows them the same way (a newer trajectory takes
+/// over at its start; one not started yet leaves the robot on the one before). A replan starts
+/// on it at its t0, and a safe stop brakes from it: the newest may still be waiting for its
+/// start.
+const ActiveTrajectory* TrajectoryOnAt(const ActiveTrajectory* newest, const std::deque<ActiveTrajectory>& replaced,
+                                       std::int64_t utime);
 
 /// How far the robot is from where the trajectory says it should be at the state's time.
 struct Drift {

@@ -235,11 +235,13 @@ bool PlannerNode::FillStart(PlanTrigger trigger, std::int64_t now, PlanJob* job,
   // rest, if it ends before t0). Not the measured state extrapolated with its rates: a robot
   // braking on a stopping trajectory that ended within the budget was extrapolated 1 s at its
   // yaw rate, the new trajectory began 0.47 rad off, and drift replans compounded it into a box.
-  if (trigger != PlanTrigger::kDrift && active_ && !active_->EndedBy(now)) {
-    job->start = active_->SampleAt(t0);  // where the robot will be at t0 on the trajectory
-    if (!AtRest(job->start, t.rest_speed) || active_->TimeAt(t0) > 0.0) {
+  // The trajectory it will be on at t0 (OnAt: the newest one started by then).
+  const ActiveTrajectory* on = active_ ? OnAt(t0) : nullptr;
+  if (trigger != PlanTrigger::kDrift && on != nullptr && !active_->EndedBy(now)) {
+    job->start = on->SampleAt(t0);  // where the robot will be at t0 on the trajectory
+    if (!AtRest(job->start, t.rest_speed) || on->TimeAt(t0) > 0.0) {
       job->from_rest = false;
-      job->on_trajectory_id = active_->trajectory_id;
+      job->on_trajectory_id = on->trajectory_id;
       job->t0_utime = t0;
       job->time_limit_s = t.replan_budget_s - t.publish_margin_s;
       return true;
@@ -521,11 +523,7 @@ void PlannerNode::MakeActive(ActiveTrajectory trajectory) {
 }
 
 const ActiveTrajectory* PlannerNode::OnAt(std::int64_t utime) const {
-  if (active_ && active_->start_utime <= utime) return &*active_;
-  for (auto it = replaced_.rbegin(); it != replaced_.rend(); ++it) {
-    if (it->start_utime <= utime) return &*it;
-  }
-  return nullptr;
+  return TrajectoryOnAt(active_ ? &*active_ : nullptr, replaced_, utime);
 }
 
 double PlannerNode::CollisionDistance(std::int64_t now) const {
@@ -553,9 +551,12 @@ void PlannerNode::MaybeSafeStop(std::int64_t now) {
     return;
   }
   const std::int64_t begin = now + Micros(options_.stop.latency_s);
+  // Brake from the trajectory the robot is on when the stop begins: the newest one may not have
+  // started yet (a replan waits for its t0), and braking from its start put the stop 0.7 s of
+  // travel away from the robot (0.7 m of drift in the demo).
+  const ActiveTrajectory& on = OnAt(begin) != nullptr ? *OnAt(begin) : *active_;
   std::string why;
-  std::optional<ArcYawTrajectory> stop =
-      stop_planner_.Make(*active_->trajectory, active_->TimeAt(begin), &why);
+  std::optional<ArcYawTrajectory> stop = stop_planner_.Make(*on.trajectory, on.TimeAt(begin), &why);
   last_stop_duration_s_ = stop ? stop->duration_s() : 0.0;
   last_stop_made_utime_ = now;
   if (!grace_over && until_collision_s > *last_stop_duration_s_ + lead_s) return;

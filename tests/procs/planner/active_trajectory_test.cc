@@ -37,6 +37,30 @@ TEST(ActiveTrajectoryTest, SamplesAreClampedToTheTrajectory) {
   EXPECT_NEAR(after.state.q_rad(1), 0.4, 1e-9);
 }
 
+// The demo's case: a replan (7) published to start at 2.0 s while a stop (6, from 1.0 s) runs:
+// until 2.0 s the robot is on the stop, and a safe stop or replan asked for before then must
+// start from the stop, not from the start of the replan that has not begun.
+TEST(ActiveTrajectoryTest, TheRobotIsOnTheNewestTrajectoryThatHasStarted) {
+  std::deque<ActiveTrajectory> replaced;
+  ActiveTrajectory first = Drive();  // id 3, from 1.0 s
+  ActiveTrajectory stop = Drive();
+  stop.trajectory_id = 6;
+  stop.start_utime = 1'500'000;
+  stop.stopping = true;
+  replaced.push_back(first);
+  replaced.push_back(stop);
+  ActiveTrajectory replan = Drive();
+  replan.trajectory_id = 7;
+  replan.start_utime = 2'000'000;
+  EXPECT_EQ(TrajectoryOnAt(&replan, replaced, 900'000), nullptr);
+  EXPECT_EQ(TrajectoryOnAt(&replan, replaced, 1'000'000)->trajectory_id, 3);
+  EXPECT_EQ(TrajectoryOnAt(&replan, replaced, 1'700'000)->trajectory_id, 6);
+  EXPECT_EQ(TrajectoryOnAt(&replan, replaced, 1'999'999)->trajectory_id, 6);
+  EXPECT_EQ(TrajectoryOnAt(&replan, replaced, 2'000'000)->trajectory_id, 7);
+  EXPECT_EQ(TrajectoryOnAt(nullptr, replaced, 5'000'000)->trajectory_id, 6);
+  EXPECT_EQ(TrajectoryOnAt(nullptr, {}, 5'000'000), nullptr);
+}
+
 TEST(ActiveTrajectoryTest, DriftIsMeasuredAtTheStatesTime) {
   const ActiveTrajectory a = Drive();
   msgs::RobotStateEstimate robot;
