@@ -38,6 +38,20 @@ Drift MeasureDrift(const ActiveTrajectory& active, const msgs::RobotStateEstimat
   return drift;
 }
 
+TrajectorySample PredictDriftedStart(const ActiveTrajectory& active, const msgs::RobotStateEstimate& robot,
+                                     std::int64_t t0_utime) {
+  const TrajectorySample now = active.SampleAt(robot.utime);
+  TrajectorySample start = active.SampleAt(t0_utime);
+  const double turn_rad = WrapAngle(start.state.yaw_rad - now.state.yaw_rad);
+  const Eigen::Vector2d offset_W(robot.state.x_m - now.state.x_m, robot.state.y_m - now.state.y_m);
+  const Eigen::Vector2d moved_W = Eigen::Rotation2Dd(turn_rad) * offset_W;
+  start.state.x_m += moved_W.x();
+  start.state.y_m += moved_W.y();
+  start.state.yaw_rad += WrapAngle(robot.state.yaw_rad - now.state.yaw_rad);
+  if (robot.state.q_rad.size() == start.state.q_rad.size()) start.state.q_rad += robot.state.q_rad - now.state.q_rad;
+  return start;
+}
+
 Eigen::AlignedBox3d SweptRegion(const ArcYawTrajectory& trajectory, double t_from_s, double t_to_s,
                                 double reach_m, double height_m) {
   TrajectorySample point = trajectory.MakePoint();

@@ -48,6 +48,17 @@ struct Drift {
 };
 Drift MeasureDrift(const ActiveTrajectory& active, const msgs::RobotStateEstimate& robot);
 
+/// Where a robot that drifted off `active` will be at t0_utime: the tracker keeps following
+/// the trajectory until a new one starts, so the robot moves as the trajectory does and keeps
+/// its error. The trajectory's state at t0 with the robot's error at its state's time added:
+/// the base offset rotated by the trajectory's turn over [robot.utime, t0], the yaw and joint
+/// offsets as they are; the rates and accelerations the trajectory's at t0 (a replan joins
+/// them). Not the measured state extrapolated at constant rates: that runs straight off a
+/// turning trajectory (1 s at 0.5 rad/s puts it ~0.12 m off the arc), and drift replans that
+/// started there drove the demo's robot into a box. Joint offsets are not clamped to limits.
+TrajectorySample PredictDriftedStart(const ActiveTrajectory& active, const msgs::RobotStateEstimate& robot,
+                                     std::int64_t t0_utime);
+
 /// A world box that holds the robot over [t_from_s, t_to_s] of the trajectory: the base
 /// positions (every 0.05 s) grown by `reach_m` (the robot's extent around its base axis)
 /// plus 0.1 m in x and y, from the floor to `height_m`.

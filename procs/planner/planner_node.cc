@@ -237,7 +237,20 @@ bool PlannerNode::FillStart(PlanTrigger trigger, std::int64_t now, PlanJob* job,
   // yaw rate, the new trajectory began 0.47 rad off, and drift replans compounded it into a box.
   // The trajectory it will be on at t0 (OnAt: the newest one started by then).
   const ActiveTrajectory* on = active_ ? OnAt(t0) : nullptr;
-  if (trigger != PlanTrigger::kDrift && on != nullptr && !active_->EndedBy(now)) {
+  const bool running = on != nullptr && !active_->EndedBy(now);
+  // A drift replan while the robot follows the trajectory it drifted from until t0: where that
+  // trajectory will be, with the robot's error carried along (a newer one starting before t0:
+  // planned on that one, as any replan; the drift check looks again once it runs).
+  const ActiveTrajectory* drifted_from = trigger == PlanTrigger::kDrift && robot_ ? OnAt(robot_->utime) : nullptr;
+  if (running && drifted_from == on) {
+    job->start = PredictDriftedStart(*on, *robot_, t0);
+    job->from_rest = false;
+    job->on_trajectory_id = on->trajectory_id;
+    job->t0_utime = t0;
+    job->time_limit_s = t.replan_budget_s - t.publish_margin_s;
+    return true;
+  }
+  if (running) {
     job->start = on->SampleAt(t0);  // where the robot will be at t0 on the trajectory
     if (!AtRest(job->start, t.rest_speed) || on->TimeAt(t0) > 0.0) {
       job->from_rest = false;
@@ -253,8 +266,8 @@ bool PlannerNode::FillStart(PlanTrigger trigger, std::int64_t now, PlanJob* job,
   }
   job->start = StartFromEstimate(*robot_);
   if (!AtRest(job->start, t.rest_speed)) {
-    // Moving off any trajectory of ours (drift, a restart): start at the measured state
-    // extrapolated to t0 with its measured rates.
+    // Moving off any trajectory of ours (a restart, one that ended): start at the measured
+    // state extrapolated to t0 with its measured rates.
     job->from_rest = false;
     job->t0_utime = t0;
     job->time_limit_s = t.replan_budget_s - t.publish_margin_s;

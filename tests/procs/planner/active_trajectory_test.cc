@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include <numbers>
+
 namespace topay::planner {
 namespace {
 
@@ -74,6 +76,54 @@ TEST(ActiveTrajectoryTest, DriftIsMeasuredAtTheStatesTime) {
   EXPECT_NEAR(d.position_m, 0.3, 1e-9);
   EXPECT_NEAR(d.yaw_rad, 0.1, 1e-9);
   EXPECT_NEAR(d.joint_rad, 0.2, 1e-9);
+}
+
+// A robot 0.2 m left of the straight trajectory and 0.1 rad / 0.05 rad (joint 1) off keeps that
+// error: it is where the trajectory will be at t0, plus the error, with the trajectory's rates.
+TEST(ActiveTrajectoryTest, ADriftedStartIsTheTrajectoryAtT0WithTheRobotsError) {
+  const ActiveTrajectory a = Drive();
+  msgs::RobotStateEstimate robot;
+  robot.utime = 3'000'000;
+  const TrajectorySample now = a.SampleAt(robot.utime);
+  robot.state = now.state;
+  robot.state.y_m += 0.2;
+  robot.state.yaw_rad += 0.1;
+  robot.state.q_rad(1) += 0.05;
+  robot.v_mps = 3.0;  // measured rates play no part (a constant-rate extrapolation would)
+  const std::int64_t t0 = 4'000'000;
+  const TrajectorySample at_t0 = a.SampleAt(t0);
+  const TrajectorySample start = PredictDriftedStart(a, robot, t0);
+  EXPECT_NEAR(start.state.x_m, at_t0.state.x_m, 1e-9);
+  EXPECT_NEAR(start.state.y_m, at_t0.state.y_m + 0.2, 1e-9);
+  EXPECT_NEAR(start.state.yaw_rad, at_t0.state.yaw_rad + 0.1, 1e-9);
+  EXPECT_NEAR(start.state.q_rad(0), at_t0.state.q_rad(0), 1e-9);
+  EXPECT_NEAR(start.state.q_rad(1), at_t0.state.q_rad(1) + 0.05, 1e-9);
+  EXPECT_NEAR(start.v_mps, at_t0.v_mps, 1e-12);
+  EXPECT_NEAR(start.a_mps2, at_t0.a_mps2, 1e-12);
+  EXPECT_NEAR(start.qd_radps(1), at_t0.qd_radps(1), 1e-12);
+}
+
+// On a turning trajectory the base offset turns with it: a robot 0.1 m outside a quarter turn
+// in place is 0.1 m outside it a quarter turn later, in the rotated direction.
+TEST(ActiveTrajectoryTest, ADriftedStartTurnsItsOffsetWithTheTrajectory) {
+  auto t = std::make_shared<ArcYawTrajectory>(2, 2, ArcYawTrajectory::Options{});
+  Eigen::MatrixXd head = Eigen::MatrixXd::Zero(4, 3), tail = Eigen::MatrixXd::Zero(4, 3);
+  tail(1, 0) = std::numbers::pi / 2;  // yaw 0 -> pi/2 in place
+  Eigen::MatrixXd waypoints(4, 1);
+  waypoints << 0.0, std::numbers::pi / 4, 0.0, 0.0;
+  t->Update({0.0, 0.0}, head, tail, waypoints, Eigen::VectorXd::Constant(2, 2.0));
+  ActiveTrajectory a;
+  a.trajectory_id = 1;
+  a.start_utime = 0;
+  a.trajectory = t;
+  msgs::RobotStateEstimate robot;
+  robot.utime = 0;
+  robot.state = a.SampleAt(0).state;
+  robot.state.x_m += 0.1;  // 0.1 m ahead along the initial heading
+  const TrajectorySample start = PredictDriftedStart(a, robot, 4'000'000);  // the end: yaw pi/2
+  EXPECT_NEAR(start.state.yaw_rad, std::numbers::pi / 2, 1e-6);
+  EXPECT_NEAR(start.state.x_m, 0.0, 1e-6);
+  EXPECT_NEAR(start.state.y_m, 0.1, 1e-6);
 }
 
 TEST(ActiveTrajectoryTest, SweptRegionHoldsTheBaseGrownByTheReach) {
