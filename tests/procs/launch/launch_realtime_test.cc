@@ -25,7 +25,9 @@ TEST(LaunchRealtime, SettingsAppliedOrWarned) {
   const int pid = watcher.last["rt-model"].pid;
   const bool fifo = sched_getscheduler(pid) == SCHED_FIFO;
   // SCHED_FIFO ignores nice; check it only under SCHED_OTHER.
-  if (!fifo) EXPECT_EQ(getpriority(PRIO_PROCESS, pid), 7);
+  if (!fifo) {
+    EXPECT_EQ(getpriority(PRIO_PROCESS, pid), 7);
+  }
   cpu_set_t set;
   CPU_ZERO(&set);
   ASSERT_EQ(sched_getaffinity(pid, sizeof(set), &set), 0);
