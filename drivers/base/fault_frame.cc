@@ -1,5 +1,7 @@
 #include "drivers/base/fault_frame.h"
 
+#include <cstdio>
+
 #include "drivers/base/frame_bytes.h"
 
 namespace topay::base {
@@ -12,7 +14,9 @@ std::string CheckFaultFields(std::uint8_t code, std::uint8_t mode, std::uint16_t
   if (code < 1 || code > kMaxFaultCode) return "unknown fault code " + std::to_string(code);
   if (mode > kMaxBaseModeCode) return "unknown mode " + std::to_string(mode);
   if ((bits & ~kDefinedFaultBits) != 0) {
-    return "undefined fault bits in " + std::to_string(bits);
+    char text[48];
+    std::snprintf(text, sizeof(text), "undefined fault bits in 0x%04X", static_cast<unsigned>(bits));
+    return text;
   }
   if ((bits & FaultBit(static_cast<BaseFault>(code))) == 0) {
     return std::string("fault word lacks the bit of the raised fault (") + FaultCodeName(code) +
