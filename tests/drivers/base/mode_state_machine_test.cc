@@ -35,7 +35,7 @@ TEST(ModeStateMachineTest, CommandsKeepTheWatchdogFed) {
 
 TEST(ModeStateMachineTest, CommandTimeoutGivesQuickStop) {
   ModeStateMachine machine;
-  ASSERT_EQ(machine.Request(ModeRequest::kCanCommand, 0.0), "");
+  ASSERT_EQ(machine.Request(ModeRequest::kCanCommand, 0.45), "");
   ASSERT_EQ(machine.AcceptVelocityCommand(0.5), "");
   EXPECT_FALSE(machine.Step(0.6));  // exactly 100 ms: still fine
   EXPECT_EQ(machine.mode(), BaseMode::kCanCommand);
