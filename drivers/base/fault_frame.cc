@@ -15,7 +15,8 @@ std::string CheckFaultFields(std::uint8_t code, std::uint8_t mode, std::uint16_t
   if (mode > kMaxBaseModeCode) return "unknown mode " + std::to_string(mode);
   if ((bits & ~kDefinedFaultBits) != 0) {
     char text[48];
-    std::snprintf(text, sizeof(text), "undefined fault bits in 0x%04X", static_cast<unsigned>(bits));
+    std::snprintf(text, sizeof(text), "undefined fault bits in 0x%04X",
+                  static_cast<unsigned>(bits));
     return text;
   }
   if ((bits & FaultBit(static_cast<BaseFault>(code))) == 0) {

@@ -35,7 +35,8 @@ TEST(ModeRequestFrameTest, RejectsBadRequests) {
   EXPECT_EQ(error, "mode request: node id 128 is outside 1..127");
 
   EXPECT_FALSE(DecodeModeRequest(can::CanFrame::Standard(0x101, {0x01, 0xFF}), 1, &error));
-  EXPECT_EQ(error, "mode request (0x101): byte 1 (255) is not the complement of the request code 1");
+  EXPECT_EQ(error,
+            "mode request (0x101): byte 1 (255) is not the complement of the request code 1");
   EXPECT_FALSE(DecodeModeRequest(can::CanFrame::Standard(0x101, {0x07, 0xF8}), 1, &error));
   EXPECT_EQ(error, "mode request (0x101): unknown request code 7");
   EXPECT_FALSE(DecodeModeRequest(can::CanFrame::Standard(0x101, {0x01}), 1, &error));
