@@ -79,7 +79,7 @@ TEST(Cia402HostTest, ReachesOperationEnabledFromEveryState) {
       previous = step.controlword;
     }
     EXPECT_EQ(model.state(), DriveState::kOperationEnabled);
-    EXPECT_LE(cycles, 7);
+    EXPECT_LE(cycles, 5);  // the longest: Fault with bit 7 already set
   }
 }
 
