@@ -42,6 +42,13 @@ std::optional<Heartbeat> DecodeHeartbeat(const can::CanFrame& frame, std::string
   return Heartbeat{*node_id, static_cast<NmtState>(frame.data[0])};
 }
 
+bool HeartbeatProducer::IsDue(double now_s) const {
+  if (producer_time_s_ <= 0.0) return false;
+  // 1 ns of slack: a caller ticking at exactly the period is not one tick late by rounding.
+  constexpr double kSlack_s = 1e-9;
+  return !last_sent_s_ || now_s - *last_sent_s_ >= producer_time_s_ - kSlack_s;
+}
+
 void HeartbeatConsumer::OnHeartbeat(NmtState state, double time_s) {
   last_state_ = state;
   last_time_s_ = time_s;

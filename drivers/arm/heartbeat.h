@@ -35,6 +35,24 @@ std::optional<can::CanFrame> EncodeHeartbeat(const Heartbeat& heartbeat, std::st
 /// none of 0x00, 0x04, 0x05, 0x7F (the node-guarding toggle bit 7 is not used by heartbeats).
 std::optional<Heartbeat> DecodeHeartbeat(const can::CanFrame& frame, std::string* error);
 
+/// Heartbeat production (CiA 301 §7.2.8.2.2.1, object 0x1017): a heartbeat is due every
+/// producer time; a producer time of 0 disables it. The first one is due at once (after the
+/// boot-up message the caller sends itself). Times are seconds on a monotonic clock.
+class HeartbeatProducer {
+ public:
+  /// `producer_time_s` >= 0 (0 disables production).
+  explicit HeartbeatProducer(double producer_time_s) : producer_time_s_(producer_time_s) {}
+
+  /// True when a heartbeat should be sent at `now_s`.
+  bool IsDue(double now_s) const;
+  /// Records that a heartbeat was sent at `now_s`; the next one is due a period later.
+  void OnSent(double now_s) { last_sent_s_ = now_s; }
+
+ private:
+  double producer_time_s_ = 0.0;
+  std::optional<double> last_sent_s_;
+};
+
 /// Heartbeat consumption for one producer (CiA 301 §7.2.8.2.2.2): the producer is lost when no
 /// heartbeat came within the consumer time since the previous one. Monitoring starts with the
 /// first heartbeat received; a consumer time of 0 disables it (never lost). Times are seconds on

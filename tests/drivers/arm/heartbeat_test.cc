@@ -40,6 +40,18 @@ TEST(HeartbeatTest, MalformedFramesAreRejected) {
   EXPECT_NE(error.find("not a CANopen object"), std::string::npos);
 }
 
+TEST(HeartbeatTest, ProducerIsDueEveryPeriod) {
+  HeartbeatProducer producer(0.1);
+  EXPECT_TRUE(producer.IsDue(5.0));  // the first at once
+  producer.OnSent(5.0);
+  EXPECT_FALSE(producer.IsDue(5.05));
+  EXPECT_TRUE(producer.IsDue(5.1));
+  producer.OnSent(5.1);
+  EXPECT_FALSE(producer.IsDue(5.15));
+  HeartbeatProducer disabled(0.0);
+  EXPECT_FALSE(disabled.IsDue(0.0));
+}
+
 TEST(HeartbeatTest, ConsumerDetectsALostProducer) {
   HeartbeatConsumer consumer(0.3);
   EXPECT_FALSE(consumer.IsLost(10.0));  // not started before the first heartbeat
