@@ -2,7 +2,7 @@
 
 #include <cmath>
 
-#include "drivers/arm/byte_order.h"
+#include "drivers/can/little_endian.h"
 #include "drivers/arm/canopen_ids.h"
 #include "drivers/arm/cia402_state.h"
 
@@ -47,11 +47,11 @@ std::optional<can::CanFrame> MakePdo(CanopenFunction function, int node_id, int 
 }
 
 std::int32_t Int32At(const can::CanFrame& frame, int offset) {
-  return static_cast<std::int32_t>(canopen::GetLittleEndian(frame.data, 4, offset));
+  return static_cast<std::int32_t>(can::GetLittleEndian(frame.data, 4, offset));
 }
 
 std::uint16_t Uint16At(const can::CanFrame& frame, int offset) {
-  return static_cast<std::uint16_t>(canopen::GetLittleEndian(frame.data, 2, offset));
+  return static_cast<std::uint16_t>(can::GetLittleEndian(frame.data, 2, offset));
 }
 
 }  // namespace
@@ -64,8 +64,8 @@ std::optional<can::CanFrame> EncodeRpdo1(const Rpdo1& pdo, const JointUnits& uni
   if (!velocity) return std::nullopt;
   auto frame = MakePdo(CanopenFunction::kRpdo1, pdo.node_id, 6, error);
   if (!frame) return std::nullopt;
-  canopen::PutLittleEndian(pdo.controlword, 2, 0, &frame->data);
-  canopen::PutLittleEndian(static_cast<std::uint32_t>(*velocity), 4, 2, &frame->data);
+  can::PutLittleEndian(pdo.controlword, 2, 0, &frame->data);
+  can::PutLittleEndian(static_cast<std::uint32_t>(*velocity), 4, 2, &frame->data);
   return frame;
 }
 
@@ -76,7 +76,7 @@ std::optional<can::CanFrame> EncodeRpdo2(const Rpdo2& pdo, const JointUnits& uni
   if (!position) return std::nullopt;
   auto frame = MakePdo(CanopenFunction::kRpdo2, pdo.node_id, 4, error);
   if (!frame) return std::nullopt;
-  canopen::PutLittleEndian(static_cast<std::uint32_t>(*position), 4, 0, &frame->data);
+  can::PutLittleEndian(static_cast<std::uint32_t>(*position), 4, 0, &frame->data);
   return frame;
 }
 
@@ -87,8 +87,8 @@ std::optional<can::CanFrame> EncodeTpdo1(const Tpdo1& pdo, const JointUnits& uni
   if (!position) return std::nullopt;
   auto frame = MakePdo(CanopenFunction::kTpdo1, pdo.node_id, 6, error);
   if (!frame) return std::nullopt;
-  canopen::PutLittleEndian(pdo.statusword, 2, 0, &frame->data);
-  canopen::PutLittleEndian(static_cast<std::uint32_t>(*position), 4, 2, &frame->data);
+  can::PutLittleEndian(pdo.statusword, 2, 0, &frame->data);
+  can::PutLittleEndian(static_cast<std::uint32_t>(*position), 4, 2, &frame->data);
   return frame;
 }
 
@@ -100,7 +100,7 @@ std::optional<can::CanFrame> EncodeTpdo2(const Tpdo2& pdo, const JointUnits& uni
   if (!velocity) return std::nullopt;
   auto frame = MakePdo(CanopenFunction::kTpdo2, pdo.node_id, 4, error);
   if (!frame) return std::nullopt;
-  canopen::PutLittleEndian(static_cast<std::uint32_t>(*velocity), 4, 0, &frame->data);
+  can::PutLittleEndian(static_cast<std::uint32_t>(*velocity), 4, 0, &frame->data);
   return frame;
 }
 

@@ -1,6 +1,6 @@
 #include "drivers/arm/emcy.h"
 
-#include "drivers/arm/byte_order.h"
+#include "drivers/can/little_endian.h"
 #include "drivers/arm/canopen_ids.h"
 
 namespace topay::canopen {
@@ -10,7 +10,7 @@ std::optional<can::CanFrame> EncodeEmcy(const Emcy& emcy, std::string* error) {
   if (!id) return std::nullopt;
   can::CanFrame frame = can::CanFrame::Standard(*id);
   frame.dlc = 8;
-  PutLittleEndian(emcy.error_code, 2, 0, &frame.data);
+  can::PutLittleEndian(emcy.error_code, 2, 0, &frame.data);
   frame.data[2] = emcy.error_register;
   for (int i = 0; i < 5; ++i) frame.data[3 + i] = emcy.manufacturer_data[i];
   return frame;
@@ -21,7 +21,7 @@ std::optional<Emcy> DecodeEmcy(const can::CanFrame& frame, std::string* error) {
   if (!node_id) return std::nullopt;
   Emcy emcy;
   emcy.node_id = *node_id;
-  emcy.error_code = static_cast<std::uint16_t>(GetLittleEndian(frame.data, 2, 0));
+  emcy.error_code = static_cast<std::uint16_t>(can::GetLittleEndian(frame.data, 2, 0));
   emcy.error_register = frame.data[2];
   for (int i = 0; i < 5; ++i) emcy.manufacturer_data[i] = frame.data[3 + i];
   return emcy;

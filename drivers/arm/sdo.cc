@@ -2,7 +2,7 @@
 
 #include <cstdio>
 
-#include "drivers/arm/byte_order.h"
+#include "drivers/can/little_endian.h"
 #include "drivers/arm/canopen_ids.h"
 
 namespace topay::canopen {
@@ -41,14 +41,14 @@ std::optional<can::CanFrame> MakeSdoFrame(CanopenFunction function, int node_id,
   can::CanFrame frame = can::CanFrame::Standard(*id);
   frame.dlc = 8;
   frame.data[0] = specifier;
-  PutLittleEndian(address.index, 2, 1, &frame.data);
+  can::PutLittleEndian(address.index, 2, 1, &frame.data);
   frame.data[3] = address.subindex;
-  PutLittleEndian(value, size_bytes, 4, &frame.data);
+  can::PutLittleEndian(value, size_bytes, 4, &frame.data);
   return frame;
 }
 
 ObjectAddress AddressOf(const can::CanFrame& frame) {
-  return {static_cast<std::uint16_t>(GetLittleEndian(frame.data, 2, 1)), frame.data[3]};
+  return {static_cast<std::uint16_t>(can::GetLittleEndian(frame.data, 2, 1)), frame.data[3]};
 }
 
 std::string SpecifierProblem(std::uint8_t byte0, std::string_view expected) {
@@ -88,7 +88,7 @@ std::optional<std::pair<int, std::uint32_t>> DecodeExpeditedData(const can::CanF
                                   SpecifierProblem(byte0, expected) +
                                       " (segmented transfers are not supported)"));
   }
-  return std::make_pair(*size, Masked(GetLittleEndian(frame.data, 4, 4), *size));
+  return std::make_pair(*size, Masked(can::GetLittleEndian(frame.data, 4, 4), *size));
 }
 
 }  // namespace
@@ -210,7 +210,7 @@ std::optional<SdoAbort> DecodeSdoAbort(const can::CanFrame& frame, SdoChannel ch
     return Fail(error,
                 FrameError(what, frame, SpecifierProblem(frame.data[0], "an abort (0x80)")));
   }
-  return SdoAbort{*node_id, AddressOf(frame), GetLittleEndian(frame.data, 4, 4)};
+  return SdoAbort{*node_id, AddressOf(frame), can::GetLittleEndian(frame.data, 4, 4)};
 }
 
 std::optional<SdoServerReply> DecodeSdoServerReply(const can::CanFrame& frame,

@@ -1,13 +1,14 @@
 #include "drivers/base/frame_bytes.h"
 
+#include "drivers/can/little_endian.h"
+
 #include <cmath>
 #include <cstdio>
 
 namespace topay::base {
 
 void PutUint16Le(can::CanFrame& frame, int offset, std::uint16_t value) {
-  frame.data[offset] = static_cast<std::uint8_t>(value & 0xFF);
-  frame.data[offset + 1] = static_cast<std::uint8_t>(value >> 8);
+  can::PutLittleEndian(value, 2, offset, &frame.data);
 }
 
 void PutInt16Le(can::CanFrame& frame, int offset, std::int16_t value) {
@@ -15,11 +16,11 @@ void PutInt16Le(can::CanFrame& frame, int offset, std::int16_t value) {
 }
 
 void PutUint24Le(can::CanFrame& frame, int offset, std::uint32_t value) {
-  for (int i = 0; i < 3; ++i) frame.data[offset + i] = static_cast<std::uint8_t>(value >> (8 * i));
+  can::PutLittleEndian(value, 3, offset, &frame.data);
 }
 
 std::uint16_t GetUint16Le(const can::CanFrame& frame, int offset) {
-  return static_cast<std::uint16_t>(frame.data[offset] | (frame.data[offset + 1] << 8));
+  return static_cast<std::uint16_t>(can::GetLittleEndian(frame.data, 2, offset));
 }
 
 std::int16_t GetInt16Le(const can::CanFrame& frame, int offset) {
@@ -27,9 +28,7 @@ std::int16_t GetInt16Le(const can::CanFrame& frame, int offset) {
 }
 
 std::uint32_t GetUint24Le(const can::CanFrame& frame, int offset) {
-  return static_cast<std::uint32_t>(frame.data[offset]) |
-         (static_cast<std::uint32_t>(frame.data[offset + 1]) << 8) |
-         (static_cast<std::uint32_t>(frame.data[offset + 2]) << 16);
+  return can::GetLittleEndian(frame.data, 3, offset);
 }
 
 std::uint8_t ComputeChecksum(const can::CanFrame& frame) {

@@ -1,11 +1,11 @@
 #pragma once
-// Little-endian packing of CANopen data (CiA 301 §7.1.2: numbers are transferred least
-// significant byte first).
+// Little-endian packing of CAN frame data, shared by the protocols on the bus: CANopen (CiA 301
+// §7.1.2: numbers are transferred least significant byte first) and the base's protocol.
 
 #include <array>
 #include <cstdint>
 
-namespace topay::canopen {
+namespace topay::can {
 
 /// Writes the low `size_bytes` (0..4) bytes of `value` at data[offset], least significant first.
 inline void PutLittleEndian(std::uint32_t value, int size_bytes, int offset,
@@ -25,4 +25,4 @@ inline std::uint32_t GetLittleEndian(const std::array<std::uint8_t, 8>& data, in
   return value;
 }
 
-}  // namespace topay::canopen
+}  // namespace topay::can
