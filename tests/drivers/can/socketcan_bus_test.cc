@@ -10,11 +10,19 @@
 #include <unistd.h>
 
 #include <cerrno>
+#include <chrono>
+#include <cstdio>
 #include <cstring>
+#include <cstdlib>
+#include <fstream>
+#include <string>
+#include <thread>
+#include <vector>
 
 #include <gtest/gtest.h>
 
 #include "drivers/can/can_url.h"
+#include "drivers/can/candump_log.h"
 
 namespace topay::can {
 namespace {
@@ -111,6 +119,39 @@ TEST(SocketCanBusTest, KernelFiltersAndReopen) {
   EXPECT_EQ(received.frame, CanFrame::Standard(0x200, {3}));
   const CanResult error_frame = sender->Send(MakeCanErrorFrame(CAN_ERR_BUSOFF));
   EXPECT_EQ(error_frame.code, CanResult::Code::kInvalidFrame);
+}
+
+// can-utils on the same vcan0: candump -L records what our socket sends (read back with our
+// candump parser), and our socket receives what cansend puts on the bus.
+TEST(SocketCanBusTest, CanUtilsSeeOurFramesAndWeSeeTheirs) {
+  const std::string why = NoVcanReason();
+  if (!why.empty()) GTEST_SKIP() << why;
+  if (std::system("command -v candump >/dev/null && command -v cansend >/dev/null") != 0)
+    GTEST_SKIP() << "can-utils (candump, cansend) not installed: make deps installs it";
+  std::unique_ptr<CanBus> bus = OpenVcan();
+  ASSERT_TRUE(bus);
+  const std::string log = "/tmp/socketcan_bus_test_candump.log";
+  std::remove(log.c_str());
+  std::thread candump([&] { std::system(("timeout 10 candump -L -n 3 vcan0 > " + log).c_str()); });
+  std::this_thread::sleep_for(std::chrono::milliseconds(500));  // candump's socket is bound
+  const std::vector<CanFrame> sent = {CanFrame::Standard(0x181, {1, 2, 3, 4, 5, 6, 7, 8}),
+                                      CanFrame::Extended(0x1ABCDEF0, {0x55}), CanFrame::Standard(0x80)};
+  for (const CanFrame& frame : sent) ASSERT_TRUE(bus->Send(frame).ok());
+  candump.join();
+  std::ifstream in(log);
+  std::vector<CandumpRecord> records;
+  std::string error;
+  ASSERT_TRUE(ReadCandumpLog(in, &records, &error)) << error;
+  ASSERT_EQ(records.size(), sent.size());
+  for (size_t i = 0; i < sent.size(); ++i) {
+    EXPECT_EQ(records[i].interface, "vcan0");
+    EXPECT_EQ(records[i].frame, sent[i]) << i;
+  }
+  ASSERT_EQ(std::system("cansend vcan0 201#0A0B0C0D00000102"), 0);
+  ReceivedCanFrame received;
+  const CanResult result = bus->Receive(2.0, &received);
+  ASSERT_TRUE(result.ok()) << result.message;
+  EXPECT_EQ(received.frame, CanFrame::Standard(0x201, {0x0A, 0x0B, 0x0C, 0x0D, 0, 0, 1, 2}));
 }
 
 }  // namespace
