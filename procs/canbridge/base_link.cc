@@ -80,8 +80,8 @@ can::CanFrame BaseLink::VelocityFrame(double v_mps, double omega_radps) {
   std::string error;
   std::optional<can::CanFrame> frame = base::EncodeVelocityCommand(command, options_.node_id, &error);
   if (!frame) {  // never with clamped commands; zero is always encodable
-    command.v_mps = 0.0;
-    command.omega_radps = 0.0;
+    command.v_m_per_s = 0.0;
+    command.omega_rad_per_s = 0.0;
     frame = base::EncodeVelocityCommand(command, options_.node_id, &error);
   }
   ++velocity_frames_sent_;

@@ -275,7 +275,11 @@ std::string CanbridgeNode::NotReadyText() const {
   }
   for (const DriveLink& drive : drives_) {
     if (drive.phase() == DrivePhase::kFailed) return drive.failure();
+  }
+  for (const DriveLink& drive : drives_) {
     if (drive.phase() != DrivePhase::kOperational) return drive.Label() + " " + ToString(drive.phase());
+  }
+  for (const DriveLink& drive : drives_) {
     if (!drive.enabled()) {
       return drive.Label() + " in " +
              (drive.state() ? std::string(cia402::ToString(*drive.state())) : std::string("unknown state"));

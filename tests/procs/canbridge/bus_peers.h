@@ -221,7 +221,7 @@ class DrivePeer {
   void HandleSync(std::vector<can::CanFrame>* out) {
     if (nmt != canopen::NmtState::kOperational || silent) return;
     velocity_ = model.state() == cia402::DriveState::kOperationEnabled ? target_velocity : 0.0;
-    position_ += velocity_ * 0.005;
+    position_ = std::remainder(position_ + velocity_ * 0.005, 2.0 * M_PI);  // a turning joint, within the PDO's bound
     if (auto f = cia402::EncodeTpdo1({node_, model.statusword(), position_}, units_, nullptr)) out->push_back(*f);
     if (auto f = cia402::EncodeTpdo2({node_, velocity_}, units_, nullptr)) out->push_back(*f);
   }

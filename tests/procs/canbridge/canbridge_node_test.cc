@@ -254,7 +254,7 @@ TEST(CanbridgeNodeTest, LostDriveHeartbeatStopsAndRecovers) {
   ASSERT_TRUE(rig.Running());
   rig.CommandFor(rig.Command(0.0, 0.0, 0.0), 0.5);
   rig.peers.drives[5].silent = true;
-  ASSERT_TRUE(rig.TickUntil([&] { return rig.node.state() == BridgeState::kStopped; }, 0.5));
+  ASSERT_TRUE(rig.CommandUntil(rig.Command(0.0, 0.0, 0.0), [&] { return rig.node.state() == BridgeState::kStopped; }, 0.5));
   EXPECT_NE(rig.node.stop_reason().find("node 6"), std::string::npos) << rig.node.stop_reason();
   rig.CommandFor(rig.Command(0.0, 0.0, 0.0), 0.1);
   EXPECT_EQ(rig.last_status.state, drive_status_t::STOPPED);

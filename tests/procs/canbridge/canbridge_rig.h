@@ -69,6 +69,17 @@ struct Rig {
       Tick();
     }
   }
+  /// Ticks sending `msg` every 4th cycle until pred() or max_s.
+  template <class Pred>
+  bool CommandUntil(const control_command_t& msg, Pred pred, double max_s) {
+    const double end = t + max_s;
+    for (int i = 0; t < end; ++i) {
+      if (i % 4 == 0) node.OnCommand(msg, t);
+      Tick();
+      if (pred()) return true;
+    }
+    return pred();
+  }
   bool Running() { return TickUntil([this] { return node.state() == BridgeState::kRunning; }, 3.0); }
 
   CanbridgeOptions options;

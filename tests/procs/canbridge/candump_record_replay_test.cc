@@ -98,7 +98,9 @@ TEST(CanbridgeRecordReplayTest, RecordedRunReplaysIntoTheSameFeedback) {
   const cia402::JointUnits units;
   for (std::size_t i = 0; i < records.size(); ++i) {
     EXPECT_EQ(records[i].interface, "can0");
-    if (i > 0) EXPECT_GE(records[i].timestamp_us, records[i - 1].timestamp_us);
+    if (i > 0) {
+      EXPECT_GE(records[i].timestamp_us, records[i - 1].timestamp_us);
+    }
     const can::CanFrame& f = records[i].frame;
     syncs += f.id == 0x080;
     rpdos += f.id == 0x201;
