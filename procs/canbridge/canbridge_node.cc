@@ -344,6 +344,9 @@ void CanbridgeNode::UpdateState(double now_s) {
     case BridgeState::kRunning: {
       if (!fault.empty()) return Enter(BridgeState::kFault, now_s, fault);
       if (std::string cause = TransientCause(now_s); !cause.empty()) return Enter(BridgeState::kStopped, now_s, cause);
+      // A device that left its running state by itself (the base's watchdog, a drive's own
+      // quick stop or disable) stops the others too; recovery brings it back.
+      if (std::string left = NotReadyText(); !left.empty()) return Enter(BridgeState::kStopped, now_s, "left running: " + left);
       return;
     }
     case BridgeState::kStopped: {

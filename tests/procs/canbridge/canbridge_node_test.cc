@@ -13,6 +13,7 @@
 #include "drivers/arm/arm_pdo.h"
 #include "drivers/arm/emcy.h"
 #include "drivers/base/protocol_ids.h"
+#include "drivers/base/status_frame.h"
 #include "drivers/base/velocity_command_frame.h"
 #include "drivers/can/can_error.h"
 #include <linux/can/error.h>
@@ -299,6 +300,25 @@ TEST(CanbridgeNodeTest, BusOffStopsAndRecoversAfterRestart) {
   rig.CommandFor(rig.Command(0.0, 0.0, 0.0), 4.0);
   EXPECT_EQ(rig.node.state(), BridgeState::kRunning) << rig.node.stop_reason();
   EXPECT_EQ(rig.last_status.bus_state, "error-active");
+}
+
+TEST(CanbridgeNodeTest, ADeviceLeavingItsRunningStateStopsAll) {
+  Rig rig;
+  ASSERT_TRUE(rig.Running());
+  // The base's own watchdog (e.g. after a stall of the bridge) put it into quick stop.
+  rig.bridge_bus.Inject(*base::EncodeStatus({base::BaseMode::kQuickStop, 0, 0, 48.0, 200}, 16, nullptr));
+  rig.CommandFor(rig.Command(0.0, 0.0, 0.0), 0.01);
+  EXPECT_EQ(rig.node.state(), BridgeState::kStopped);
+  EXPECT_NE(rig.node.stop_reason().find("left running: base in quick stop"), std::string::npos) << rig.node.stop_reason();
+  rig.CommandFor(rig.Command(0.0, 0.0, 0.0), 2.0);
+  EXPECT_EQ(rig.node.state(), BridgeState::kRunning) << rig.node.stop_reason();
+  // A drive disabled by itself (Switch on disabled in a TPDO1).
+  rig.bridge_bus.Inject(*cia402::EncodeTpdo1({4, cia402::EncodeStatusword(DriveState::kSwitchOnDisabled), 0.1}, {}, nullptr));
+  rig.CommandFor(rig.Command(0.0, 0.0, 0.0), 0.01);
+  EXPECT_EQ(rig.node.state(), BridgeState::kStopped);
+  EXPECT_NE(rig.node.stop_reason().find("node 4"), std::string::npos) << rig.node.stop_reason();
+  rig.CommandFor(rig.Command(0.0, 0.0, 0.0), 2.0);
+  EXPECT_EQ(rig.node.state(), BridgeState::kRunning) << rig.node.stop_reason();
 }
 
 TEST(CanbridgeNodeTest, BaseFaultStopsAndResets) {
