@@ -130,6 +130,30 @@ TEST(CanbridgeProcessTest, DrivesPeersOnTheUdpBus) {
   EXPECT_NE(log.find(" can0 080#\n"), std::string::npos);       // SYNC sent
   EXPECT_NE(log.find(" can0 185#"), std::string::npos);          // TPDO1 of node 5 received
   EXPECT_NE(log.find(" can0 605#2F606000"), std::string::npos);  // SDO write 0x6060 to node 5
+
+  // The recorded run replayed (5x): feedback on LCM, nothing sent, exit 0 at the end.
+  int joint_states = 0;
+  lcm.subscribeFunction(
+      std::string(channels::JOINT_STATE),
+      +[](const lcm::ReceiveBuffer*, const std::string&, int* count) { ++*count; }, &joint_states);
+  h.Run(0.2, std::nullopt, [] { return false; });  // frames of the first bridge still queued
+  const std::size_t frames_before = h.peers.received_frames.size();
+  const pid_t replay = topay::test::Spawn({topay::test::BinDir() + "/topay-canbridge", "--replay", dir + "/bus.log",
+                                           "--replay-speed", "5", "--can", url},
+                                          dir + "/replay.txt");
+  int replay_status = -1;
+  h.Run(20.0, std::nullopt, [&] {
+    int s = 0;
+    if (waitpid(replay, &s, WNOHANG) == replay) replay_status = s;
+    return replay_status != -1;
+  });
+  ASSERT_NE(replay_status, -1) << topay::test::ReadText(dir + "/replay.txt");
+  EXPECT_TRUE(WIFEXITED(replay_status) && WEXITSTATUS(replay_status) == 0) << topay::test::ReadText(dir + "/replay.txt");
+  h.Run(0.2, std::nullopt, [] { return false; });
+  EXPECT_GT(joint_states, 50);  // one per cycle with new TPDOs: ~0.7 s of cycles
+  EXPECT_EQ(h.status->state, drive_status_t::REPLAY);
+  EXPECT_EQ(h.peers.received_frames.size(), frames_before);  // the replay sent nothing on the bus
+  EXPECT_NE(topay::test::ReadText(dir + "/replay.txt").find("replay://"), std::string::npos);
 }
 
 TEST(CanbridgeProcessTest, BadUsageAndConfig) {
