@@ -200,7 +200,10 @@ can::CanFrame DriveLink::Rpdo(DriveIntent intent, double qdot_radps) {
   if (!state_) {
     controlword = 0;  // no statusword yet: disable voltage, the safe word
   } else if (intent == DriveIntent::kQuickStop) {
-    controlword = fault_state ? 0x0000 : cia402::ControlwordOf(cia402::Command::kQuickStop);
+    // Quick stop where the drive moves (Operation enabled) or is stopping (hold it); elsewhere
+    // disable voltage, which every other state accepts (or holds) without motion.
+    const bool moving = *state_ == DriveState::kOperationEnabled || *state_ == DriveState::kQuickStopActive;
+    controlword = moving && !fault_state ? cia402::ControlwordOf(cia402::Command::kQuickStop) : 0x0000;
   } else if (fault_state && !fault_reset_armed_) {
     controlword = 0x0000;  // a fault waits for DRIVE_COMMAND FAULT_RESET
   } else {

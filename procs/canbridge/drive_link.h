@@ -32,7 +32,7 @@ const char* ToString(DrivePhase phase);
 /// What the bridge wants a drive to do this cycle.
 enum class DriveIntent {
   kEnable,    ///< Towards Operation enabled (fault reset only when armed).
-  kQuickStop, ///< Quick stop (0x0002) in the powered states, disable voltage (0x0000) in fault.
+  kQuickStop, ///< Quick stop (0x0002) in Operation enabled / Quick stop active, else 0x0000.
 };
 
 class DriveLink {

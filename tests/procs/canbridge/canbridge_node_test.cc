@@ -6,6 +6,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <map>
 #include <random>
@@ -221,6 +222,7 @@ TEST(CanbridgeNodeTest, DriveFaultStopsAndNeedsAFaultReset) {
   rig.peers.drives[2].Fault(0x2310, &out);  // over-current
   rig.peers.Send(out);
   const double fault_at = rig.t;
+  const std::size_t controlwords_before = rig.peers.drives[0].controlwords.size();
   rig.node.OnCommand(rig.Command(0.4, 0.0, 0.2), rig.t);
   ASSERT_TRUE(rig.TickUntil([&] { return rig.node.state() == BridgeState::kFault; }, 0.1));
   rig.CommandFor(rig.Command(0.0, 0.0, 0.0), 0.1);
@@ -231,7 +233,10 @@ TEST(CanbridgeNodeTest, DriveFaultStopsAndNeedsAFaultReset) {
   EXPECT_EQ(rig.last_status.drive_state[2], "Fault");
   EXPECT_EQ(rig.peers.base.mode(), base::BaseMode::kQuickStop);
   EXPECT_EQ(rig.peers.base.commands.back().v_m_per_s, 0.0);
-  EXPECT_EQ(rig.peers.drives[0].controlwords.back(), 0x0002);  // the others quick-stopped
+  const std::vector<std::uint16_t>& words = rig.peers.drives[0].controlwords;  // the others quick-stopped
+  EXPECT_NE(std::find(words.begin() + controlwords_before, words.end(), 0x0002), words.end());
+  EXPECT_EQ(words.back(), 0x0000);  // then disabled in Switch on disabled
+  EXPECT_EQ(rig.peers.drives[0].model.state(), DriveState::kSwitchOnDisabled);
   EXPECT_EQ(rig.node.Health(), heartbeat_t::ERROR);
   // No automatic recovery, even with zero commands.
   rig.CommandFor(rig.Command(0.0, 0.0, 0.0), 2.0);
@@ -275,8 +280,10 @@ TEST(CanbridgeNodeTest, LostBaseStopsEverything) {
   rig.peers.base.silent = true;
   ASSERT_TRUE(rig.TickUntil([&] { return rig.node.state() == BridgeState::kStopped; }, 0.5));
   EXPECT_NE(rig.node.stop_reason().find("base (node 16) lost"), std::string::npos) << rig.node.stop_reason();
+  const std::size_t before = rig.peers.drives[0].controlwords.size();
   rig.TickFor(0.1);
-  EXPECT_EQ(rig.peers.drives[0].controlwords.back(), 0x0002);
+  EXPECT_EQ(rig.peers.drives[0].controlwords.at(before - 1), 0x0002);  // the stop cycle: quick stop, then disabled
+  EXPECT_EQ(rig.peers.drives[0].model.state(), DriveState::kSwitchOnDisabled);
   rig.peers.base.silent = false;
   rig.TickFor(2.0);
   EXPECT_EQ(rig.node.state(), BridgeState::kRunning) << rig.node.stop_reason();

@@ -110,6 +110,9 @@ TEST(DriveLinkTest, ControlwordsPerIntent) {
   EXPECT_NEAR(link.position_rad(), 0.5, 1e-6);
   EXPECT_EQ(cia402::DecodeRpdo1(link.Rpdo(DriveIntent::kQuickStop, 1.5), {}, nullptr)->target_velocity_rad_per_s, 0.0);
   EXPECT_EQ(controlword(DriveIntent::kQuickStop), 0x0002);
+  link.Handle(Tpdo1(DriveState::kSwitchedOn), 0, &error);
+  EXPECT_EQ(controlword(DriveIntent::kQuickStop), 0x0000);  // not moving: disable voltage
+  link.Handle(Tpdo1(DriveState::kOperationEnabled), 0, &error);
   // Fault: EMCY + statusword; held at 0x0000 until armed, then the reset edge.
   canopen::Emcy emcy;
   emcy.node_id = 3;
