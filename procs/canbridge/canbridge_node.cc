@@ -331,7 +331,10 @@ void CanbridgeNode::UpdateState(double now_s) {
       if (!cause.empty() && !(state_ == BridgeState::kRecovering && cause.rfind("drive start-up failed", 0) == 0)) {
         return Enter(BridgeState::kStopped, now_s, cause);
       }
-      const std::string not_ready = NotReadyText();
+      std::string not_ready = NotReadyText();
+      // Never start moving in the middle of a command stream meant for a robot that was not
+      // running: the first RUNNING needs a zero command (or none), as every recovery does.
+      if (not_ready.empty() && !CommandAllowsRecovery(now_s)) not_ready = "waiting for a zero CONTROL_COMMAND";
       if (not_ready.empty()) {
         fault_reset_s_.reset();
         return Enter(BridgeState::kRunning, now_s, "");
@@ -339,6 +342,7 @@ void CanbridgeNode::UpdateState(double now_s) {
       if (now_s - state_since_s_ > options_.enable_timeout_s) {
         return Enter(BridgeState::kStopped, now_s, "enable timed out: " + not_ready);
       }
+      stop_reason_ = std::string(ToString(state_)) + ": " + not_ready;
       return;
     }
     case BridgeState::kRunning: {

@@ -72,6 +72,17 @@ TEST(CanbridgeNodeTest, StartupReachesOperationEnabled) {
   EXPECT_NEAR(rig.last_joint_state.position_rad[0], 0.1, 1e-6);
 }
 
+TEST(CanbridgeNodeTest, StartupWaitsForAZeroCommand) {
+  Rig rig;
+  rig.CommandFor(rig.Command(0.3, 0.0, 0.0), 2.0);  // a tracker already commanding motion
+  EXPECT_NE(rig.node.state(), BridgeState::kRunning);
+  EXPECT_NE(rig.node.stop_reason().find("waiting for a zero CONTROL_COMMAND"), std::string::npos)
+      << rig.node.stop_reason();
+  EXPECT_EQ(rig.peers.base.v(), 0.0);
+  EXPECT_TRUE(rig.CommandUntil(rig.Command(0.0, 0.0, 0.0), [&] { return rig.node.state() == BridgeState::kRunning; }, 3.0))
+      << rig.node.stop_reason();
+}
+
 TEST(CanbridgeNodeTest, SyncAndHostHeartbeatEveryCycle) {
   Rig rig;
   ASSERT_TRUE(rig.Running());
