@@ -3,6 +3,8 @@
 #include "topay/base_pose_t.hpp"
 #include "topay/base_velocity_t.hpp"
 #include "topay/control_command_t.hpp"
+#include "topay/drive_command_t.hpp"
+#include "topay/drive_status_t.hpp"
 #include "topay/gripper_command_t.hpp"
 #include "topay/mission_status_t.hpp"
 #include "topay/goal_t.hpp"
@@ -41,7 +43,8 @@ const std::vector<MessageTypeInfo>& AllMessageTypes() {
       Info<map_update_t>(),     Info<goal_t>(),           Info<poly_trajectory_t>(),
       Info<control_command_t>(), Info<planner_status_t>(), Info<heartbeat_t>(),
       Info<graph_status_t>(),   Info<sim_contact_t>(),    Info<sim_status_t>(),
-      Info<sim_event_t>(),      Info<tracker_status_t>(), Info<gripper_command_t>(), Info<mission_status_t>()};
+      Info<sim_event_t>(),      Info<tracker_status_t>(), Info<gripper_command_t>(), Info<mission_status_t>(),
+      Info<drive_status_t>(),   Info<drive_command_t>()};
   return kTypes;
 }
 

@@ -25,11 +25,14 @@ inline constexpr std::string_view SIM_STATUS = "SIM_STATUS";            // sim_s
 inline constexpr std::string_view SIM_EVENT = "SIM_EVENT";              // sim_event_t
 inline constexpr std::string_view GRIPPER_COMMAND = "GRIPPER_COMMAND";  // gripper_command_t
 inline constexpr std::string_view MISSION_STATUS = "MISSION_STATUS";    // mission_status_t
+inline constexpr std::string_view DRIVE_STATUS = "DRIVE_STATUS";        // drive_status_t
+inline constexpr std::string_view DRIVE_COMMAND = "DRIVE_COMMAND";      // drive_command_t
 
 // Every channel above, e.g. for a logger's or a bridge's channel list.
-inline constexpr std::array<std::string_view, 18> kAll = {
+inline constexpr std::array<std::string_view, 20> kAll = {
     BASE_POSE,   BASE_VELOCITY, JOINT_STATE,     ROBOT_STATE,     POINT_CLOUD, MAP_UPDATE,
     GOAL,        TRAJECTORY,    CONTROL_COMMAND, PLANNER_STATUS,  HEARTBEAT,   GRAPH_STATUS,
-    SIM_CONTACT, SIM_STATUS,    SIM_EVENT,       TRACKER_STATUS,  GRIPPER_COMMAND, MISSION_STATUS};
+    SIM_CONTACT, SIM_STATUS,    SIM_EVENT,       TRACKER_STATUS,  GRIPPER_COMMAND, MISSION_STATUS,
+    DRIVE_STATUS, DRIVE_COMMAND};
 
 }  // namespace topay::channels

@@ -1,0 +1,71 @@
+// topay-canbridge's options: the shipped config is the documented defaults; errors name the
+// file and the key.
+#include "procs/canbridge/canbridge_options.h"
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+
+#include "core/common/error.h"
+
+namespace topay::canbridge {
+namespace {
+
+std::string Write(const std::string& name, const std::string& text) {
+  const std::string dir = std::string(TOPAY_BINARY_DIR) + "/test_out/procs/canbridge_options";
+  std::filesystem::create_directories(dir);
+  const std::string path = dir + "/" + name;
+  std::ofstream(path) << text;
+  return path;
+}
+
+std::string ErrorOf(const std::string& text) {
+  try {
+    LoadCanbridgeOptions(Write("bad.yaml", text));
+  } catch (const ConfigError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+TEST(CanbridgeOptionsTest, ShippedConfigIsTheDefaults) {
+  const CanbridgeOptions o = LoadCanbridgeOptions(std::string(TOPAY_SOURCE_DIR) + "/config/canbridge/canbridge.yaml");
+  const CanbridgeOptions d;
+  EXPECT_EQ(o.can_url, d.can_url);
+  EXPECT_EQ(o.cycle_period_s, d.cycle_period_s);
+  EXPECT_EQ(o.command_timeout_s, d.command_timeout_s);
+  EXPECT_EQ(o.recovery_hold_s, d.recovery_hold_s);
+  EXPECT_EQ(o.bit_rate_bps, d.bit_rate_bps);
+  EXPECT_EQ(o.base.node_id, d.base.node_id);
+  EXPECT_EQ(o.base.status_timeout_s, d.base.status_timeout_s);
+  EXPECT_EQ(o.base.geometry.wheel_radius_m, d.base.geometry.wheel_radius_m);
+  EXPECT_EQ(o.drives.node_ids, d.drives.node_ids);
+  EXPECT_EQ(o.drives.heartbeat_timeout_s, d.drives.heartbeat_timeout_s);
+  EXPECT_EQ(o.drives.startup.consumer_heartbeat_ms, d.drives.startup.consumer_heartbeat_ms);
+  EXPECT_EQ(o.drives.sdo_attempts, d.drives.sdo_attempts);
+}
+
+TEST(CanbridgeOptionsTest, ReadsValues) {
+  const CanbridgeOptions o = LoadCanbridgeOptions(
+      Write("good.yaml", "can_url: socketcan://can0\ncommand_timeout_s: 0.05\nbase: {node_id: 20}\n"
+                         "drives: {node_ids: [11, 12, 13, 14, 15, 16, 17], pdo_timeout_s: 0}\n"));
+  EXPECT_EQ(o.can_url, "socketcan://can0");
+  EXPECT_EQ(o.command_timeout_s, 0.05);
+  EXPECT_EQ(o.base.node_id, 20);
+  EXPECT_EQ(o.drives.node_ids.front(), 11);
+  EXPECT_EQ(o.drives.pdo_timeout_s, 0.0);
+}
+
+TEST(CanbridgeOptionsTest, ErrorsNameTheFileAndKey) {
+  EXPECT_NE(ErrorOf("comand_timeout_s: 1\n").find("comand_timeout_s"), std::string::npos);
+  EXPECT_NE(ErrorOf("comand_timeout_s: 1\n").find("bad.yaml"), std::string::npos);
+  EXPECT_NE(ErrorOf("command_timeout_s: 0.001\n").find("command_timeout_s"), std::string::npos);
+  EXPECT_NE(ErrorOf("base: {node_id: 3}\n").find("drives.node_ids"), std::string::npos);
+  EXPECT_NE(ErrorOf("drives: {node_ids: [1, 1, 2, 3, 4, 5, 6]}\n").find("appears twice"), std::string::npos);
+  EXPECT_NE(ErrorOf("drives: {node_ids: [1.5]}\n").find("drives.node_ids"), std::string::npos);
+  EXPECT_NE(ErrorOf("base: {wheel_radius_m: -1}\n").find("base"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace topay::canbridge
