@@ -34,14 +34,17 @@ Decoder AppendTo(std::vector<Msg> RunLog::*member) {
   };
 }
 
-bool DecodeRobotState(const lcm::LogEvent& event, RunLog* run) {
-  const auto msg = CheckedDecode<robot_state_t>(event.data, event.datalen, nullptr);
-  if (!msg) return false;
-  std::string error;  // the converters write their reason here (not used: the message is counted)
-  std::optional<msgs::RobotStateEstimate> estimate = msgs::FromMessage(*msg, &error);
-  if (!estimate) return false;
-  run->robot_states.push_back(std::move(*estimate));
-  return true;
+// A decoder of robot_state_t messages into the run's vector `member`.
+Decoder RobotStatesInto(std::vector<msgs::RobotStateEstimate> RunLog::*member) {
+  return [member](const lcm::LogEvent& event, RunLog* run) {
+    const auto msg = CheckedDecode<robot_state_t>(event.data, event.datalen, nullptr);
+    if (!msg) return false;
+    std::string error;  // the converters write their reason here (not used: the message is counted)
+    std::optional<msgs::RobotStateEstimate> estimate = msgs::FromMessage(*msg, &error);
+    if (!estimate) return false;
+    (run->*member).push_back(std::move(*estimate));
+    return true;
+  };
 }
 
 // A trajectory that decodes but does not rebuild (not a MINCO solution) is counted in
@@ -77,7 +80,8 @@ std::unordered_map<std::string_view, Decoder> Decoders(msgs::MapReceiver* receiv
       {ch::SIM_CONTACT, AppendTo(&RunLog::sim_contacts)},
       {ch::SIM_EVENT, AppendTo(&RunLog::sim_events)},
       {ch::GOAL, AppendTo(&RunLog::goals)},
-      {ch::ROBOT_STATE, DecodeRobotState},
+      {ch::ROBOT_STATE, RobotStatesInto(&RunLog::robot_states)},
+      {ch::SIM_PLANT_STATE, RobotStatesInto(&RunLog::plant_states)},
       {ch::TRAJECTORY, DecodeTrajectory},
       {ch::MAP_UPDATE, MapDecoder(receiver)},
   };

@@ -58,6 +58,8 @@ struct RunLog {
   std::vector<sim_event_t> sim_events;
   std::vector<goal_t> goals;
   std::vector<msgs::RobotStateEstimate> robot_states;
+  /// The plant's true state (SIM_PLANT_STATE: topay-sim in CAN mode); empty in other graphs.
+  std::vector<msgs::RobotStateEstimate> plant_states;
   /// Every TRAJECTORY message that decoded; `trajectories` those that also rebuilt.
   std::int64_t trajectory_messages = 0;
   std::vector<LoggedTrajectory> trajectories;

@@ -49,6 +49,7 @@ RunSummary Summarize(const RunLog& log) {
   s.trajectories_rebuilt = static_cast<std::int64_t>(log.trajectories.size());
   s.collisions = SummarizeCollisions(log);
   s.tracking = SummarizeTracking(log.tracker_statuses);
+  s.estimation = SummarizeEstimation(log.robot_states, log.plant_states);
   s.distance_driven_m = DistanceDriven(log.robot_states);
   s.appeared_boxes = AppearedBoxes(log.sim_events);
   s.channels = log.channels;

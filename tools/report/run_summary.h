@@ -16,6 +16,7 @@
 
 #include <Eigen/Core>
 
+#include "tools/report/estimation_summary.h"
 #include "tools/report/mission_summary.h"
 #include "tools/report/planner_summary.h"
 #include "tools/report/run_log.h"
@@ -59,6 +60,7 @@ struct RunSummary {
   std::int64_t trajectories_rebuilt = 0; ///< ... and rebuilt into evaluable trajectories
   CollisionSummary collisions;
   TrackingSummary tracking;
+  EstimationSummary estimation;  ///< ROBOT_STATE vs SIM_PLANT_STATE (CAN graphs; 0 pairs otherwise)
   double distance_driven_m = 0.0;  ///< sum of |p_WB(k) - p_WB(k-1)| over ROBOT_STATE
   std::vector<AppearedBox> appeared_boxes;
   std::map<std::string, ChannelCount> channels;

@@ -55,6 +55,15 @@ std::string TrackingLines(const TrackingSummary& t) {
                      t.solve_ms.p99, t.solve_ms.max);
 }
 
+// Only in runs with the plant's true state on the bus (CAN graphs): the estimator's error.
+std::string EstimationLine(const EstimationSummary& e) {
+  if (e.pairs == 0) return "";
+  return fmt::format("estimation ({} ROBOT_STATE vs SIM_PLANT_STATE): position RMS {:.4f} m, max {:.4f} m; yaw RMS "
+                     "{:.4f} rad, max {:.4f} rad; joints RMS {:.4f} rad, max {:.4f} rad\n",
+                     e.pairs, e.position_m.rms, e.position_m.max, e.yaw_rad.rms, e.yaw_rad.max, e.joint_rad.rms,
+                     e.joint_rad.max);
+}
+
 std::string MotionLines(const RunSummary& s) {
   std::string out = fmt::format("driven: {:.2f} m; boxes appeared: {}\n", s.distance_driven_m,
                                 s.appeared_boxes.size());
@@ -91,7 +100,7 @@ std::string FileLines(const RunSummary& s) {
 
 std::string FormatSummary(const RunSummary& s) {
   return MissionLines(s.mission) + PlannerLines(s) + CollisionLine(s.collisions) + TrackingLines(s.tracking) +
-         MotionLines(s) + ChannelLines(s) + FileLines(s);
+         EstimationLine(s.estimation) + MotionLines(s) + ChannelLines(s) + FileLines(s);
 }
 
 }  // namespace topay::report

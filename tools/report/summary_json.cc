@@ -50,6 +50,13 @@ json TrackingJson(const TrackingSummary& t) {
           {"solve_ms", TimingJson(t.solve_ms)}};
 }
 
+json EstimationJson(const EstimationSummary& e) {
+  return {{"pairs", e.pairs},
+          {"position_m", ErrorJson(e.position_m)},
+          {"yaw_rad", ErrorJson(e.yaw_rad)},
+          {"joint_rad", ErrorJson(e.joint_rad)}};
+}
+
 json BoxesJson(const std::vector<AppearedBox>& boxes) {
   json out = json::array();
   for (const AppearedBox& b : boxes) {
@@ -81,6 +88,7 @@ json SummaryToJson(const RunSummary& s) {
           {"planner", PlannerJson(s)},
           {"collisions", CollisionJson(s.collisions)},
           {"tracking", TrackingJson(s.tracking)},
+          {"estimation", EstimationJson(s.estimation)},
           {"distance_driven_m", s.distance_driven_m},
           {"appeared_boxes", BoxesJson(s.appeared_boxes)},
           {"channels", ChannelsJson(s.channels)},
