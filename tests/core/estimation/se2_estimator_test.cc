@@ -145,6 +145,20 @@ TEST(Se2Estimator, DelayedPosesGiveTheInOrderResult) {
   EXPECT_LT(PositionError(delayed.Newest().X_WB, d.final_truth_WB), 0.05);
 }
 
+// Poses arriving 20 ms before the odometry up to their stamp (the odometry is the late
+// stream): the odometry is inserted before them and the result is again the in-order one.
+TEST(Se2Estimator, LateOdometryGivesTheInOrderResult) {
+  const Drive d = test::SimulateDrive(NoisyPoses(), Eigen::Vector3d(-1.0, 0.5, -2.5));
+  Se2Estimator in_order{EstimatorOptions{}}, early_poses{EstimatorOptions{}};
+  Feed(d, 0, &in_order);
+  Feed(d, -20'000, &early_poses);
+  EXPECT_GT(early_poses.summary().delayed_inputs, 2 * static_cast<std::int64_t>(d.poses.size()));  // 3 per pose
+  EXPECT_EQ(early_poses.summary().odometry_applied, in_order.summary().odometry_applied);
+  EXPECT_EQ(early_poses.summary().poses_accepted, in_order.summary().poses_accepted);
+  EXPECT_LT((early_poses.Newest().X_WB - in_order.Newest().X_WB).cwiseAbs().maxCoeff(), 1e-12);
+  EXPECT_LT((early_poses.Newest().P_WB - in_order.Newest().P_WB).cwiseAbs().maxCoeff(), 1e-15);
+}
+
 // A pose 2 m off after convergence is gated (the estimate does not move), the next good ones
 // are accepted, and no re-initialisation happens: against the same drive without it, exactly
 // one more pose is gated and the final estimate is the same.
