@@ -41,7 +41,7 @@ struct SimNodeOptions {
   /// the gripper from GRIPPER_COMMAND; SIM_PLANT_STATE and GRIPPER_STATE at plant_state_rate_hz,
   /// BASE_POSE as always, no ROBOT_STATE; CONTROL_COMMAND ignored (counted).
   bool actuator_input = false;
-  double plant_state_rate_hz = 200.0;
+  double plant_state_rate_hz = 250.0;
 };
 
 class SimNode : public SimListener {

@@ -44,7 +44,8 @@ struct SimOptions {
   /// "actuators" (the CAN mode: ACTUATOR_COMMAND from topay-motorsim and GRIPPER_COMMAND in;
   /// SIM_PLANT_STATE and GRIPPER_STATE out, no ROBOT_STATE; docs/simulator.md "CAN mode").
   std::string plant_input = "control_command";
-  double plant_state_rate_hz = 200.0;  ///< CAN mode: SIM_PLANT_STATE and GRIPPER_STATE, Hz (sim time)
+  double plant_state_rate_hz = 250.0;  ///< CAN mode: SIM_PLANT_STATE and GRIPPER_STATE, Hz (sim time; every
+                                       ///< round(1 / (rate * step)) plant steps: 250 Hz = every 2nd 2 ms step)
 };
 
 /// Loads the YAML at `path` (relative paths inside resolved against its folder). Throws

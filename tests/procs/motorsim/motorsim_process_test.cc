@@ -189,7 +189,7 @@ TEST_F(MotorsimProcess, HostEnablesTheDrivesAndTheCommandedMotionMovesThePlant) 
   const robot_state_t before = *plant_.last;
 
   host_->v = 0.25;
-  host_->target[1] = 0.3;
+  host_->target[1] = -0.3;  // q1 starts at 2.9 (stow), 0.2 below its upper limit
   host_->target[4] = -0.2;
   Run(2.0);
   ASSERT_TRUE(plant_.last);
@@ -197,7 +197,7 @@ TEST_F(MotorsimProcess, HostEnablesTheDrivesAndTheCommandedMotionMovesThePlant) 
   EXPECT_GT(after.pose.x_m - before.pose.x_m, 0.2) << "0.25 m/s for 2 s minus latency and lag";
   EXPECT_LT(after.pose.x_m - before.pose.x_m, 0.55);
   EXPECT_NEAR(after.velocity.v_mps, 0.25, 0.03);
-  EXPECT_GT(after.joints.position_rad[0] - before.joints.position_rad[0], 0.25);
+  EXPECT_LT(after.joints.position_rad[0] - before.joints.position_rad[0], -0.25);
   EXPECT_LT(after.joints.position_rad[3] - before.joints.position_rad[3], -0.15);
   EXPECT_NEAR(after.joints.position_rad[1], before.joints.position_rad[1], 1e-3) << "joint 2 not commanded";
   // The feedback frames report the plant: TPDO1 positions and the wheel speeds.
@@ -209,7 +209,7 @@ TEST_F(MotorsimProcess, HostEnablesTheDrivesAndTheCommandedMotionMovesThePlant) 
   fault.kind = motorsim_fault_t::DRIVE_FAULT;
   fault.joint = 1;
   watcher_->lcm().publish(std::string(channels::MOTORSIM_FAULT), &fault);
-  host_->reset_faults = false;  // joint 1 keeps its 0.3 rad/s target: the faulted drive must not follow it
+  host_->reset_faults = false;  // joint 1 keeps its -0.3 rad/s target: the faulted drive must not follow it
   Run(1.0);
   EXPECT_EQ(host_->emcy[1], 1);
   EXPECT_EQ(host_->state[1], cia402::DriveState::kFault);
