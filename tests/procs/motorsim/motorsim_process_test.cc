@@ -76,6 +76,9 @@ class TestHost {
     Send(canopen::EncodeSync({}, nullptr));
     if (cycle_ % 20 == 0) {
       Send(canopen::EncodeNmt({canopen::NmtCommand::kStartRemoteNode, 0}, nullptr));
+      if (base_mode == base::BaseMode::kQuickStop) {  // a stalled test (loaded machine) tripped the watchdog
+        Send(base::EncodeModeRequest(base::ModeRequest::kStandby, kBaseNode, nullptr));
+      }
       if (base_mode != base::BaseMode::kCanCommand) {
         Send(base::EncodeModeRequest(base::ModeRequest::kCanCommand, kBaseNode, nullptr));
       }
