@@ -17,6 +17,9 @@
 namespace topay::sim::motors {
 namespace {
 
+// Periodic frames are due at their time up to this (times are sums of step periods).
+constexpr double kTimeEpsilonS = 1e-9;
+
 bool PositiveFinite(double x) { return std::isfinite(x) && x > 0.0; }
 
 double RampTowardsZero(double value, double max_change) {
@@ -165,12 +168,12 @@ void WheelControllerNode::Step(double time_s, const std::optional<base::Unicycle
     Emit(base::EncodeFault(report, options_.node_id, &error), error, out);
     fault_to_report_.reset();
   }
-  if (reported_mode_ != modes_.mode() || time_s >= next_status_s_) {
+  if (reported_mode_ != modes_.mode() || time_s >= next_status_s_ - kTimeEpsilonS) {
     SendStatus(out);
     reported_mode_ = modes_.mode();
     next_status_s_ = time_s + options_.status_period_s;
   }
-  if (plant && time_s >= next_feedback_s_) {
+  if (plant && time_s >= next_feedback_s_ - kTimeEpsilonS) {
     SendFeedback(*plant, out);
     next_feedback_s_ = std::max(next_feedback_s_ + options_.feedback_period_s, time_s);
   }
