@@ -292,12 +292,15 @@ TEST(DriveNodeTest, LostHostHeartbeatFaultsTheDrive) {
     b.Cycle(0x000F, 0.5);
   }
   EXPECT_EQ(b.drive.state(), DriveState::kOperationEnabled);
-  b.out.clear();
-  for (int i = 0; i < 80; ++i) b.Cycle(0x000F, 0.5);  // 0.4 s of silence
+  std::vector<can::CanFrame> sent;
+  for (int i = 0; i < 80; ++i) {  // 0.4 s of silence
+    b.Cycle(0x000F, 0.5);
+    sent.insert(sent.end(), b.out.begin(), b.out.end());
+  }
   EXPECT_EQ(b.drive.counts().host_heartbeat_lost, 1);
   EXPECT_TRUE(b.drive.state() == DriveState::kFault || b.drive.state() == DriveState::kFaultReactionActive);
   bool heartbeat_emcy = false;
-  for (const can::CanFrame& f : OfFunction(b.out, canopen::CanopenFunction::kEmcy)) {
+  for (const can::CanFrame& f : OfFunction(sent, canopen::CanopenFunction::kEmcy)) {
     heartbeat_emcy = heartbeat_emcy || canopen::DecodeEmcy(f, nullptr)->error_code == canopen::emcy_code::kHeartbeatError;
   }
   EXPECT_TRUE(heartbeat_emcy);
