@@ -193,7 +193,7 @@ TEST_F(MotorsimProcess, HostEnablesTheDrivesAndTheCommandedMotionMovesThePlant) 
 
   host_->v = 0.25;
   host_->target[1] = -0.3;  // q1 starts at 2.9 (stow), 0.2 below its upper limit
-  host_->target[4] = -0.2;
+  host_->target[7] = -0.2;  // the wrist: turning it moves no sphere into the chassis
   Run(2.0);
   ASSERT_TRUE(plant_.last);
   const robot_state_t& after = *plant_.last;
@@ -201,7 +201,7 @@ TEST_F(MotorsimProcess, HostEnablesTheDrivesAndTheCommandedMotionMovesThePlant) 
   EXPECT_LT(after.pose.x_m - before.pose.x_m, 0.55);
   EXPECT_NEAR(after.velocity.v_mps, 0.25, 0.03);
   EXPECT_LT(after.joints.position_rad[0] - before.joints.position_rad[0], -0.25);
-  EXPECT_LT(after.joints.position_rad[3] - before.joints.position_rad[3], -0.15);
+  EXPECT_LT(after.joints.position_rad[6] - before.joints.position_rad[6], -0.15);
   EXPECT_NEAR(after.joints.position_rad[1], before.joints.position_rad[1], 1e-3) << "joint 2 not commanded";
   // The feedback frames report the plant: TPDO1 positions and the wheel speeds.
   EXPECT_NEAR(host_->position[1], after.joints.position_rad[0], 0.05);
@@ -216,16 +216,28 @@ TEST_F(MotorsimProcess, HostEnablesTheDrivesAndTheCommandedMotionMovesThePlant) 
   Run(1.0);
   EXPECT_EQ(host_->emcy[1], 1);
   EXPECT_EQ(host_->state[1], cia402::DriveState::kFault);
-  EXPECT_EQ(host_->state[4], cia402::DriveState::kOperationEnabled);
+  EXPECT_EQ(host_->state[7], cia402::DriveState::kOperationEnabled);
+
+  // Bus-off from MOTORSIM_FAULT: the host's bus sees the error frame (bus-off: its sends are
+  // refused), then the restart frame (error-active again).
+  motorsim_fault_t bus_off{};
+  bus_off.kind = motorsim_fault_t::BUS_OFF;
+  bus_off.duration_s = 0.5;
+  watcher_->lcm().publish(std::string(channels::MOTORSIM_FAULT), &bus_off);
+  Run(0.25);
+  EXPECT_EQ(bus_->status().state, can::CanBusState::kBusOff);
+  EXPECT_EQ(bus_->status().bus_off_count, 1u);
+  Run(0.6);
+  EXPECT_EQ(bus_->status().state, can::CanBusState::kErrorActive);
   ASSERT_TRUE(plant_.last);
   EXPECT_NEAR(plant_.last->joints.velocity_radps[0], 0.0, 0.01);
-  EXPECT_NEAR(plant_.last->joints.velocity_radps[3], -0.2, 0.02);
+  EXPECT_NEAR(plant_.last->joints.velocity_radps[6], -0.2, 0.02);
 
   kill(motorsim_, SIGTERM);
   EXPECT_EQ(WaitFor(motorsim_, 5.0), 0);
   motorsim_ = -1;
   const std::string report = ReadText(dir_ + "/motorsim.txt");
-  EXPECT_NE(report.find("faults injected: drive 1"), std::string::npos) << report;
+  EXPECT_NE(report.find("faults injected: drive 1, base 0, heartbeat losses 0, bus-off 1"), std::string::npos) << report;
   EXPECT_NE(report.find("SDO writes " + std::to_string(expected)), std::string::npos) << report;
 }
 
