@@ -8,9 +8,12 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
 #include "drivers/arm/canopen_ids.h"
 #include "drivers/arm/cia402_host.h"
 #include "drivers/arm/emcy.h"
+#include "drivers/arm/heartbeat.h"
 #include "drivers/arm/nmt.h"
 #include "drivers/arm/sync.h"
 #include "drivers/base/mode_request_frame.h"
@@ -168,6 +171,34 @@ TEST(MotorSimTest, BusOffSilencesTheNodesAndTheBaseWatchdogStops) {
   }
   EXPECT_TRUE(restarted);
   EXPECT_GT(host.received.size(), before + 10) << "traffic resumes after the restart";
+}
+
+TEST(MotorSimTest, LostHeartbeatOfOneNodeOnly) {
+  MotorSimOptions options;
+  FaultEvent loss;
+  loss.kind = FaultKind::kHeartbeatLoss;
+  loss.joint = 3;
+  loss.at_s = 0.5;
+  loss.duration_s = 0.5;
+  options.faults.events = {loss};
+  MotorSim sim(options, 0.0);
+  std::array<std::vector<double>, 8> heartbeats;  // per node: times
+  std::vector<can::CanFrame> out;
+  for (int k = 0; k <= 300; ++k) {  // 1.5 s, no host at all
+    out.clear();
+    const double t = k * 0.005;
+    sim.Step(t, nullptr, &out);
+    for (const can::CanFrame& f : out) {
+      const auto hb = canopen::DecodeHeartbeat(f, nullptr);
+      if (hb && hb->state != canopen::NmtState::kBootUp) heartbeats[hb->node_id].push_back(t);
+    }
+  }
+  auto in_window = [](const std::vector<double>& times, double from, double to) {
+    return std::count_if(times.begin(), times.end(), [&](double t) { return t >= from && t < to; });
+  };
+  EXPECT_EQ(in_window(heartbeats[3], 0.5, 1.0), 0);
+  EXPECT_GE(in_window(heartbeats[4], 0.5, 1.0), 4);
+  EXPECT_GE(in_window(heartbeats[3], 1.0, 1.5), 4) << "it produces again after the loss";
 }
 
 TEST(MotorSimTest, RejectsClashingNodeIds) {
