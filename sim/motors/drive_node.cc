@@ -10,6 +10,7 @@
 #include "drivers/arm/nmt.h"
 #include "drivers/arm/sdo.h"
 #include "drivers/arm/sync.h"
+#include "sim/motors/node_output.h"
 
 namespace topay::sim::motors {
 namespace {
@@ -18,12 +19,6 @@ using canopen::CanopenFunction;
 using canopen::NmtState;
 using cia402::DriveState;
 
-bool PositiveFinite(double x) { return std::isfinite(x) && x > 0.0; }
-
-double RampTowardsZero(double value, double max_change) {
-  if (std::abs(value) <= max_change) return 0.0;
-  return value - std::copysign(max_change, value);
-}
 
 std::uint32_t ToRaw(double value, double unit) {
   return static_cast<std::uint32_t>(static_cast<std::int32_t>(std::llround(value / unit)));
@@ -322,12 +317,7 @@ void DriveNode::UpdateStatusObjects() {
 
 void DriveNode::Emit(const std::optional<can::CanFrame>& frame, const std::string& error,
                      std::vector<can::CanFrame>* out) {
-  if (!frame) {
-    last_error_ = error;
-    return;
-  }
-  out->push_back(*frame);
-  ++counts_.frames_sent;
+  if (AppendFrame(frame, error, out, &last_error_)) ++counts_.frames_sent;
 }
 
 }  // namespace topay::sim::motors

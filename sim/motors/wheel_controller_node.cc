@@ -13,6 +13,7 @@
 #include "drivers/base/status_frame.h"
 #include "drivers/base/velocity_command_frame.h"
 #include "drivers/base/wheel_speeds_frame.h"
+#include "sim/motors/node_output.h"
 
 namespace topay::sim::motors {
 namespace {
@@ -20,12 +21,6 @@ namespace {
 // Periodic frames are due at their time up to this (times are sums of step periods).
 constexpr double kTimeEpsilonS = 1e-9;
 
-bool PositiveFinite(double x) { return std::isfinite(x) && x > 0.0; }
-
-double RampTowardsZero(double value, double max_change) {
-  if (std::abs(value) <= max_change) return 0.0;
-  return value - std::copysign(max_change, value);
-}
 
 // The wheel angle as an encoder count modulo 2^24 (forward counts up).
 std::uint32_t Ticks(double angle_rad, int ticks_per_rev) {
@@ -201,12 +196,7 @@ void WheelControllerNode::SendFeedback(const base::UnicycleVelocity& plant, std:
 
 void WheelControllerNode::Emit(const std::optional<can::CanFrame>& frame, const std::string& error,
                                std::vector<can::CanFrame>* out) {
-  if (!frame) {
-    last_error_ = error;
-    return;
-  }
-  out->push_back(*frame);
-  ++counts_.frames_sent;
+  if (AppendFrame(frame, error, out, &last_error_)) ++counts_.frames_sent;
 }
 
 }  // namespace topay::sim::motors
