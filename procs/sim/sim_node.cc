@@ -142,10 +142,10 @@ void SimNode::OnGripperCommand(const gripper_command_t& msg) {
 
 void SimNode::PublishPlantState() {
   const std::int64_t utime = SimUtime(start_utime_, core_->time_s());
-  const sim::Plant& plant = core_->plant();
-  const robot_state_t state = ToPlantStateMessage(plant.state(), plant.measured(), utime, options_.joint_names);
+  const sim::MeasuredActuators measured = core_->plant().measured();
+  const robot_state_t state = ToPlantStateMessage(core_->plant().state(), measured, utime, options_.joint_names);
   loop_->lcm().publish(std::string(channels::SIM_PLANT_STATE), &state);
-  const joint_state_t gripper = ToGripperState(plant.measured().gripper, utime);
+  const joint_state_t gripper = ToGripperState(measured.gripper, utime);
   loop_->lcm().publish(std::string(channels::GRIPPER_STATE), &gripper);
   ++plant_states_published_;
 }
