@@ -202,7 +202,7 @@ void ConnectEstimatorNode(procs::ProcessLoop* loop, EstimatorNode* node, double 
                                    [node](const base_velocity_t& m) { node->OnVelocity(m, procs::NowUtime()); });
   loop->Subscribe<joint_state_t>(std::string(channels::JOINT_STATE),
                                  [node](const joint_state_t& m) { node->OnJoints(m, procs::NowUtime()); });
-  loop->Subscribe<joint_state_t>(std::string(kGripperStateChannel),
+  loop->Subscribe<joint_state_t>(std::string(channels::GRIPPER_STATE),
                                  [node](const joint_state_t& m) { node->OnGripper(m, procs::NowUtime()); });
   loop->AddTimer(period_s, [loop, node] {
     const std::int64_t now = procs::NowUtime();

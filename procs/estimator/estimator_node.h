@@ -30,10 +30,6 @@ class ProcessLoop;
 
 namespace topay::estimator {
 
-/// The gripper's own state channel (joint_state_t, one joint "gripper", 0 open .. 1 closed):
-/// the same name as channels::GRIPPER_STATE of the CAN-graph branch.
-inline constexpr std::string_view kGripperStateChannel = "GRIPPER_STATE";
-
 /// Why ROBOT_STATE is (not) published.
 enum class Validity : std::int8_t { kValid, kNoPose, kPoseStale, kNoOdometry, kOdometryStale, kNoJoints, kJointsStale };
 const char* ValidityName(Validity validity);

@@ -7,6 +7,7 @@
 #include "topay/drive_status_t.hpp"
 #include "topay/gripper_command_t.hpp"
 #include "topay/mission_status_t.hpp"
+#include "topay/motorsim_fault_t.hpp"
 #include "topay/goal_t.hpp"
 #include "topay/graph_status_t.hpp"
 #include "topay/heartbeat_t.hpp"
@@ -44,7 +45,8 @@ const std::vector<MessageTypeInfo>& AllMessageTypes() {
       Info<control_command_t>(), Info<planner_status_t>(), Info<heartbeat_t>(),
       Info<graph_status_t>(),   Info<sim_contact_t>(),    Info<sim_status_t>(),
       Info<sim_event_t>(),      Info<tracker_status_t>(), Info<gripper_command_t>(), Info<mission_status_t>(),
-      Info<drive_status_t>(),   Info<drive_command_t>()};
+      Info<drive_status_t>(),   Info<drive_command_t>(),
+      Info<motorsim_fault_t>()};
   return kTypes;
 }
 

@@ -23,7 +23,7 @@ using namespace topay;
 namespace {
 
 struct Flags {
-  std::string scene, robot_urdf, robot_yaml, events, replay_log;
+  std::string scene, robot_urdf, robot_yaml, events, replay_log, plant_input;
   std::optional<std::uint64_t> seed;
   std::optional<double> rate, duration_s;
   std::optional<std::int64_t> start_utime;
@@ -48,6 +48,10 @@ void AddSimFlags(CLI::App* app, Flags* f) {
                 "ideal follower: the robot follows TRAJECTORY exactly instead of CONTROL_COMMAND (the config's "
                 "`follow`)")
       ->excludes(replay);
+  app->add_option("--plant-input", f->plant_input,
+                  "control_command (default) | actuators: the CAN mode, ACTUATOR_COMMAND + GRIPPER_COMMAND in, "
+                  "SIM_PLANT_STATE + GRIPPER_STATE out, no ROBOT_STATE (the config's `plant_input`)")
+      ->check(CLI::IsMember({"control_command", "actuators"}));
 }
 
 simproc::SimOptions ResolveOptions(const procs::ProcessOptions& process, const Flags& f) {
@@ -63,6 +67,8 @@ simproc::SimOptions ResolveOptions(const procs::ProcessOptions& process, const F
   if (f.max_speed) o.rate = 0.0;
   if (f.start_utime) o.start_utime = *f.start_utime;
   if (f.follow) o.follow = true;
+  if (!f.plant_input.empty()) o.plant_input = f.plant_input;
+  if (o.follow && o.plant_input == "actuators") throw ConfigError(o.source, "plant_input", "actuators and --follow exclude each other");
   return o;
 }
 
@@ -114,7 +120,9 @@ int main(int argc, char** argv) {
                process.name, sim.model->name, sim.model->num_joints(), sim.scene_description, sim.num_scripted_events,
                sim.core->has_lidar() ? "on" : "off", sim.core->contact_sensor() != nullptr ? "on" : "off",
                options.rate > 0.0 ? fmt::format("{}x real time", options.rate) : std::string("as fast as possible"),
-               options.follow ? "TRAJECTORY (ideal follower)" : "CONTROL_COMMAND");
+               options.follow                          ? "TRAJECTORY (ideal follower)"
+               : options.plant_input == "actuators"    ? "ACTUATOR_COMMAND + GRIPPER_COMMAND (CAN mode)"
+                                                        : "CONTROL_COMMAND");
 
   procs::ProcessLoop loop(process);
   if (!loop.ok()) {
@@ -130,6 +138,8 @@ int main(int argc, char** argv) {
   node_options.joint_names = sim.model->joint_names;
   node_options.follow = options.follow;
   node_options.follower = options.follower;
+  node_options.actuator_input = options.plant_input == "actuators";
+  node_options.plant_state_rate_hz = options.plant_state_rate_hz;
   simproc::SimNode node(&loop, sim.core.get(), node_options);
   const int code = loop.Run();
   node.Finish();

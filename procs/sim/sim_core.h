@@ -72,6 +72,8 @@ class SimCore {
 
   /// A command to the actuators now (at the current step); "" or why it was rejected.
   std::string Command(const sim::ActuatorCommand& command) { return plant_.Command(command); }
+  /// A gripper target alone now (CAN mode: GRIPPER_COMMAND); "" or why it was rejected.
+  std::string CommandGripper(double target) { return plant_.CommandGripper(target); }
   /// A run-time event (SIM_EVENT), checked at the next steps.
   void AddEvent(sim::SimEvent event) { events_.Add(std::move(event)); }
 

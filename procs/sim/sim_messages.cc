@@ -1,6 +1,7 @@
 #include "procs/sim/sim_messages.h"
 
 #include <cmath>
+#include <limits>
 
 #include "procs/msgs/convert_robot_state.h"
 
@@ -35,6 +36,30 @@ robot_state_t ToRobotState(const StateSample& sample, std::int64_t start_utime,
   estimate.joint_names = joint_names;
   estimate.gripper = sample.measured.gripper;
   return msgs::ToMessage(estimate);
+}
+
+robot_state_t ToPlantStateMessage(const sim::PlantState& truth, const sim::MeasuredActuators& measured,
+                                  std::int64_t utime, const std::vector<std::string>& joint_names) {
+  msgs::RobotStateEstimate estimate;
+  estimate.utime = utime;
+  estimate.state = truth.state;
+  estimate.v_mps = measured.v_mps;
+  estimate.omega_radps = measured.omega_radps;
+  estimate.qdot_radps = truth.qdot_radps;
+  estimate.joint_names = joint_names;
+  estimate.gripper = truth.gripper;
+  return msgs::ToMessage(estimate);
+}
+
+joint_state_t ToGripperState(double gripper, std::int64_t utime) {
+  joint_state_t m;
+  m.utime = utime;
+  m.num_joints = 1;
+  m.names = {"gripper"};
+  m.position_rad = {gripper};
+  m.velocity_radps = {std::numeric_limits<double>::quiet_NaN()};
+  m.effort_Nm = {std::numeric_limits<double>::quiet_NaN()};
+  return m;
 }
 
 point_cloud_t ToPointCloud(const ScanResult& scan, std::int64_t start_utime, const std::string& frame) {

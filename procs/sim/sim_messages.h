@@ -11,6 +11,7 @@
 
 #include "procs/sim/sim_core.h"
 #include "topay/control_command_t.hpp"
+#include "topay/joint_state_t.hpp"
 #include "topay/point_cloud_t.hpp"
 #include "topay/robot_state_t.hpp"
 #include "topay/sim_contact_t.hpp"
@@ -29,6 +30,13 @@ sim::ActuatorCommand ToActuatorCommand(const control_command_t& msg);
 /// and gripper; every nested utime is the sample's (BASE_POSE is its pose).
 robot_state_t ToRobotState(const StateSample& sample, std::int64_t start_utime,
                            const std::vector<std::string>& joint_names);
+/// SIM_PLANT_STATE (CAN mode, for topay-motorsim): the plant's true pose, the wheels' v, omega (what
+/// the wheel encoders see: wheel slip excluded), the true joints and rates, the gripper; at `utime`.
+robot_state_t ToPlantStateMessage(const sim::PlantState& truth, const sim::MeasuredActuators& measured,
+                                  std::int64_t utime, const std::vector<std::string>& joint_names);
+/// GRIPPER_STATE (CAN mode): one joint named "gripper", position 0 open .. 1 closed, its rate
+/// and effort NaN (not measured).
+joint_state_t ToGripperState(double gripper, std::int64_t utime);
 point_cloud_t ToPointCloud(const ScanResult& scan, std::int64_t start_utime, const std::string& frame);
 sim_contact_t ToContactMessage(const ContactResult& contact, int box_id, std::int64_t start_utime);
 

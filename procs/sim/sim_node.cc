@@ -3,6 +3,7 @@
 #include <spdlog/spdlog.h>
 
 #include <algorithm>
+#include <cmath>
 #include <string>
 
 #include "procs/sim/sim_messages.h"
@@ -32,6 +33,15 @@ SimNode::SimNode(procs::ProcessLoop* loop, SimCore* core, const SimNodeOptions& 
   }
   loop_->Subscribe<control_command_t>(std::string(channels::CONTROL_COMMAND),
                                       [this](const control_command_t& msg) { OnCommand(msg); });
+  if (options.actuator_input) {
+    gripper_target_ = core_->plant().state().gripper;
+    plant_state_every_steps_ =
+        std::max<std::int64_t>(1, std::llround(1.0 / (options.plant_state_rate_hz * core_->plant().step_s())));
+    loop_->Subscribe<control_command_t>(std::string(channels::ACTUATOR_COMMAND),
+                                        [this](const control_command_t& msg) { OnActuatorCommand(msg); });
+    loop_->Subscribe<gripper_command_t>(std::string(channels::GRIPPER_COMMAND),
+                                        [this](const gripper_command_t& msg) { OnGripperCommand(msg); });
+  }
   if (options.follow) {
     follower_ = std::make_unique<TrajectoryFollower>(core_->plant().model().num_joints(), options.follower);
     loop_->Subscribe<poly_trajectory_t>(std::string(channels::TRAJECTORY),
@@ -76,6 +86,7 @@ RealTimePacer::Clock::time_point SimNode::OnPlantTimer() {
 void SimNode::StepOnce() {
   if (!follower_) {
     core_->Step();
+    if (options_.actuator_input && core_->steps() % plant_state_every_steps_ == 0) PublishPlantState();
     return;
   }
   const std::int64_t utime = SimUtime(start_utime_, core_->next_time_s());
@@ -99,14 +110,44 @@ void SimNode::OnTrajectory(const poly_trajectory_t& msg) {
 }
 
 void SimNode::OnCommand(const control_command_t& msg) {
-  if (follower_) {
-    if (++commands_ignored_ == 1) spdlog::info("follow mode: CONTROL_COMMAND ignored (counted)");
+  if (follower_ || options_.actuator_input) {
+    if (++commands_ignored_ == 1) {
+      spdlog::info("{}: CONTROL_COMMAND ignored (counted)", follower_ ? "follow mode" : "CAN mode (ACTUATOR_COMMAND drives the plant)");
+    }
     return;
   }
   const std::string why = core_->Command(ToActuatorCommand(msg));
   if (!why.empty() && Every(core_->plant().counts().commands_rejected)) {
     spdlog::warn("rejected command #{} ({}): the drives brake", core_->plant().counts().commands_rejected, why);
   }
+}
+
+void SimNode::OnActuatorCommand(const control_command_t& msg) {
+  sim::ActuatorCommand command = ToActuatorCommand(msg);
+  command.gripper = gripper_target_;  // the gripper is not on the motors' bus: GRIPPER_COMMAND's
+  const std::string why = core_->Command(command);
+  if (!why.empty() && Every(core_->plant().counts().commands_rejected)) {
+    spdlog::warn("rejected ACTUATOR_COMMAND (#{} rejected: {}): the drives brake", core_->plant().counts().commands_rejected, why);
+  }
+}
+
+void SimNode::OnGripperCommand(const gripper_command_t& msg) {
+  const std::string why = core_->CommandGripper(msg.position);
+  if (!why.empty()) {
+    spdlog::warn("rejected GRIPPER_COMMAND from '{}': {}", msg.source, why);
+    return;
+  }
+  gripper_target_ = msg.position;
+}
+
+void SimNode::PublishPlantState() {
+  const std::int64_t utime = SimUtime(start_utime_, core_->time_s());
+  const sim::MeasuredActuators measured = core_->plant().measured();
+  const robot_state_t state = ToPlantStateMessage(core_->plant().state(), measured, utime, options_.joint_names);
+  loop_->lcm().publish(std::string(channels::SIM_PLANT_STATE), &state);
+  const joint_state_t gripper = ToGripperState(measured.gripper, utime);
+  loop_->lcm().publish(std::string(channels::GRIPPER_STATE), &gripper);
+  ++plant_states_published_;
 }
 
 void SimNode::OnSimEvent(const sim_event_t& msg) {
@@ -123,7 +164,7 @@ void SimNode::OnSimEvent(const sim_event_t& msg) {
 
 void SimNode::OnState(const StateSample& sample) {
   const robot_state_t state = ToRobotState(sample, start_utime_, options_.joint_names);
-  loop_->lcm().publish(std::string(channels::ROBOT_STATE), &state);
+  if (!options_.actuator_input) loop_->lcm().publish(std::string(channels::ROBOT_STATE), &state);  // CAN mode: the estimator's
   loop_->lcm().publish(std::string(channels::BASE_POSE), &state.pose);
 }
 
@@ -234,6 +275,10 @@ std::string SimNode::FinalReport() const {
       core_->counts().scans, scans_published_.load(), core_->counts().events_applied, core_->counts().events_failed,
       bad_events_);
   if (follower_) text += "\nfinal: " + FollowReport();
+  if (options_.actuator_input) {
+    text += fmt::format("\nfinal: CAN mode: {} SIM_PLANT_STATE published, {} CONTROL_COMMAND ignored",
+                        plant_states_published_, commands_ignored_);
+  }
   if (const ContactSensor* monitor = core_->contact_sensor()) {
     const ContactCounts c = monitor->counts();
     text += fmt::format("\nfinal: contacts {} events, {} of {} steps in contact, max depth {:.4f} m\n{}", c.events,

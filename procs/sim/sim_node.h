@@ -19,6 +19,7 @@
 #include "procs/sim/sim_core.h"
 #include "procs/sim/trajectory_follower.h"
 #include "topay/control_command_t.hpp"
+#include "topay/gripper_command_t.hpp"
 #include "topay/poly_trajectory_t.hpp"
 #include "topay/sim_event_t.hpp"
 #include "topay/sim_status_t.hpp"
@@ -36,6 +37,11 @@ struct SimNodeOptions {
   std::vector<std::string> joint_names;
   bool follow = false;              ///< follow TRAJECTORY (TrajectoryFollower) instead of CONTROL_COMMAND
   TrajectoryFollowerOptions follower;
+  /// The CAN mode (plant_input: actuators): base and joints from ACTUATOR_COMMAND (topay-motorsim),
+  /// the gripper from GRIPPER_COMMAND; SIM_PLANT_STATE and GRIPPER_STATE at plant_state_rate_hz,
+  /// BASE_POSE as always, no ROBOT_STATE; CONTROL_COMMAND ignored (counted).
+  bool actuator_input = false;
+  double plant_state_rate_hz = 250.0;
 };
 
 class SimNode : public SimListener {
@@ -67,6 +73,10 @@ class SimNode : public SimListener {
   /// utime of the sim's clock now (before the first step: of the time stepping will start).
   std::int64_t NowSimUtime() const;
   void OnCommand(const control_command_t& msg);
+  void OnActuatorCommand(const control_command_t& msg);
+  void OnGripperCommand(const gripper_command_t& msg);
+  /// CAN mode: SIM_PLANT_STATE and GRIPPER_STATE when due after a step.
+  void PublishPlantState();
   void OnTrajectory(const poly_trajectory_t& msg);
   std::string FollowReport() const;
   void OnSimEvent(const sim_event_t& msg);
@@ -83,7 +93,10 @@ class SimNode : public SimListener {
   std::int64_t steps_at_start_ = 0;
   std::int64_t bad_events_ = 0;
   std::unique_ptr<TrajectoryFollower> follower_;  // follow mode only
-  std::int64_t commands_ignored_ = 0;             // CONTROL_COMMANDs in follow mode
+  std::int64_t commands_ignored_ = 0;             // CONTROL_COMMANDs in follow mode or CAN mode
+  double gripper_target_ = 0.0;                   // CAN mode: the latest GRIPPER_COMMAND
+  std::int64_t plant_state_every_steps_ = 1;      // CAN mode: SIM_PLANT_STATE period in plant steps
+  std::int64_t plant_states_published_ = 0;
   std::atomic<std::int64_t> scans_published_{0};
   // Status period bookkeeping.
   RealTimePacer::Clock::time_point last_status_wall_{};

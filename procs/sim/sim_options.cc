@@ -105,6 +105,13 @@ SimOptions LoadSimOptions(const std::string& path) {
   top.Read("status_rate_hz", &o.status_rate_hz);
   Positive(top, "status_rate_hz", o.status_rate_hz);
   top.Read("follow", &o.follow);
+  top.Read("plant_input", &o.plant_input);
+  if (o.plant_input != "control_command" && o.plant_input != "actuators") {
+    throw ConfigError(path, "plant_input", "must be control_command or actuators, got '" + o.plant_input + "'");
+  }
+  top.Read("plant_state_rate_hz", &o.plant_state_rate_hz);
+  Positive(top, "plant_state_rate_hz", o.plant_state_rate_hz);
+  if (o.follow && o.plant_input == "actuators") throw ConfigError(path, "plant_input", "actuators and follow exclude each other");
   {
     YamlSection s = top.Section("follower");
     ReadFollowerOptions(s, &o.follower);

@@ -40,6 +40,12 @@ struct SimOptions {
   /// CONTROL_COMMAND (ignored, counted).
   bool follow = false;
   TrajectoryFollowerOptions follower;  ///< the `follower` section
+  /// What drives the plant: "control_command" (default: CONTROL_COMMAND, ROBOT_STATE out) or
+  /// "actuators" (the CAN mode: ACTUATOR_COMMAND from topay-motorsim and GRIPPER_COMMAND in;
+  /// SIM_PLANT_STATE and GRIPPER_STATE out, no ROBOT_STATE; docs/simulator.md "CAN mode").
+  std::string plant_input = "control_command";
+  double plant_state_rate_hz = 250.0;  ///< CAN mode: SIM_PLANT_STATE and GRIPPER_STATE, Hz (sim time; every
+                                       ///< round(1 / (rate * step)) plant steps: 250 Hz = every 2nd 2 ms step)
 };
 
 /// Loads the YAML at `path` (relative paths inside resolved against its folder). Throws

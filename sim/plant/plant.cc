@@ -64,6 +64,15 @@ std::string Plant::Command(const ActuatorCommand& command) {
   return "";
 }
 
+std::string Plant::CommandGripper(double target) {
+  if (!std::isfinite(target) || target < 0.0 || target > 1.0) {
+    ++counts_.commands_rejected;
+    return "gripper target " + std::to_string(target) + " is not in [0, 1]";
+  }
+  gripper_delay_.Push(step_, target);
+  return "";
+}
+
 void Plant::Step() {
   StepBase();
   StepJoints();

@@ -37,6 +37,11 @@ class Plant {
   /// command arrives (the gripper keeps its target).
   std::string Command(const ActuatorCommand& command);
 
+  /// Hands a gripper target alone to the gripper drive (it arrives after the gripper latency):
+  /// the gripper's own driver, apart from the base and joint drives (their watchdog is not fed).
+  /// "" if accepted; else the reason (not finite or outside [0, 1]): ignored, counted as rejected.
+  std::string CommandGripper(double target);
+
   /// Advances one step.
   void Step();
 

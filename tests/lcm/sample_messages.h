@@ -19,6 +19,7 @@
 #include "topay/map_update_t.hpp"
 #include "topay/planner_status_t.hpp"
 #include "topay/tracker_status_t.hpp"
+#include "topay/motorsim_fault_t.hpp"
 #include "topay/point_cloud_t.hpp"
 #include "topay/poly_trajectory_t.hpp"
 #include "topay/robot_state_t.hpp"
@@ -46,7 +47,7 @@ using Catalogue =
     MessageList<base_pose_t, base_velocity_t, joint_state_t, robot_state_t, whole_body_state_t,
                 point_cloud_t, map_update_t, goal_t, poly_trajectory_t, control_command_t,
                 planner_status_t, heartbeat_t, graph_status_t, sim_contact_t, sim_status_t,
-                sim_event_t, tracker_status_t>;
+                sim_event_t, tracker_status_t, motorsim_fault_t>;
 using AllMessageTypes = Catalogue::GtestTypes;
 
 // Names typed tests after the message type ("RoundTrip/joint_state_t") instead of 0, 1, ...
@@ -386,6 +387,28 @@ struct MessageSample<tracker_status_t> {
     EXPECT_EQ(a.yaw_error_rad, b.yaw_error_rad);
     EXPECT_EQ(a.joint_error_rad, b.joint_error_rad);
     EXPECT_EQ(a.solve_ms, b.solve_ms);
+  }
+};
+
+template <>
+struct MessageSample<motorsim_fault_t> {
+  static motorsim_fault_t Make() {
+    motorsim_fault_t m;
+    m.utime = 1'700'000'001'623'456;
+    m.kind = motorsim_fault_t::HEARTBEAT_LOSS;
+    m.joint = 3;
+    m.duration_s = 1.5;
+    m.value = 12.5;
+    m.code = 0x2310;
+    return m;
+  }
+  static void ExpectSame(const motorsim_fault_t& a, const motorsim_fault_t& b) {
+    EXPECT_EQ(a.utime, b.utime);
+    EXPECT_EQ(a.kind, b.kind);
+    EXPECT_EQ(a.joint, b.joint);
+    EXPECT_EQ(a.duration_s, b.duration_s);
+    EXPECT_EQ(a.value, b.value);
+    EXPECT_EQ(a.code, b.code);
   }
 };
 

@@ -27,12 +27,17 @@ inline constexpr std::string_view GRIPPER_COMMAND = "GRIPPER_COMMAND";  // gripp
 inline constexpr std::string_view MISSION_STATUS = "MISSION_STATUS";    // mission_status_t
 inline constexpr std::string_view DRIVE_STATUS = "DRIVE_STATUS";        // drive_status_t
 inline constexpr std::string_view DRIVE_COMMAND = "DRIVE_COMMAND";      // drive_command_t
+// The CAN closed loop (docs/motorsim.md, docs/simulator.md "CAN mode").
+inline constexpr std::string_view ACTUATOR_COMMAND = "ACTUATOR_COMMAND";  // control_command_t (motorsim -> sim)
+inline constexpr std::string_view SIM_PLANT_STATE = "SIM_PLANT_STATE";    // robot_state_t (sim -> motorsim)
+inline constexpr std::string_view GRIPPER_STATE = "GRIPPER_STATE";        // joint_state_t ("gripper")
+inline constexpr std::string_view MOTORSIM_FAULT = "MOTORSIM_FAULT";      // motorsim_fault_t
 
 // Every channel above, e.g. for a logger's or a bridge's channel list.
-inline constexpr std::array<std::string_view, 20> kAll = {
+inline constexpr std::array<std::string_view, 24> kAll = {
     BASE_POSE,   BASE_VELOCITY, JOINT_STATE,     ROBOT_STATE,     POINT_CLOUD, MAP_UPDATE,
     GOAL,        TRAJECTORY,    CONTROL_COMMAND, PLANNER_STATUS,  HEARTBEAT,   GRAPH_STATUS,
     SIM_CONTACT, SIM_STATUS,    SIM_EVENT,       TRACKER_STATUS,  GRIPPER_COMMAND, MISSION_STATUS,
-    DRIVE_STATUS, DRIVE_COMMAND};
+    DRIVE_STATUS, DRIVE_COMMAND, ACTUATOR_COMMAND, SIM_PLANT_STATE, GRIPPER_STATE, MOTORSIM_FAULT};
 
 }  // namespace topay::channels

@@ -58,6 +58,13 @@ TEST(SimOptions, ReadsTheFollowerOptions) {
   EXPECT_EQ(o.follower.rebuild.yaw0_tolerance_rad, 1e-5);
 }
 
+TEST(SimOptions, ReadsTheCanMode) {
+  const SimOptions o = LoadSimOptions(Write("can.yaml", "plant_input: actuators\nplant_state_rate_hz: 100\n"));
+  EXPECT_EQ(o.plant_input, "actuators");
+  EXPECT_EQ(o.plant_state_rate_hz, 100.0);
+  EXPECT_EQ(SimOptions{}.plant_input, "control_command");
+}
+
 TEST(SimOptions, NamesTheFileAndKeyOfBadOptions) {
   const auto expect_error = [](const std::string& text, const std::string& field) {
     const std::string path = Write("bad.yaml", text);
@@ -77,6 +84,9 @@ TEST(SimOptions, NamesTheFileAndKeyOfBadOptions) {
   expect_error("speed: 3\n", "speed");
   expect_error("plant: {initial: {q_rad: [0, nan]}}\n", "plant.initial.q_rad[1]");
   expect_error("follow: yes please\n", "follow");
+  expect_error("plant_input: wishes\n", "plant_input");
+  expect_error("plant_input: actuators\nfollow: true\n", "plant_input");
+  expect_error("plant_state_rate_hz: 0\n", "plant_state_rate_hz");
   expect_error("follower: {max_start_offset_m: 0}\n", "follower.max_start_offset_m");
   expect_error("follower: {panels_per_piece: 0}\n", "follower.panels_per_piece");
   expect_error("follower: {tolerance: 1}\n", "follower.tolerance");

@@ -225,6 +225,22 @@ TEST(Plant, GripperTakesItsStrokeTime) {
   EXPECT_NEAR(closed_at * o.step_s, o.gripper.latency_s + 0.8, 2 * o.step_s);
 }
 
+TEST(Plant, GripperAloneMovesTheGripperButFeedsNoWatchdog) {
+  PlantOptions o;
+  o.gripper.open_time_s = 0.5;
+  Plant plant(TopayRobot(), o, 1);
+  EXPECT_EQ(plant.CommandGripper(1.0), "");
+  for (int k = 0; k < 400; ++k) plant.Step();  // 0.8 s
+  EXPECT_EQ(plant.state().gripper, 1.0);
+  EXPECT_TRUE(plant.braking()) << "the base and joint drives had no command";
+  EXPECT_EQ(plant.counts().commands_accepted, 0);
+  EXPECT_NE(plant.CommandGripper(1.5), "");
+  EXPECT_NE(plant.CommandGripper(std::nan("")), "");
+  EXPECT_EQ(plant.counts().commands_rejected, 2);
+  for (int k = 0; k < 100; ++k) plant.Step();
+  EXPECT_EQ(plant.state().gripper, 1.0) << "a rejected target changes nothing";
+}
+
 TEST(Plant, CommandedCircleCloses) {
   Plant plant(TopayRobot(), {}, 1);
   const double v = 0.4, w = 0.4;  // radius 1 m, period 5 pi s, inside the coupled bound
