@@ -1,7 +1,7 @@
 # Two commands on a fresh Debian 12 machine:
 #   make demo   install what is missing, build, run the main job
 #   make test   install what is missing, build (with assertions), run every test
-.PHONY: all deps build build-test test test-fast test-demo demo missions demo-plan graph bench bench-replan clean
+.PHONY: all deps build build-test test test-fast test-demo demo missions demo-plan graph bench bench-replan bench-can clean
 
 BUILD_DIR      ?= build
 TEST_BUILD_DIR ?= build-test
@@ -35,13 +35,17 @@ test-fast: build-test
 # The main job: the closed loop (docs/demo.md). The paper's pick-and-place task in a Tables room
 # the robot has never seen (mapped only by its LiDAR as it goes), through the real processes
 # (sim, director, mapper, planner, tracker, mission, logger) in a private network namespace,
-# headless; a box appears on the route mid-run. Prints the mission's progress and, at the end,
+# headless; a box appears on the route mid-run. Through CAN as on the robot (CAN=1, the default:
+# tracker -> canbridge -> CAN bus -> motorsim -> plant, feedback -> estimator; config/graphs/
+# demo.yaml); CAN=0 runs the same graph without CAN (config/graphs/demo_direct.yaml). Prints the mission's progress and, at the end,
 # the summary (result, time, replans, ground-truth collisions, tracking error, planning and
 # solve times) and where the log and plots are (out/demo/seed-<S>/). Exits non-zero if the
 # mission failed or touched anything.
 DEMO_SEED ?= 1
+CAN       ?= 1
+DEMO_GRAPH = config/graphs/$(if $(filter 0,$(CAN)),demo_direct,demo).yaml
 demo: build
-	$(BUILD_DIR)/bin/topay-missions --seeds 1 --first-seed $(DEMO_SEED) --out $(DEMO_OUT)
+	$(BUILD_DIR)/bin/topay-missions --seeds 1 --first-seed $(DEMO_SEED) --out $(DEMO_OUT) --graph $(DEMO_GRAPH)
 
 # The closed-loop demo's end-to-end test (topay-missions on seed 1 through the whole graph; not
 # in `make test`: docs/demo.md "Known problems").
@@ -53,7 +57,7 @@ test-demo: build-test
 SEEDS      ?= 20
 FIRST_SEED ?= 1
 missions: build
-	$(BUILD_DIR)/bin/topay-missions --seeds $(SEEDS) --first-seed $(FIRST_SEED) --out out/missions
+	$(BUILD_DIR)/bin/topay-missions --seeds $(SEEDS) --first-seed $(FIRST_SEED) --out out/missions --graph $(DEMO_GRAPH)
 
 # One TopAY plan (the main job before the closed loop): a seeded Tables room and a medium-range
 # task; the summary, the trajectory JSON and the plots in out/plan/. Exit code 3 (the plan failed,
@@ -81,6 +85,12 @@ bench-replan: deps
 	  -DTOPAY_BUILD_BENCHMARKS=OFF >/dev/null
 	@cmake --build $(TEST_BUILD_DIR) -j $(JOBS) --target replan_latency_test topay-sim topay-mapper topay-planner
 	TOPAY_REPLAN_EVENTS=$(REPLAN_EVENTS) TOPAY_REPLAN_SEED=$(REPLAN_SEED) $(TEST_BUILD_DIR)/bin/replan_latency_test
+
+# The CAN bridge's timing (docs/benchmarks.md "CAN bridge"): command -> CAN frame latency, cycle
+# jitter with and without the real-time settings, bus load; 60 s each (CAN_BENCH_S).
+CAN_BENCH_S ?= 60
+bench-can: build
+	tools/bench/can_bench.sh $(BUILD_DIR) $(CAN_BENCH_S)
 
 clean:
 	rm -rf $(BUILD_DIR) $(TEST_BUILD_DIR)

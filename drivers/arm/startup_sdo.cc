@@ -25,6 +25,7 @@ struct PdoSpec {
   std::uint16_t communication_index;  // 0x1400+n (RPDO) / 0x1800+n (TPDO)
   bool is_transmit;
   std::vector<MappedObject> objects;   // empty: leave the PDO invalid
+  std::uint8_t transmission_type = kTransmissionSynchronous;  // 1..240: every n-th SYNC
 };
 
 void Add(std::vector<SdoWrite>* writes, std::uint16_t index, std::uint8_t subindex,
@@ -48,11 +49,13 @@ void AddPdo(const PdoSpec& pdo, int node_id, std::vector<SdoWrite>* writes) {
   }
   Add(writes, mapping, 0, static_cast<std::uint32_t>(pdo.objects.size()), 1,
       "number of mapped objects");
-  Add(writes, comm, 2, kTransmissionSynchronous, 1, "transmission type: synchronous, every SYNC");
+  Add(writes, comm, 2, pdo.transmission_type, 1,
+      pdo.transmission_type == kTransmissionSynchronous ? "transmission type: synchronous, every SYNC"
+                                                        : "transmission type: synchronous, every n-th SYNC");
   Add(writes, comm, 1, cob_id | flags, 4, "make the PDO valid with its default COB-ID");
 }
 
-std::vector<PdoSpec> PdoLayout(bool map_target_position) {
+std::vector<PdoSpec> PdoLayout(bool map_target_position, int tpdo2_every_n_syncs) {
   std::vector<PdoSpec> layout;
   layout.push_back({"RPDO1", CanopenFunction::kRpdo1, 0x1400, false,
                     {{object::kControlword, 16, "RPDO1 map: controlword 0x6040"},
@@ -68,7 +71,8 @@ std::vector<PdoSpec> PdoLayout(bool map_target_position) {
                     {{object::kStatusword, 16, "TPDO1 map: statusword 0x6041"},
                      {object::kPositionActual, 32, "TPDO1 map: position actual 0x6064"}}});
   layout.push_back({"TPDO2", CanopenFunction::kTpdo2, 0x1801, true,
-                    {{object::kVelocityActual, 32, "TPDO2 map: velocity actual 0x606C"}}});
+                    {{object::kVelocityActual, 32, "TPDO2 map: velocity actual 0x606C"}},
+                    static_cast<std::uint8_t>(tpdo2_every_n_syncs)});
   layout.push_back({"TPDO3", CanopenFunction::kTpdo3, 0x1802, true, {}});
   layout.push_back({"TPDO4", CanopenFunction::kTpdo4, 0x1803, true, {}});
   return layout;
@@ -84,6 +88,9 @@ std::string CheckOptions(int node_id, const StartupOptions& options) {
   for (int ms : {options.producer_heartbeat_ms, options.consumer_heartbeat_ms}) {
     if (ms < 0 || ms > 0xFFFF) return "heartbeat time " + std::to_string(ms) +
                                       " ms is outside 0..65535";
+  }
+  if (options.tpdo2_every_n_syncs < 1 || options.tpdo2_every_n_syncs > 240) {
+    return "TPDO2 every " + std::to_string(options.tpdo2_every_n_syncs) + " SYNCs is outside 1..240";
   }
   if (options.sync_period_ms < 1 || options.sync_period_ms > 255) {
     return "SYNC period " + std::to_string(options.sync_period_ms) + " ms is outside 1..255";
@@ -112,7 +119,7 @@ std::optional<std::vector<SdoWrite>> StartupSdoWrites(int node_id, const Startup
   const std::string problem = CheckOptions(node_id, options);
   if (!problem.empty()) return canopen::Fail(error, "start-up SDO writes: " + problem);
   std::vector<SdoWrite> writes;
-  for (const PdoSpec& pdo : PdoLayout(options.map_target_position)) {
+  for (const PdoSpec& pdo : PdoLayout(options.map_target_position, options.tpdo2_every_n_syncs)) {
     AddPdo(pdo, node_id, &writes);
   }
   Add(&writes, 0x1017, 0, static_cast<std::uint32_t>(options.producer_heartbeat_ms), 2,

@@ -126,6 +126,13 @@ void DriveNode::OnNmt(const can::CanFrame& frame) {
   }
 }
 
+// A synchronous TPDO of transmission type n (1..240, CiA 301 §7.5.2.37) goes out on every n-th
+// SYNC the drive acted on; the other types are not synchronous: never on SYNC.
+bool DriveNode::DueOnThisSync(std::uint16_t tpdo_comm_index) const {
+  const std::uint32_t type = dictionary_.Get({tpdo_comm_index, 2});
+  return type >= 1 && type <= 240 && counts_.syncs % type == 0;
+}
+
 void DriveNode::OnSync(std::vector<can::CanFrame>* out) {
   ++counts_.syncs;
   if (pending_rpdo_) {
@@ -142,11 +149,11 @@ void DriveNode::OnSync(std::vector<can::CanFrame>* out) {
   const double velocity = std::clamp(feedback_->velocity_radps, -u.max_actual_velocity_rad_per_s,
                                      u.max_actual_velocity_rad_per_s);
   std::string error;
-  if (dictionary_.PdoValid(Pdo::kTpdo1)) {
+  if (dictionary_.PdoValid(Pdo::kTpdo1) && DueOnThisSync(0x1800)) {
     const cia402::Tpdo1 tpdo1{options_.node_id, model_.statusword(), position};
     Emit(cia402::EncodeTpdo1(tpdo1, u, &error), error, out);
   }
-  if (dictionary_.PdoValid(Pdo::kTpdo2)) {
+  if (dictionary_.PdoValid(Pdo::kTpdo2) && DueOnThisSync(0x1801)) {
     Emit(cia402::EncodeTpdo2(cia402::Tpdo2{options_.node_id, velocity}, u, &error), error, out);
   }
 }

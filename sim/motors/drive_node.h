@@ -94,6 +94,7 @@ class DriveNode {
   void PowerOn(bool reset_application);
   void OnNmt(const can::CanFrame& frame);
   void OnSync(std::vector<can::CanFrame>* out);
+  bool DueOnThisSync(std::uint16_t tpdo_comm_index) const;
   void OnRpdo1(const can::CanFrame& frame, std::vector<can::CanFrame>* out);
   void OnSdo(const can::CanFrame& frame, std::vector<can::CanFrame>* out);
   void OnHostHeartbeat(const can::CanFrame& frame, double time_s);

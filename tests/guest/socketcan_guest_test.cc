@@ -6,7 +6,7 @@
 #include <filesystem>
 #include <string>
 
-#include "tests/guest/guest_runner.h"
+#include "guest_runner.h"
 
 namespace topay::test {
 namespace {
@@ -24,11 +24,26 @@ TEST(SocketCanGuest, TheSocketCanBusTestsPassOnARealVcan0) {
   const std::string why = GuestUnavailableReason();
   if (!why.empty()) GTEST_SKIP() << why;
   const GuestRun run = RunInGuest(
-      {"bin/socketcan_bus_test", "--gtest_filter=-SocketCanBusTest.OpeningWithoutAfCanGivesAClearError"},
+      {"bin/socketcan_bus_test", "--gtest_filter=-SocketCanBusTest.OpeningWithoutAfCanGivesAClearError",
+       "--gtest_color=no"},
       OutDir("socketcan_bus_test"), 180);
   EXPECT_EQ(run.exit_code, 0) << run.output;
   EXPECT_NE(run.output.find("[  PASSED  ] 5 tests"), std::string::npos) << run.output;
   EXPECT_EQ(run.output.find("[  SKIPPED ]"), std::string::npos) << run.output;
+}
+
+// The CAN loop on a real SocketCAN (tests/guest/can_over_vcan_check.cc, run in the guest):
+// topay-canbridge and topay-motorsim over vcan0 move topay-sim's plant as commanded; candump sees
+// the bridge's frames; an EMCY sent with cansend faults the bridge.
+TEST(SocketCanGuest, BridgeAndMotorsimOverVcan0WithCanUtils) {
+  const std::string why = GuestUnavailableReason();
+  if (!why.empty()) GTEST_SKIP() << why;
+  const std::string out = OutDir("can_over_vcan");
+  const GuestRun run = RunInGuest({"bin/can_over_vcan_check", "--gtest_color=no"}, out, 300);
+  std::printf("%s", run.output.c_str());
+  EXPECT_EQ(run.exit_code, 0) << run.output;
+  EXPECT_NE(run.output.find("[  PASSED  ] 1 test"), std::string::npos) << run.output;
+  EXPECT_NE(run.output.find("over vcan0: moved"), std::string::npos) << run.output;
 }
 
 // The guest reports a failing command's exit code (a test that could not fail would prove

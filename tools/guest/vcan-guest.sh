@@ -13,7 +13,8 @@
 #                                        could not start or died before CMD ended)
 #
 # DIR (default: a temporary folder) is shared read-write with the guest at the same path, so
-# CMD can write results there. Files: ${TOPAY_GUEST_DIR:-$XDG_CACHE_HOME/topay-guest}.
+# CMD can write results there (its path is in $TOPAY_GUEST_OUT in the guest). Files:
+# ${TOPAY_GUEST_DIR:-$XDG_CACHE_HOME/topay-guest}.
 set -euo pipefail
 
 guest_dir="${TOPAY_GUEST_DIR:-${XDG_CACHE_HOME:-$HOME/.cache}/topay-guest}"
@@ -45,6 +46,7 @@ mkdir -p /host
 mount -t 9p -o trans=virtio,version=9p2000.L,ro,msize=512000 hostroot /host || echo "vcan-guest: no host root"
 /bin/ip link set lo up
 /bin/ip route add 224.0.0.0/4 dev lo
+echo 16777216 > /proc/sys/net/core/rmem_max
 /bin/ip link add dev vcan0 type vcan && /bin/ip link set up vcan0
 mount -t proc proc /host/proc
 mount -t sysfs sys /host/sys
@@ -117,11 +119,11 @@ run() {
   rm -f "$out/guest-exit-code"
   {
     echo "cd $(printf %q "$cwd") || exit 125"
-    printf 'export PATH=%q HOME=/tmp TOPAY_IN_GUEST=1\n' "$PATH"
+    printf 'export PATH=%q HOME=/tmp TOPAY_IN_GUEST=1 TOPAY_GUEST_OUT=%q\n' "$PATH" "$out"
     printf '%q ' "$@"; echo
   } > "$out/guest-command.sh"
   local status=0
-  timeout --kill-after=5 "$timeout_s" qemu-system-x86_64 -accel tcg -m 1024 -smp 1 -nographic -no-reboot \
+  timeout --kill-after=5 "$timeout_s" qemu-system-x86_64 -accel tcg -m 1024 -smp 2 -nographic -no-reboot \
     -kernel "$guest_dir/vmlinuz" -initrd "$guest_dir/initramfs.cpio.gz" \
     -append "console=ttyS0 quiet loglevel=3 panic=-1 topay_out=$out" \
     -virtfs local,path=/,mount_tag=hostroot,security_model=none,readonly=on,multidevs=remap \

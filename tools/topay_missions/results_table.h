@@ -21,6 +21,9 @@ struct MissionRunRow {
   double position_rms_m = 0.0;      ///< tracking: base position error RMS, m
   double yaw_rms_rad = 0.0;         ///< tracking: yaw error RMS, rad
   double joint_rms_rad = 0.0;       ///< tracking: largest joint error RMS, rad
+  /// The estimator's base position error RMS (ROBOT_STATE vs the plant's truth), m; negative:
+  /// not measured (a graph without CAN has no estimator).
+  double estimation_rms_m = -1.0;
   std::string run_dir;              ///< the run folder (log, plots, process logs)
   std::string detail;               ///< the mission's last detail or the failure's reason
 

@@ -33,6 +33,7 @@ void ReportRun(MissionRunRow* row, std::ostream& out) {
   row->replans = static_cast<int>(s.planner.replans);
   row->boxes_appeared = static_cast<int>(s.appeared_boxes.size());
   row->position_rms_m = s.tracking.position_m.rms;
+  row->estimation_rms_m = s.estimation.pairs > 0 ? s.estimation.position_m.rms : -1.0;
   row->yaw_rms_rad = s.tracking.yaw_rad.rms;
   row->joint_rms_rad = s.tracking.joint_rad.rms;
 }

@@ -27,12 +27,12 @@ TEST(StartupSdoTest, DefaultSequenceForNode3) {
       {0x1600, 2, 0x60FF0020, 4}, {0x1600, 0, 2, 1}, {0x1400, 2, 1, 1}, {0x1400, 1, 0x203, 4},
       // RPDO2-4 unused: invalid.
       {0x1401, 1, 0x80000303, 4}, {0x1402, 1, 0x80000403, 4}, {0x1403, 1, 0x80000503, 4},
-      // TPDO1: statusword + position actual; TPDO2: velocity actual.
+      // TPDO1: statusword + position actual, every SYNC; TPDO2: velocity actual, every 2nd SYNC.
       {0x1800, 1, 0xC0000183, 4}, {0x1A00, 0, 0, 1}, {0x1A00, 1, 0x60410010, 4},
       {0x1A00, 2, 0x60640020, 4}, {0x1A00, 0, 2, 1}, {0x1800, 2, 1, 1},
       {0x1800, 1, 0x40000183, 4},
       {0x1801, 1, 0xC0000283, 4}, {0x1A01, 0, 0, 1}, {0x1A01, 1, 0x606C0020, 4},
-      {0x1A01, 0, 1, 1}, {0x1801, 2, 1, 1}, {0x1801, 1, 0x40000283, 4},
+      {0x1A01, 0, 1, 1}, {0x1801, 2, 2, 1}, {0x1801, 1, 0x40000283, 4},
       {0x1802, 1, 0xC0000383, 4}, {0x1803, 1, 0xC0000483, 4},
       // Heartbeats, interpolation period, mode.
       {0x1017, 0, 100, 2}, {0x1016, 1, 0x007F012C, 4}, {0x60C2, 1, 10, 1},
@@ -74,6 +74,10 @@ TEST(StartupSdoTest, BadOptionsAreRejected) {
   options.producer_heartbeat_ms = 70000;
   EXPECT_FALSE(StartupSdoWrites(1, options, &error));
   EXPECT_EQ(error, "start-up SDO writes: heartbeat time 70000 ms is outside 0..65535");
+  options = {};
+  options.tpdo2_every_n_syncs = 241;
+  EXPECT_FALSE(StartupSdoWrites(1, options, &error));
+  EXPECT_EQ(error, "start-up SDO writes: TPDO2 every 241 SYNCs is outside 1..240");
   options = {};
   options.mode_of_operation = mode::kProfilePosition;
   EXPECT_FALSE(StartupSdoWrites(1, options, &error));

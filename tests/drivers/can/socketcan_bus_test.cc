@@ -132,16 +132,30 @@ TEST(SocketCanBusTest, CanUtilsSeeOurFramesAndWeSeeTheirs) {
   ASSERT_TRUE(bus);
   const std::string log = "/tmp/socketcan_bus_test_candump.log";
   std::remove(log.c_str());
-  std::thread candump([&] { std::system(("timeout 10 candump -L -n 3 vcan0 > " + log).c_str()); });
-  std::this_thread::sleep_for(std::chrono::milliseconds(500));  // candump's socket is bound
+  ASSERT_EQ(std::system(("stdbuf -oL candump -L vcan0 > " + log + " & echo $! > " + log + ".pid").c_str()), 0);
+  // Probe frames until candump records one (its socket is bound: a slow guest takes a while).
+  const CanFrame probe = CanFrame::Standard(0x7FF, {0xAA});
+  const auto lines = [&log] {
+    std::ifstream in(log);
+    std::vector<CandumpRecord> records;
+    std::string error;
+    ReadCandumpLog(in, &records, &error);
+    return records;
+  };
+  for (int i = 0; i < 100 && lines().empty(); ++i) {
+    ASSERT_TRUE(bus->Send(probe).ok());
+    std::this_thread::sleep_for(std::chrono::milliseconds(100));
+  }
+  ASSERT_FALSE(lines().empty()) << "candump recorded nothing in 10 s";
   const std::vector<CanFrame> sent = {CanFrame::Standard(0x181, {1, 2, 3, 4, 5, 6, 7, 8}),
                                       CanFrame::Extended(0x1ABCDEF0, {0x55}), CanFrame::Standard(0x80)};
   for (const CanFrame& frame : sent) ASSERT_TRUE(bus->Send(frame).ok());
-  candump.join();
-  std::ifstream in(log);
-  std::vector<CandumpRecord> records;
-  std::string error;
-  ASSERT_TRUE(ReadCandumpLog(in, &records, &error)) << error;
+  for (int i = 0; i < 100 && (lines().empty() || lines().back().frame != sent.back()); ++i) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(100));
+  }
+  std::system(("kill $(cat " + log + ".pid)").c_str());
+  std::vector<CandumpRecord> records = lines();
+  while (!records.empty() && records.front().frame == probe) records.erase(records.begin());
   ASSERT_EQ(records.size(), sent.size());
   for (size_t i = 0; i < sent.size(); ++i) {
     EXPECT_EQ(records[i].interface, "vcan0");

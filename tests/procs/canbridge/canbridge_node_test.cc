@@ -98,7 +98,7 @@ TEST(CanbridgeNodeTest, SyncAndHostHeartbeatEveryCycle) {
   EXPECT_NEAR(syncs, 200, 2);
   EXPECT_NEAR(rpdos, 200, 2);
   EXPECT_NEAR(base_commands, 200, 2);
-  EXPECT_NEAR(heartbeats, 10, 1);
+  EXPECT_NEAR(heartbeats, 1.0 / CanbridgeOptions{}.drives.host_heartbeat_period_s, 1);  // 20 at 50 ms
 }
 
 TEST(CanbridgeNodeTest, CommandsAreEncodedAndClamped) {

@@ -59,12 +59,12 @@ TEST(DriveLinkTest, StartupSequence) {
   ASSERT_EQ(out.size(), 1u);
   EXPECT_EQ(canopen::DecodeNmt(out[0], nullptr)->command, canopen::NmtCommand::kStartRemoteNode);
   EXPECT_EQ(link.phase(), DrivePhase::kOperational);
-  // Lost: no TPDO1 for 0.1 s, no heartbeat for 0.3 s (counted from NMT start).
+  // Lost: no TPDO1 for 0.1 s, no heartbeat for 0.5 s (counted from NMT start).
   EXPECT_EQ(link.LostReason(t + 0.05), "");
   EXPECT_NE(link.LostReason(t + 0.15).find("no TPDO1"), std::string::npos);
-  link.Handle(Tpdo1(DriveState::kSwitchOnDisabled), t + 0.29, &error);
-  EXPECT_EQ(link.LostReason(t + 0.28), "");
-  EXPECT_NE(link.LostReason(t + 0.35).find("no heartbeat"), std::string::npos);
+  link.Handle(Tpdo1(DriveState::kSwitchOnDisabled), t + 0.49, &error);
+  EXPECT_EQ(link.LostReason(t + 0.48), "");
+  EXPECT_NE(link.LostReason(t + 0.55).find("no heartbeat"), std::string::npos);
 }
 
 TEST(DriveLinkTest, NoBootUpNoAnswerAndAbort) {

@@ -7,6 +7,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <variant>
 
 #include "drivers/arm/canopen_ids.h"
@@ -180,6 +181,37 @@ TEST(DriveNodeTest, NmtStatesGateSdoAndPdo) {
   ASSERT_FALSE(b.out.empty());
   EXPECT_EQ(canopen::DecodeHeartbeat(b.out.front(), nullptr)->state, NmtState::kBootUp);
   EXPECT_EQ(b.drive.nmt_state(), NmtState::kPreOperational);
+}
+
+// TPDO2's transmission type from the start-up list (every 2nd SYNC): velocity on every other
+// SYNC, statusword and position (TPDO1) on each; type 1 (the power-on value) on each SYNC.
+TEST(DriveNodeTest, SynchronousTpdosGoOutOnEveryNthSync) {
+  Bench b;
+  b.Start();
+  const auto tpdo2_per_sync = [&b] {
+    std::vector<int> counts;
+    for (int i = 0; i < 6; ++i) {
+      b.Cycle(std::nullopt);
+      counts.push_back(static_cast<int>(OfFunction(b.out, canopen::CanopenFunction::kTpdo2).size()) * 10 +
+                       static_cast<int>(OfFunction(b.out, canopen::CanopenFunction::kTpdo1).size()));
+    }
+    return counts;
+  };
+  EXPECT_EQ(tpdo2_per_sync(), (std::vector<int>{11, 11, 11, 11, 11, 11}));  // type 1: both every SYNC
+  EXPECT_EQ(b.Write({0x1801, 2}, 1, 2), 0u);
+  const std::vector<int> counts = tpdo2_per_sync();
+  EXPECT_EQ(std::count(counts.begin(), counts.end(), 11), 3) << "TPDO2 on every 2nd SYNC";
+  EXPECT_EQ(std::count(counts.begin(), counts.end(), 1), 3) << "TPDO1 on every SYNC";
+  EXPECT_EQ(b.Write({0x1801, 2}, 1, 254), 0u);  // event-driven (manufacturer): never on SYNC
+  EXPECT_EQ(tpdo2_per_sync(), (std::vector<int>{1, 1, 1, 1, 1, 1}));
+  cia402::StartupOptions options;
+  const auto writes = cia402::StartupSdoWrites(kNode, options, nullptr);
+  ASSERT_TRUE(writes);
+  int tpdo2_type = -1;
+  for (const cia402::SdoWrite& w : *writes) {
+    if (w.address.index == 0x1801 && w.address.subindex == 2) tpdo2_type = static_cast<int>(w.value);
+  }
+  EXPECT_EQ(tpdo2_type, 2) << "the start-up list's default";
 }
 
 TEST(DriveNodeTest, FollowsTheTargetOnlyWhenOperationEnabled) {
