@@ -11,19 +11,25 @@
 //   3. a drive fault stops the robot (DRIVE_STATUS FAULT naming the drive), a FAULT_RESET on
 //      DRIVE_COMMAND brings it back to RUNNING;
 //   4. the command stream stops (the tracker is frozen with SIGSTOP): the bridge stops the robot
-//      (STOPPED, stale command) and recovers by itself once commands (zero) come again.
+//      (STOPPED, stale command) and recovers by itself once commands (zero) come again; the
+//      time from the last command to the stop frames on the bus is printed (from can.log).
 // The 100 ms stop deadlines are asserted on the bridge's simulated clock (canbridge_node_test);
 // this test checks the reactions through the real processes.
 
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <fstream>
 #include <functional>
+#include <optional>
 #include <memory>
 
 #include "core/common/angles.h"
+#include "drivers/can/candump_log.h"
+#include "procs/runtime/process_loop.h"
 #include "tests/procs/graph_test_support.h"
 #include "tests/procs/tracker/tracker_test_trajectory.h"
+#include "topay/control_command_t.hpp"
 #include "topay/drive_command_t.hpp"
 #include "topay/drive_status_t.hpp"
 #include "topay/motorsim_fault_t.hpp"
@@ -85,6 +91,7 @@ class CanLoopGraph : public testing::Test {
     lcm.subscribe(std::string(channels::TRACKER_STATUS), &Received::OnStatus, &rx_);
     lcm.subscribe(std::string(channels::SIM_STATUS), &Received::OnSim, &rx_);
     lcm.subscribe(std::string(channels::DRIVE_STATUS), &Received::OnDrive, &rx_);
+    lcm.subscribe(std::string(channels::CONTROL_COMMAND), &CanLoopGraph::OnCommand, this);
   }
 
   std::string Logs() const {
@@ -132,6 +139,31 @@ class CanLoopGraph : public testing::Test {
     EXPECT_EQ(rx_.statuses.back().trajectory_id, id) << what;
   }
 
+  void OnCommand(const lcm::ReceiveBuffer*, const std::string&, const control_command_t*) {
+    command_utimes_.push_back(procs::NowUtime());
+  }
+
+  std::int64_t LastCommandBefore(std::int64_t utime) const {
+    std::int64_t last = 0;
+    for (std::int64_t u : command_utimes_) last = u <= utime ? std::max(last, u) : last;
+    return last;
+  }
+
+  // Seconds from `utime` (us since the epoch) to the first RPDO1 of a drive (0x201-0x207) whose
+  // controlword is 0x0002 or 0x0000 in the candump log, or nullopt.
+  static std::optional<double> FirstStopFrameAfter(const std::string& log, std::int64_t utime) {
+    std::ifstream in(log);
+    std::vector<can::CandumpRecord> records;
+    std::string error;
+    if (!can::ReadCandumpLog(in, &records, &error)) return std::nullopt;
+    for (const can::CandumpRecord& r : records) {
+      if (r.timestamp_us <= utime || r.frame.extended || r.frame.id < 0x201 || r.frame.id > 0x207) continue;
+      const int controlword = r.frame.data[0] | (r.frame.data[1] << 8);
+      if (controlword == 0x0002 || controlword == 0x0000) return 1e-6 * static_cast<double>(r.timestamp_us - utime);
+    }
+    return std::nullopt;
+  }
+
   void InjectFault(std::int8_t kind, int joint, double value) {
     motorsim_fault_t fault{};
     fault.kind = kind;
@@ -140,20 +172,25 @@ class CanLoopGraph : public testing::Test {
     watcher_->lcm().publish(std::string(channels::MOTORSIM_FAULT), &fault);
   }
 
-  void TearDown() override {
+  // Stops every process (SIGTERM) and expects a clean exit of each.
+  void StopGraph() {
     if (tracker_ > 0) kill(tracker_, SIGCONT);
     for (pid_t pid : pids_) kill(pid, SIGTERM);
     for (pid_t pid : pids_) {
       const int status = WaitFor(pid, 5.0);
       EXPECT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 0) << "pid " << pid << "\n" << Logs();
     }
+    pids_.clear();
   }
+
+  void TearDown() override { StopGraph(); }
 
   std::string dir_;
   std::vector<pid_t> pids_;
   pid_t tracker_ = -1;
   std::unique_ptr<HeartbeatWatcher> watcher_;  // made after the test entered its namespace
   Received rx_;
+  std::vector<std::int64_t> command_utimes_;  // receipt times of CONTROL_COMMAND, us
 };
 
 TEST_F(CanLoopGraph, TheTrackerDrivesThePlantThroughCanFaultsStopItAndItRecovers) {
@@ -198,6 +235,7 @@ TEST_F(CanLoopGraph, TheTrackerDrivesThePlantThroughCanFaultsStopItAndItRecovers
   ASSERT_TRUE(watcher_->SpinUntil([&] { return BridgeIs(drive_status_t::RUNNING); }, 5.0)) << Logs();
 
   // 4. The command stream stops: STOPPED (stale command), then RUNNING again by itself.
+  const std::int64_t freeze_utime = procs::NowUtime();
   kill(tracker_, SIGSTOP);
   ASSERT_TRUE(watcher_->SpinUntil([&] { return BridgeIs(drive_status_t::STOPPED); }, 2.0)) << Logs();
   EXPECT_NE(rx_.drives.back().stop_reason.find("stale"), std::string::npos) << rx_.drives.back().stop_reason;
@@ -206,6 +244,20 @@ TEST_F(CanLoopGraph, TheTrackerDrivesThePlantThroughCanFaultsStopItAndItRecovers
 
   ASSERT_FALSE(rx_.sims.empty());
   EXPECT_EQ(rx_.sims.back().contact_events, 0);
+
+  // The stale-command stop in the real processes: from the last CONTROL_COMMAND this test saw
+  // before the freeze to the bridge's first stop controlword (quick stop 0x0002 or disable
+  // voltage 0x0000 in a drive's RPDO1) in its recorded candump log. A figure (the 100 ms
+  // deadline is asserted on the bridge's simulated clock, canbridge_node_test); here it must
+  // only be prompt.
+  const std::int64_t last_command_utime = LastCommandBefore(freeze_utime);
+  ASSERT_GT(last_command_utime, 0) << "no CONTROL_COMMAND seen before the freeze";
+  StopGraph();
+  const std::optional<double> stop_s = FirstStopFrameAfter(dir_ + "/can.log", last_command_utime);
+  ASSERT_TRUE(stop_s.has_value()) << "no stop controlword in can.log after the last command";
+  std::printf("command stream lost: stop frames %.1f ms after the last CONTROL_COMMAND\n", *stop_s * 1e3);
+  EXPECT_GT(*stop_s, 0.05);  // not before the timeout (0.1 s, one 5 ms cycle early)
+  EXPECT_LT(*stop_s, 0.2);
 }
 
 }  // namespace
