@@ -8,25 +8,17 @@
 #include <fstream>
 
 #include "core/common/error.h"
+#include "tests/common/config_test_file.h"
 
 namespace topay::canbridge {
 namespace {
 
 std::string Write(const std::string& name, const std::string& text) {
-  const std::string dir = std::string(TOPAY_BINARY_DIR) + "/test_out/procs/canbridge_options";
-  std::filesystem::create_directories(dir);
-  const std::string path = dir + "/" + name;
-  std::ofstream(path) << text;
-  return path;
+  return topay::test::WriteTestFile("procs/canbridge_options", name, text);
 }
 
 std::string ErrorOf(const std::string& text) {
-  try {
-    LoadCanbridgeOptions(Write("bad.yaml", text));
-  } catch (const ConfigError& e) {
-    return e.what();
-  }
-  return "";
+  return topay::test::ConfigErrorOf([&] { LoadCanbridgeOptions(Write("bad.yaml", text)); });
 }
 
 TEST(CanbridgeOptionsTest, ShippedConfigIsTheDefaults) {

@@ -9,25 +9,17 @@
 #include <fstream>
 
 #include "core/common/error.h"
+#include "tests/common/config_test_file.h"
 
 namespace topay::estimator {
 namespace {
 
 std::string Write(const std::string& name, const std::string& text) {
-  const std::filesystem::path dir = std::filesystem::path(TOPAY_BINARY_DIR) / "test_out" / "estimator_config";
-  std::filesystem::create_directories(dir);
-  const std::string path = (dir / name).string();
-  std::ofstream(path) << text;
-  return path;
+  return topay::test::WriteTestFile("estimator_config", name, text);
 }
 
 std::string ErrorOf(const std::string& path) {
-  try {
-    LoadEstimatorProcessOptions(path);
-  } catch (const ConfigError& e) {
-    return e.what();
-  }
-  return "";
+  return topay::test::ConfigErrorOf([&] { LoadEstimatorProcessOptions(path); });
 }
 
 TEST(EstimatorConfig, ShippedConfigRestatesTheDefaults) {

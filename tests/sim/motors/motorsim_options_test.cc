@@ -6,17 +6,13 @@
 #include <gtest/gtest.h>
 
 #include "core/common/error.h"
+#include "tests/common/config_test_file.h"
 
 namespace topay::sim::motors {
 namespace {
 
 std::string ErrorOf(const std::string& yaml) {
-  try {
-    ParseMotorSimOptions(yaml, "m.yaml");
-  } catch (const ConfigError& e) {
-    return e.what();
-  }
-  return "";
+  return topay::test::ConfigErrorOf([&] { ParseMotorSimOptions(yaml, "m.yaml"); });
 }
 
 TEST(MotorSimOptionsTest, ShippedConfigHasTheDefaults) {
