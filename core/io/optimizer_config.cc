@@ -85,6 +85,7 @@ void ReadOptimizerOptions(YamlSection section, TrajectoryOptimizerOptions* o) {
   section.Read("clearance_escalation_step_m", &o->clearance_escalation_step_m);
   section.Read("joint_escalation_step_rad", &o->joint_escalation_step_rad);
   section.Read("rate_escalation_step", &o->rate_escalation_step);
+  section.Read("max_time_stretch", &o->max_time_stretch);
   section.Read("ee_position_tolerance_m", &o->ee_position_tolerance_m);
   section.Read("ee_orientation_tolerance_rad", &o->ee_orientation_tolerance_rad);
   ReadAlm(section.Section("alm"), &o->alm);

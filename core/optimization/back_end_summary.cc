@@ -111,6 +111,9 @@ std::string BackEndSummary::Report() const {
                   num_pieces, duration_s, ee_position_error_m, ee_orientation_error_rad);
   }
   if (!endpoint_relief.empty()) out << "  endpoint relief: " << endpoint_relief << "\n";
+  if (time_stretch != 1.0) {
+    out << Format("  time stretch: every duration x %.3f (rate limits only)\n", time_stretch);
+  }
   out << Format("  iterations: stage 1 %.0f, stage 2 %.0f (%.0f outer, final rho %.3g",
                 stage1_iterations, stage2_iterations, outer_iterations, final_rho)
       << Format(", %.0f penalty escalations)\n", penalty_escalations);

@@ -79,6 +79,21 @@ void TightenViolatedThresholds(const FieldFeasibilityReport& report,
   }
 }
 
+/// True if the report's only violations are rate limits (every clearance and joint position
+/// within its requirement, some rate above its tolerance).
+bool OnlyRatesViolated(const FieldFeasibilityReport& report,
+                       const FieldFeasibilityOptions& options) {
+  return report.min_base_clearance_m >= 0.0 && report.min_arm_clearance_m >= 0.0 &&
+         report.min_self_clearance_m >= 0.0 && report.min_chassis_clearance_m >= 0.0 &&
+         report.max_joint_excess_rad <= options.joint_position_tolerance_rad &&
+         report.max_rate_ratio > 1.0 + options.rate_tolerance;
+}
+
+/// True for the rates that scale with 1 / k^2 under a time stretch by k (a, beta, qdd<i>).
+bool IsAccelerationRate(const std::string& name) {
+  return name == "a" || name == "beta" || name.rfind("qdd", 0) == 0;
+}
+
 }  // namespace
 
 void CheckTrajectoryOptimizerOptions(const TrajectoryOptimizerOptions& o) {
@@ -94,6 +109,8 @@ void CheckTrajectoryOptimizerOptions(const TrajectoryOptimizerOptions& o) {
           "joint_escalation_step_rad must be finite and >= 0");
   require(o.rate_escalation_step >= 0.0 && o.rate_escalation_step < 1.0,
           "rate_escalation_step must be in [0, 1)");
+  require(std::isfinite(o.max_time_stretch) && o.max_time_stretch >= 1.0,
+          "max_time_stretch must be finite and >= 1");
   require(o.objective.panels_per_piece >= 1, "objective.panels_per_piece must be >= 1");
   require(o.objective.sample_chunks >= 1, "objective.sample_chunks must be >= 1");
   require(o.feasibility.sample_period_s > 0.0, "feasibility.sample_period_s must be > 0");
@@ -266,6 +283,7 @@ void TrajectoryOptimizer::RunStage2(Run* run) const {
   for (int escalation = 0;; ++escalation) {
     if (!RunAugmentedLagrangian(run, &lambda, &rho)) break;
     if (CheckResult(run)) break;  // success
+    if (StretchTime(run)) break;  // success, slower
     if (summary.feasibility.feasible || escalation == options_.max_penalty_escalations) break;
     const FieldFeasibilityReport& report = summary.feasibility;
     EscalateViolatedPenalties(report, options_.feasibility, options_.penalty_escalation_factor,
@@ -296,6 +314,42 @@ bool TrajectoryOptimizer::RunAugmentedLagrangian(Run* run, Vector6d* lambda, dou
     AlmUpdate(options_.alm, r, lambda, rho);  // PHR-ALM update, eq. (7)
   }
   return true;
+}
+
+bool TrajectoryOptimizer::StretchTime(Run* run) const {
+  constexpr int kMaxSteps = 4;
+  BackEndSummary& summary = run->summary;
+  const FieldFeasibilityOptions& check = options_.feasibility;
+  if (!run->checked || options_.max_time_stretch <= 1.0 ||
+      !run->problem.start_rates.IsAtRest() || !OnlyRatesViolated(summary.feasibility, check) ||
+      summary.ee_position_error_m > options_.ee_position_tolerance_m ||
+      summary.ee_orientation_error_rad > options_.ee_orientation_tolerance_rad) {
+    return false;
+  }
+  TrajectoryObjective& objective = *run->objective;
+  const Eigen::VectorXd x_before = run->x;
+  Eigen::VectorXd durations_s;
+  Eigen::MatrixXd waypoints;
+  Eigen::VectorXd end;
+  objective.Unpack(run->x.data(), &durations_s, &waypoints, &end);
+  const double target = 1.0 - options_.rate_escalation_step;
+  double total = 1.0;
+  for (int step = 0; step < kMaxSteps && OnlyRatesViolated(summary.feasibility, check); ++step) {
+    const double ratio = summary.feasibility.max_rate_ratio / target;
+    // Velocities fall by 1 / k, accelerations by 1 / k^2.
+    const double k = IsAccelerationRate(summary.feasibility.worst_rate) ? std::sqrt(ratio) : ratio;
+    if (total * k > options_.max_time_stretch) break;
+    total *= k;
+    durations_s *= k;
+    run->x = objective.Pack(durations_s, waypoints, end);
+    if (CheckResult(run)) {
+      summary.time_stretch = total;
+      return true;
+    }
+  }
+  run->x = x_before;  // the unstretched result and its check, as the caller had them
+  CheckResult(run);
+  return false;
 }
 
 bool TrajectoryOptimizer::CopyTrajectory(Run* run) const {
@@ -352,6 +406,7 @@ void TrajectoryOptimizer::Finish(Run* run) const {
     summary.reason = "the optimization diverged: the final objective is not finite";
     return;
   }
+  if (run->timed_out) StretchTime(run);  // RunStage2 stopped before trying it
   Conclude(run);
 }
 

@@ -52,6 +52,19 @@ struct TrajectoryOptimizerOptions : BackEndOptions {
   double joint_escalation_step_rad = 0.005;
   double rate_escalation_step = 0.01;
 
+  // ---- Time stretch (ours) -----------------------------------------------------------------
+  /// A result whose only shortfall on the fields is a rate limit (v-omega, a, beta, q', q''),
+  /// from a start at rest, is slowed down uniformly: every piece duration x k. The path in
+  /// space is unchanged: with zero velocity and acceleration at both ends, the MINCO
+  /// trajectory of the durations k T_j is the old one at t / k (the minimum-jerk conditions
+  /// (15)-(20) are invariant under a uniform time scaling), so velocities fall by 1 / k and
+  /// accelerations by 1 / k^2 while every clearance, joint position and the end state stay.
+  /// k is chosen from the worst rate (ratio / target for a velocity, sqrt of it for an
+  /// acceleration; target 1 - rate_escalation_step), up to max_time_stretch in total, and
+  /// the check repeated (at most 4 times). 1: never stretch. Tried after each ALM run, before
+  /// a penalty escalation.
+  double max_time_stretch = 2.0;
+
   // ---- Endpoints inside the margins (TrajectoryProblem::exact_prefix_states / suffix) ------
   /// With exact_prefix_states > 0 (exact_suffix_states > 0) the clearance thresholds of the
   /// penalties and of the field check are relieved by the start's (the path's last state's)
@@ -138,6 +151,10 @@ class TrajectoryOptimizer : public TrajectoryBackEnd {
   void RunStages(Run* run) const;
   /// Stage 1: the path fit; false if cancelled or out of time.
   bool RunStage1(Run* run) const;
+  /// After a failed CheckResult: the time stretch of max_time_stretch's comment if it
+  /// applies; true if the stretched trajectory passes CheckResult (x then holds it), else x
+  /// and the summary's check are as before.
+  bool StretchTime(Run* run) const;
   /// Stage 2: ALM rounds with penalty escalation until a success, a feasible result or the
   /// escalation limit.
   void RunStage2(Run* run) const;

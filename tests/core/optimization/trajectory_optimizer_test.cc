@@ -274,6 +274,71 @@ TEST_F(TrajectoryOptimizerTest, SummaryRebuildsTheOptimizedTrajectory) {
   EXPECT_NE(summary.Report().find("success"), std::string::npos);
 }
 
+// Options whose optimum drives too fast: the rate penalties almost off, time expensive, no
+// escalation, so the result is short only of rate limits (the time stretch's case).
+TrajectoryOptimizerOptions TooFastOptions(double max_time_stretch) {
+  TrajectoryOptimizerOptions options;
+  options.run_stage1 = false;
+  options.max_penalty_escalations = 0;
+  options.objective.time_weight = 5000.0;
+  SamplePenaltyOptions& penalties = options.objective.penalties;
+  penalties.velocity_omega_weight = 1e-3;
+  penalties.acceleration_weight = 1e-3;
+  penalties.yaw_acceleration_weight = 1e-3;
+  penalties.joint_velocity_weight = 1e-3;
+  penalties.joint_acceleration_weight = 1e-3;
+  options.max_time_stretch = max_time_stretch;
+  return options;
+}
+
+// A result short only of rate limits, from a start at rest, is slowed down uniformly: the
+// same path at t / k, which then passes the field check and the independent validator; off
+// (1) or from a moving start it stays a failure.
+TEST_F(TrajectoryOptimizerTest, ResultShortOnlyOfRateLimitsIsSlowedDownToPass) {
+  const WholeBodyState start = MakeState(0.0, 0.0, 0.0, ReadyJoints());
+  const WholeBodyState goal = MakeState(3.0, -1.0, -1.0, ReadyJoints());
+  const TrajectoryProblem problem = Problem(start, goal);
+  const WholeBodyPath path = StraightPath(start, goal);
+  const TrajectoryOptimizer off(*world_->kinematics, world_->base_field(), world_->arm_field(),
+                                TooFastOptions(1.0));
+  const BackEndSummary fast = off.Optimize(problem, path);
+  ASSERT_EQ(fast.status, BackEndStatus::kNotConverged) << fast.Report();
+  ASSERT_GT(fast.feasibility.max_rate_ratio, 1.05) << fast.Report();
+  ASSERT_GE(fast.feasibility.min_base_clearance_m, 0.0);
+  ASSERT_GE(fast.feasibility.min_arm_clearance_m, 0.0);
+  EXPECT_EQ(fast.time_stretch, 1.0);
+
+  const TrajectoryOptimizer on(*world_->kinematics, world_->base_field(), world_->arm_field(),
+                               TooFastOptions(2.0 * fast.feasibility.max_rate_ratio));
+  const BackEndSummary slowed = on.Optimize(problem, path);
+  ASSERT_EQ(slowed.status, BackEndStatus::kSuccess) << slowed.Report();
+  std::printf("%s", slowed.Report().c_str());
+  EXPECT_GT(slowed.time_stretch, 1.0);
+  EXPECT_LE(slowed.time_stretch, fast.feasibility.max_rate_ratio / 0.99 + 1e-9);
+  EXPECT_NE(slowed.Report().find("time stretch"), std::string::npos);
+  EXPECT_NEAR(slowed.duration_s, slowed.time_stretch * fast.duration_s, 1e-6 * fast.duration_s);
+  const ArcYawTrajectory before = fast.MakeTrajectory();
+  const ArcYawTrajectory after = slowed.MakeTrajectory();
+  TrajectorySample p = before.MakePoint(), q = after.MakePoint();
+  for (double u = 0.0; u <= 1.0; u += 0.05) {  // the same path, k times slower
+    before.Evaluate(u * before.duration_s(), &p);
+    after.Evaluate(u * after.duration_s(), &q);
+    EXPECT_NEAR(p.state.x_m, q.state.x_m, 1e-6) << u;
+    EXPECT_NEAR(p.state.y_m, q.state.y_m, 1e-6) << u;
+    EXPECT_NEAR(p.state.yaw_rad, q.state.yaw_rad, 1e-6) << u;
+    EXPECT_LT((p.state.q_rad - q.state.q_rad).cwiseAbs().maxCoeff(), 1e-6) << u;
+    EXPECT_NEAR(p.v_mps, slowed.time_stretch * q.v_mps, 1e-6) << u;
+  }
+  const ValidationReport report = Validate(after, *world_, problem);
+  EXPECT_TRUE(report.ok) << report.Report();
+
+  TrajectoryProblem moving = problem;  // a moving start: a stretch would change its rates
+  moving.start_rates = WholeBodyRates::Zero(7);
+  moving.start_rates.v_mps = 0.2;
+  const BackEndSummary not_stretched = on.Optimize(moving, path);
+  EXPECT_EQ(not_stretched.time_stretch, 1.0) << not_stretched.Report();
+}
+
 TEST(TrajectoryOptimizerOptionsTest, RejectsOptionsOutOfRange) {
   TrajectoryOptimizerOptions options;
   options.alm.rho_growth = 0.5;
@@ -283,6 +348,9 @@ TEST(TrajectoryOptimizerOptionsTest, RejectsOptionsOutOfRange) {
   EXPECT_THROW(CheckTrajectoryOptimizerOptions(options), std::invalid_argument);
   options = TrajectoryOptimizerOptions();
   options.lbfgs.memory = 0;
+  EXPECT_THROW(CheckTrajectoryOptimizerOptions(options), std::invalid_argument);
+  options = TrajectoryOptimizerOptions();
+  options.max_time_stretch = 0.9;
   EXPECT_THROW(CheckTrajectoryOptimizerOptions(options), std::invalid_argument);
   EXPECT_NO_THROW(CheckTrajectoryOptimizerOptions(TrajectoryOptimizerOptions()));
   // Penalty options are checked when the optimizer is built.
