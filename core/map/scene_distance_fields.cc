@@ -7,6 +7,7 @@
 #include <string>
 #include <utility>
 
+#include "core/map/box_distance_field.h"
 #include "core/map/footprint_distance_field.h"
 
 namespace topay {
@@ -85,6 +86,49 @@ SignedDistanceField2 BuildExactBaseField(const Scene& scene, const GridGeometry2
   return field;
 }
 
+// The 3D field from the boxes rasterised on its grid, by the EDT.
+SignedDistanceField3 BuildRasterisedArmField(const Scene& scene, const GridGeometry3& geometry,
+                                             const SceneDistanceFieldsOptions& options,
+                                             std::stop_token stop,
+                                             SceneDistanceFieldsSummary* summary) {
+  std::chrono::steady_clock::time_point phase = std::chrono::steady_clock::now();
+  OccupancyGrid3 occupancy(geometry);
+  for (std::size_t i = 0; i < scene.boxes.size(); ++i) {
+    if (i % 1024 == 0 && stop.stop_requested()) {
+      summary->stopped = true;
+      break;
+    }
+    try {
+      occupancy.AddBox(scene.boxes[i]);
+    } catch (const std::invalid_argument& error) {
+      throw std::invalid_argument("scene box " + std::to_string(i) + ": " + error.what());
+    }
+  }
+  summary->rasterize_3d_s = SecondsSince(phase);
+  summary->num_occupied_3d = occupancy.CountOccupied();
+  phase = std::chrono::steady_clock::now();
+  EdtWorkspace workspace;
+  SignedDistanceField3 field = SignedDistanceField3::Build(occupancy, options.field, &workspace);
+  summary->build_3d_s = SecondsSince(phase);
+  return field;
+}
+
+// The 3D field from the exact box distances (no rasterisation).
+SignedDistanceField3 BuildExactArmField(const Scene& scene, const GridGeometry3& geometry,
+                                        const SceneDistanceFieldsOptions& options,
+                                        std::stop_token stop,
+                                        SceneDistanceFieldsSummary* summary) {
+  const std::chrono::steady_clock::time_point phase = std::chrono::steady_clock::now();
+  BoxDistanceFieldSummary arm_summary;
+  SignedDistanceField3 field = BuildBoxDistanceField(geometry, scene.boxes,
+                                                     options.arm_exact_cap_m, &arm_summary, stop);
+  summary->stopped = summary->stopped || arm_summary.stopped;
+  summary->num_occupied_3d = std::count_if(field.values().begin(), field.values().end(),
+                                           [](float v) { return v <= 0.0f; });
+  summary->build_3d_s = SecondsSince(phase);
+  return field;
+}
+
 }  // namespace
 
 SceneDistanceFields BuildSceneDistanceFields(const Scene& scene,
@@ -102,6 +146,11 @@ SceneDistanceFields BuildSceneDistanceFields(const Scene& scene,
           std::to_string(options.base_upper_band_offset_m));
     }
   }
+  if (!(std::isfinite(options.arm_exact_cap_m) && options.arm_exact_cap_m >= 0.0)) {
+    throw std::invalid_argument(
+        "SceneDistanceFieldsOptions: arm_exact_cap_m must be finite and >= 0, got " +
+        std::to_string(options.arm_exact_cap_m));
+  }
   if (!(std::isfinite(options.base_exact_cap_m) && options.base_exact_cap_m >= 0.0)) {
     throw std::invalid_argument(
         "SceneDistanceFieldsOptions: base_exact_cap_m must be finite and >= 0, got " +
@@ -114,33 +163,17 @@ SceneDistanceFields BuildSceneDistanceFields(const Scene& scene,
       BaseGeometry(geometry, bounds_W_m, options.base_resolution_m);
   SceneDistanceFieldsSummary summary;
 
-  Clock::time_point phase = Clock::now();
-  OccupancyGrid3 occupancy_3d(geometry);
-  for (std::size_t i = 0; i < scene.boxes.size(); ++i) {
-    if (i % 1024 == 0 && stop.stop_requested()) {
-      summary.stopped = true;
-      break;
-    }
-    try {
-      occupancy_3d.AddBox(scene.boxes[i]);
-    } catch (const std::invalid_argument& error) {
-      throw std::invalid_argument("scene box " + std::to_string(i) + ": " + error.what());
-    }
-  }
-  summary.rasterize_3d_s = SecondsSince(phase);
-
-  phase = Clock::now();
+  SignedDistanceField3 field_3d = options.arm_exact_cap_m > 0.0
+                                      ? BuildExactArmField(scene, geometry, options, stop, &summary)
+                                      : BuildRasterisedArmField(scene, geometry, options, stop,
+                                                                &summary);
   EdtWorkspace workspace;
-  SignedDistanceField3 field_3d = SignedDistanceField3::Build(occupancy_3d, options.field, &workspace);
-  summary.build_3d_s = SecondsSince(phase);
-
   SignedDistanceField2 field_2d = options.base_exact_cap_m > 0.0
                                       ? BuildExactBaseField(scene, base_geometry, options, stop,
                                                             &summary)
                                       : BuildRasterisedBaseField(scene, base_geometry, options,
                                                                  &workspace, &summary);
   summary.num_cells_3d = geometry.NumCells();
-  summary.num_occupied_3d = occupancy_3d.CountOccupied();
   summary.num_cells_2d = base_geometry.NumCells();
   summary.num_occupied_2d = std::count_if(field_2d.values().begin(), field_2d.values().end(),
                                           [](float v) { return v <= 0.0f; });

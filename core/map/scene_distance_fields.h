@@ -41,6 +41,11 @@ struct SceneDistanceFieldsOptions {
   /// cell centres, capped at this value (m), for each band (BuildFootprintDistanceField;
   /// margin cell size / sqrt(2)). Must be finite and >= 0.
   double base_exact_cap_m = 0.0;
+  /// 0 (default): the 3D field is the EDT of the boxes rasterised on its grid (exactness
+  /// margin sqrt(3) x the cell size). > 0: exact distances to the boxes at the cell centres,
+  /// capped at this value (m) (BuildBoxDistanceField; margin sqrt(3) / 2 x the cell size).
+  /// Must be finite and >= 0.
+  double arm_exact_cap_m = 0.0;
   /// Placement of the zero level, for both fields.
   SignedDistanceFieldOptions field;
   /// Volume the 3D field covers (and, in xy, the 2D one); unset: the scene's bounds_W_m.

@@ -78,7 +78,9 @@ struct VoxelMapFieldsOptions {
 /// The options matching the planner's box-built fields (e.g. PlannerFieldOptions) over
 /// `bounds_W_m`: the same voxel and base cell sizes, bands, offset and zero level; the base cap
 /// is scene_options.base_exact_cap_m (1.0 m if 0, the rasterised EDT mode, which this map does
-/// not use).
+/// not use). This map's 3D field is an EDT field (margin sqrt(3) x the voxel size): if the
+/// scene options build an exact one (arm_exact_cap_m > 0, margin half that), the upper band's
+/// top, which holds the 3D margin (PlannerFieldOptions), is raised by the difference.
 VoxelMapFieldsOptions VoxelMapFieldsOptionsFrom(const SceneDistanceFieldsOptions& scene_options,
                                                 const Eigen::AlignedBox3d& bounds_W_m);
 

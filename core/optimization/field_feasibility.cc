@@ -197,7 +197,7 @@ FieldFeasibilityReport CheckFeasibilityOnFields(const ArcYawTrajectory& trajecto
   }
   const FieldMargins margins{
       options.base_field_margin_m.value_or(base_field.exactness_margin_m()),
-      options.arm_field_margin_m.value_or(std::sqrt(3.0) * arm_field.geometry().resolution_m)};
+      options.arm_field_margin_m.value_or(arm_field.exactness_margin_m())};
   FieldFeasibilityReport report;
   Checker check(&report);
   TrajectorySample point = trajectory.MakePoint();

@@ -159,7 +159,7 @@ SamplePenalties::SamplePenalties(const Kinematics& kinematics,
   const double base_margin = options_.base_field_margin_m.value_or(
       base_field.exactness_margin_m());
   const double arm_margin =
-      options_.arm_field_margin_m.value_or(std::sqrt(3.0) * arm_field.geometry().resolution_m);
+      options_.arm_field_margin_m.value_or(arm_field.exactness_margin_m());
   CheckNonNegative(base_margin, "base_field_margin_m");
   CheckNonNegative(arm_margin, "arm_field_margin_m");
   base_threshold_m_ = options_.base_radius_factor * model.base_cylinder.radius_m + base_margin;

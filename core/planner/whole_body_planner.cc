@@ -62,7 +62,7 @@ TrajectoryOptimizerOptions MarginLevelOptions(const WholeBodyPlannerOptions& opt
   penalties.base_field_margin_m =
       penalties.base_field_margin_m.value_or(base_field.exactness_margin_m()) + extra_m;
   penalties.arm_field_margin_m =
-      penalties.arm_field_margin_m.value_or(std::sqrt(3.0) * arm_field.geometry().resolution_m) +
+      penalties.arm_field_margin_m.value_or(arm_field.exactness_margin_m()) +
       extra_m;
   return optimizer;
 }

@@ -18,7 +18,7 @@ namespace topay {
 /// tops where no arm configuration is valid (the authors' code's "weak point" of the reference
 /// harness), and the arm search on them is bound to fail.
 /// arm_margin_m: the margin of the arm spheres on the 3D field (WholeBodyValidity's default is
-/// sqrt(3) x the 3D field's resolution). A sphere is rigid when its position varies by less
+/// the 3D field's exactness_margin_m()). A sphere is rigid when its position varies by less
 /// than 1 um over q = 0 and 64 seeded random joint vectors within the limits.
 HeightBand FrontEndBaseBand(const Kinematics& kinematics, double arm_margin_m);
 
@@ -47,8 +47,8 @@ RigidLowerBody RigidLowerBodyOf(const Kinematics& kinematics);
 /// offset_band) already keeps clear wherever the base cylinder passes its own field check
 /// (field >= radius + margin): a rigid sphere lying within the band's heights and within
 /// radius - offset of the base axis. Such a sphere is then checked exactly by the 2D field (at
-/// its 2D margin) instead of by the 3D field at the larger 3D margin (sqrt(3) x 0.05 =
-/// 0.087 m), which lets the base pass 6 % more of the Tables large tasks (docs/benchmarks.md).
+/// its 2D margin) instead of by the 3D field at the larger 3D margin (sqrt(3) / 2 x 0.05 =
+/// 0.043 m), which lets the base pass 6 % more of the Tables large tasks (docs/benchmarks.md).
 /// All spheres if the field has no offset band. In increasing index order.
 std::vector<int> SpheresToCheckOnArmField(const Kinematics& kinematics,
                                           const SignedDistanceField2& base_field);

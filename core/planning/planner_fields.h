@@ -7,9 +7,11 @@ namespace topay {
 
 /// The distance-field settings the planner is tuned for (front end and back end), in one place
 /// so that the benchmark, the CLI and the tests map scenes alike:
-///  - 3D arm field at 0.05 m: the arm's exactness margin (WholeBodyValidityOptions) is
-///    sqrt(3) x 0.05 = 0.087 m. At the benchmark's 0.1 m it would be 0.173 m, too much to
-///    work near table tops and floating boxes;
+///  - 3D arm field at 0.05 m of exact box distances at the cell centres, capped at 1.0 m
+///    (SceneDistanceFieldsOptions::arm_exact_cap_m): the arm's exactness margin
+///    (WholeBodyValidityOptions) is sqrt(3) / 2 x 0.05 = 0.043 m (an EDT field's would be
+///    sqrt(3) x 0.05 = 0.087 m, which kept the base from under table tops less than 0.087 m
+///    above the rigid shoulder; at the benchmark's 0.1 m it would be 0.173 m);
 ///  - 2D base field at 0.01 m of exact footprint distances at the cell centres, capped at
 ///    1.0 m (SceneDistanceFieldsOptions::base_exact_cap_m, above every distance the planner
 ///    compares with): the base's margin is 0.01 / sqrt(2) = 0.007 m (an EDT field's would be

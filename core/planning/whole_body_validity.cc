@@ -27,14 +27,10 @@ namespace {
 //      sqrt(n)/2 res (attained at the cell's centre).
 // Hence field(p) <= d(p) + sqrt(n) res, and field(p) >= r + sqrt(n) res implies d(p) >= r.
 // A field of exact (possibly capped) distances at the centres (BuildFootprintDistanceField)
-// has value(c) <= d(c) in (1), so only (2) remains: sqrt(n)/2 res. The 2D field states its
-// own bound (SignedDistanceField2::exactness_margin_m), which is the base's default.
+// (BuildBoxDistanceField in 3D) has value(c) <= d(c) in (1), so only (2) remains:
+// sqrt(n)/2 res. Each field states its own bound (exactness_margin_m), the default margin.
 // The exact base test (cylinder from the ground to the chassis top) equals the 2D distance to
 // the footprints of the boxes in the base band, which is what the 2D field rasterises.
-double DefaultMargin(double resolution_m, int dimension) {
-  return std::sqrt(static_cast<double>(dimension)) * resolution_m;
-}
-
 double ResolveMargin(const std::optional<double>& margin, double default_m, const char* name) {
   const double value = margin.value_or(default_m);
   if (!(value >= 0.0) || !std::isfinite(value)) {
@@ -96,7 +92,7 @@ WholeBodyValidity::WholeBodyValidity(const Kinematics& kinematics,
   base_margin_m_ = ResolveMargin(
       options.base_margin_m, base_field.exactness_margin_m(), "base_margin_m");
   arm_margin_m_ = ResolveMargin(
-      options.arm_margin_m, DefaultMargin(arm_field.geometry().resolution_m, 3), "arm_margin_m");
+      options.arm_margin_m, arm_field.exactness_margin_m(), "arm_margin_m");
 }
 
 WholeBodyValidityWorkspace WholeBodyValidity::MakeWorkspace() const {

@@ -25,7 +25,8 @@ struct WholeBodyValidityOptions {
   /// sqrt(2) for exact footprint distances), so a field-valid base is exactly clear.
   std::optional<double> base_margin_m;
   /// Same for every arm sphere on the 3D field: field3(p_WS) >= r_S + arm_margin_m.
-  /// Unset: sqrt(3) x the 3D field's resolution (same proof in 3D).
+  /// Unset: the 3D field's exactness_margin_m() (same proof in 3D: sqrt(3) x the cell size
+  /// for an EDT field, sqrt(3) / 2 x it for exact box distances, BuildBoxDistanceField).
   std::optional<double> arm_margin_m;
   /// Self-collision: every self pair distance and every chassis margin must exceed this (m).
   /// Exact (no field). Note the TopAY arm's lowest sphere sits a constant 5 mm above the

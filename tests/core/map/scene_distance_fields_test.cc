@@ -203,6 +203,33 @@ TEST(SceneDistanceFieldsTest, ExactBaseFieldHoldsFootprintDistances) {
   EXPECT_FALSE(BuildSceneDistanceFields(TableScene(), {}).base_field_2d.offset_band().has_value());
 }
 
+// arm_exact_cap_m: exact box distances at the 3D cell centres, half the EDT field's margin;
+// the same occupied cells counted; a bad cap refused naming it.
+TEST(SceneDistanceFieldsTest, ExactArmFieldHoldsBoxDistances) {
+  SceneDistanceFieldsOptions options;
+  options.resolution_m = 0.05;
+  const SceneDistanceFields edt = BuildSceneDistanceFields(TableScene(), options);
+  options.arm_exact_cap_m = 1.0;
+  const SceneDistanceFields exact = BuildSceneDistanceFields(TableScene(), options);
+  EXPECT_NEAR(edt.field_3d.exactness_margin_m(), std::sqrt(3.0) * 0.05, 1e-12);
+  EXPECT_NEAR(exact.field_3d.exactness_margin_m(), 0.5 * std::sqrt(3.0) * 0.05, 1e-12);
+  EXPECT_GT(exact.summary.num_occupied_3d, 0);
+  // Under the top (bottom face at 0.70 m), above the floor's middle: 0.2 m exactly (the legs
+  // are farther), within the margin of the interpolant.
+  const Eigen::Vector3d p_W(0.0, 0.0, 0.5);
+  EXPECT_NEAR(exact.field_3d.Distance(p_W), 0.2, exact.field_3d.exactness_margin_m());
+  EXPECT_LE(exact.field_3d.Distance(p_W), 0.2 + exact.field_3d.exactness_margin_m());
+  // Far from everything: the cap.
+  EXPECT_NEAR(exact.field_3d.Distance(Eigen::Vector3d(-1.8, -1.8, 1.5)), 1.0, 1e-6);
+  options.arm_exact_cap_m = -1.0;
+  try {
+    BuildSceneDistanceFields(TableScene(), options);
+    FAIL() << "a negative cap was accepted";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("arm_exact_cap_m"), std::string::npos) << e.what();
+  }
+}
+
 TEST(SceneDistanceFieldsTest, BadUpperBandIsReportedClearly) {
   SceneDistanceFieldsOptions options;
   options.base_upper_band = HeightBand{0.5, 0.2};

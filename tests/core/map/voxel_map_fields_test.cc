@@ -295,6 +295,29 @@ TEST(VoxelMapFieldsTest, BadInputGivesClearErrorsAndLeavesTheMapAsItWas) {
   EXPECT_THROW(map.ResetFrom(other), std::invalid_argument);
 }
 
+// Box-built options with an exact 3D field (margin sqrt(3) / 2 x the cell size) give this map,
+// whose 3D field is an EDT one (sqrt(3) x it), an upper band raised by the difference; the
+// rest is copied.
+TEST(VoxelMapFieldsTest, OptionsFromAnExactArmFieldRaiseTheUpperBandByTheMarginsDifference) {
+  SceneDistanceFieldsOptions box_options;
+  box_options.resolution_m = 0.05;
+  box_options.base_resolution_m = 0.01;
+  box_options.base_exact_cap_m = 1.0;
+  box_options.base_upper_band = HeightBand{0.0, 0.535};
+  box_options.base_upper_band_offset_m = 0.2;
+  const Eigen::AlignedBox3d bounds(Eigen::Vector3d(-1, -1, 0), Eigen::Vector3d(1, 1, 1));
+  const VoxelMapFieldsOptions edt = VoxelMapFieldsOptionsFrom(box_options, bounds);
+  ASSERT_TRUE(edt.base_upper_band.has_value());
+  EXPECT_DOUBLE_EQ(edt.base_upper_band->z_max_m, 0.535);
+  box_options.arm_exact_cap_m = 1.0;
+  const VoxelMapFieldsOptions exact = VoxelMapFieldsOptionsFrom(box_options, bounds);
+  ASSERT_TRUE(exact.base_upper_band.has_value());
+  EXPECT_NEAR(exact.base_upper_band->z_max_m, 0.535 + 0.5 * std::sqrt(3.0) * 0.05, 1e-12);
+  EXPECT_DOUBLE_EQ(exact.base_upper_band->z_min_m, 0.0);
+  EXPECT_DOUBLE_EQ(exact.base_upper_band_offset_m, 0.2);
+  EXPECT_DOUBLE_EQ(exact.base_resolution_m, 0.01);
+}
+
 // A Tables benchmark room rasterised into voxels (OccupancyGrid3::AddBox) against the fields
 // BuildSceneDistanceFields builds from its boxes at the planner's settings.
 TEST(VoxelMapFieldsTest, TablesSceneAgreesWithTheBoxFieldsWithinTheMargins) {

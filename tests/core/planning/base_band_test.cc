@@ -41,8 +41,10 @@ TEST_F(BaseBandTest, FrontEndBaseBandAddsTheArmMargin) {
 
 TEST_F(BaseBandTest, PlannerFieldOptionsUseTwoBands) {
   const SceneDistanceFieldsOptions options = PlannerFieldOptions(kinematics_);
-  const double arm_margin_m = std::sqrt(3.0) * 0.05;
+  // The exact 3D field's margin (BuildBoxDistanceField), half an EDT field's.
+  const double arm_margin_m = 0.5 * std::sqrt(3.0) * 0.05;
   EXPECT_EQ(options.resolution_m, 0.05);
+  EXPECT_GT(options.arm_exact_cap_m, 0.08 + 0.3 + arm_margin_m);  // sphere + saturation
   EXPECT_EQ(options.base_resolution_m, 0.01);
   EXPECT_NEAR(options.base_band.z_max_m, 0.155, 1e-9);
   ASSERT_TRUE(options.base_upper_band.has_value());
