@@ -78,7 +78,7 @@ SignedDistanceField3 BuildBoxDistanceField(const GridGeometry3& geometry,
       geometry, all, cap_m, kBlockCells, stop, &values, &local.num_distance_evaluations);
   if (summary) *summary = local;
   return SignedDistanceField3::FromCellValues(geometry, std::move(values), cap_m,
-                                              0.5 * std::sqrt(3.0) * geometry.resolution_m);
+                                              BoxDistanceFieldMargin(geometry.resolution_m));
 }
 
 }  // namespace topay

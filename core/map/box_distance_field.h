@@ -1,5 +1,6 @@
 #pragma once
 
+#include <cmath>
 #include <cstdint>
 #include <span>
 #include <stop_token>
@@ -39,6 +40,11 @@ struct BoxDistanceFieldSummary {
 /// Upright boxes (yaw only, as OrientedBox). Throws std::invalid_argument for an invalid
 /// geometry, cap_m not finite and > 0, or a box with NaN/inf values or negative sizes (naming
 /// its index).
+/// The exactness margin of BuildBoxDistanceField's field of this cell size: sqrt(3) / 2 x it.
+inline double BoxDistanceFieldMargin(double resolution_m) {
+  return 0.5 * std::sqrt(3.0) * resolution_m;
+}
+
 SignedDistanceField3 BuildBoxDistanceField(const GridGeometry3& geometry,
                                            std::span<const OrientedBox> boxes, double cap_m,
                                            BoxDistanceFieldSummary* summary = nullptr,

@@ -131,6 +131,11 @@ SignedDistanceField3 BuildExactArmField(const Scene& scene, const GridGeometry3&
 
 }  // namespace
 
+double ArmFieldMargin(const SceneDistanceFieldsOptions& options) {
+  return options.arm_exact_cap_m > 0.0 ? BoxDistanceFieldMargin(options.resolution_m)
+                                       : std::sqrt(3.0) * options.resolution_m;
+}
+
 SceneDistanceFields BuildSceneDistanceFields(const Scene& scene,
                                              const SceneDistanceFieldsOptions& options,
                                              std::stop_token stop) {

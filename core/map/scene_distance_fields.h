@@ -76,6 +76,11 @@ struct SceneDistanceFields {
   SceneDistanceFieldsSummary summary;
 };
 
+/// The exactness margin (m) of the 3D field BuildSceneDistanceFields builds with these
+/// options: BoxDistanceFieldMargin(resolution_m) = sqrt(3) / 2 x the cell size if
+/// arm_exact_cap_m > 0, else the EDT field's sqrt(3) x the cell size.
+double ArmFieldMargin(const SceneDistanceFieldsOptions& options);
+
 /// Rasterises every box of the scene exactly (conservative: thin parts are kept) into a 3D grid
 /// over the bounds and, if it overlaps the base band, into a 2D grid, then builds both signed
 /// distance fields. Throws std::invalid_argument for bad options or a box with NaN/inf values

@@ -100,11 +100,13 @@ VoxelMapFieldsOptions VoxelMapFieldsOptionsFrom(const SceneDistanceFieldsOptions
   options.base_band = scene_options.base_band;
   options.base_upper_band = scene_options.base_upper_band;
   options.base_upper_band_offset_m = scene_options.base_upper_band_offset_m;
-  if (options.base_upper_band && scene_options.arm_exact_cap_m > 0.0) {
-    // The box-built band's top holds the exact 3D field's margin (sqrt(3) / 2 x the cell
-    // size, BuildBoxDistanceField); this map's 3D field is an EDT one (sqrt(3) x it), so the
-    // base must stay out from under what lies that much higher (PlannerFieldOptions).
-    options.base_upper_band->z_max_m += 0.5 * std::sqrt(3.0) * scene_options.resolution_m;
+  if (options.base_upper_band) {
+    // The band's top holds the box-built 3D field's margin (PlannerFieldOptions); this map's
+    // 3D field is an EDT one, so the base must stay out from under what lies the difference
+    // higher (none unless the box-built field is exact).
+    SceneDistanceFieldsOptions edt = scene_options;
+    edt.arm_exact_cap_m = 0.0;
+    options.base_upper_band->z_max_m += ArmFieldMargin(edt) - ArmFieldMargin(scene_options);
   }
   return options;
 }

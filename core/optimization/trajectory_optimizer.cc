@@ -328,6 +328,7 @@ bool TrajectoryOptimizer::StretchTime(Run* run) const {
   }
   TrajectoryObjective& objective = *run->objective;
   const Eigen::VectorXd x_before = run->x;
+  const BackEndSummary summary_before = summary;  // its trajectory and check are x_before's
   Eigen::VectorXd durations_s;
   Eigen::MatrixXd waypoints;
   Eigen::VectorXd end;
@@ -347,8 +348,15 @@ bool TrajectoryOptimizer::StretchTime(Run* run) const {
       return true;
     }
   }
-  run->x = x_before;  // the unstretched result and its check, as the caller had them
-  CheckResult(run);
+  // The unstretched result and its check, as the caller had them (restored, not recomputed:
+  // the summary holds all that is read of a checked run).
+  const int evaluations = summary.objective_evaluations;  // the attempts' work still counts
+  const double check_s = summary.check_s;
+  run->x = x_before;
+  summary = summary_before;
+  summary.objective_evaluations = evaluations;
+  summary.check_s = check_s;
+  run->checked = true;
   return false;
 }
 

@@ -1,7 +1,6 @@
 #include "core/planning/planner_fields.h"
 
 #include <algorithm>
-#include <cmath>
 
 #include "core/planning/base_band.h"
 
@@ -20,8 +19,7 @@ SceneDistanceFieldsOptions PlannerFieldOptions(const Kinematics& kinematics) {
     // least the rigid top, and its moving spheres need that margin on the 3D field, so the
     // base must not pass under anything lower. The rigid spheres themselves are checked by this
     // band exactly (offset = radius - their reach, no 3D margin; SpheresToCheckOnArmField).
-    // WholeBodyValidity's: the exact 3D field's exactness margin (BuildBoxDistanceField).
-    const double arm_margin_m = 0.5 * std::sqrt(3.0) * options.resolution_m;
+    const double arm_margin_m = ArmFieldMargin(options);  // WholeBodyValidity's
     options.base_upper_band = HeightBand{0.0, body.top_m + arm_margin_m};
     options.base_upper_band_offset_m =
         std::max(0.0, kinematics.model().base_cylinder.radius_m - body.sphere_reach_m);

@@ -209,8 +209,10 @@ TEST(SceneDistanceFieldsTest, ExactArmFieldHoldsBoxDistances) {
   SceneDistanceFieldsOptions options;
   options.resolution_m = 0.05;
   const SceneDistanceFields edt = BuildSceneDistanceFields(TableScene(), options);
+  EXPECT_DOUBLE_EQ(ArmFieldMargin(options), edt.field_3d.exactness_margin_m());
   options.arm_exact_cap_m = 1.0;
   const SceneDistanceFields exact = BuildSceneDistanceFields(TableScene(), options);
+  EXPECT_DOUBLE_EQ(ArmFieldMargin(options), exact.field_3d.exactness_margin_m());
   EXPECT_NEAR(edt.field_3d.exactness_margin_m(), std::sqrt(3.0) * 0.05, 1e-12);
   EXPECT_NEAR(exact.field_3d.exactness_margin_m(), 0.5 * std::sqrt(3.0) * 0.05, 1e-12);
   EXPECT_GT(exact.summary.num_occupied_3d, 0);
