@@ -46,6 +46,7 @@ void ReadPlanner(YamlSection section, WholeBodyPlannerOptions* o) {
   retry.Read("clearance_step_m", &o->retry.clearance_step_m);
   retry.Read("round_time_share", &o->retry.round_time_share);
   retry.Read("arm_budget_growth", &o->retry.arm_budget_growth);
+  retry.Read("warm_start_slowdown", &o->retry.warm_start_slowdown);
   retry.Finish();
   YamlSection limits = section.Section("base_limits");
   if (limits.present()) {  // any field given: the rest from BaseLimits' defaults

@@ -50,12 +50,13 @@ FrontEndOptions RoundFrontEndOptions(const WholeBodyPlannerOptions& options,
   return RetryRoundFrontEnd(front_end, options.retry, round);
 }
 
-// The back end at margin level k: both clearance margins (their defaults resolved as
-// SamplePenalties does) + k x retry.clearance_step_m.
-TrajectoryOptimizerOptions MarginLevelOptions(const WholeBodyPlannerOptions& options,
-                                              const SignedDistanceField2& base_field,
-                                              const SignedDistanceField3& arm_field, int level) {
+// A later round's back end at margin level k: both clearance margins (their defaults resolved
+// as SamplePenalties does) + k x retry.clearance_step_m, and the slower warm start.
+TrajectoryOptimizerOptions RetryBackEndOptions(const WholeBodyPlannerOptions& options,
+                                               const SignedDistanceField2& base_field,
+                                               const SignedDistanceField3& arm_field, int level) {
   TrajectoryOptimizerOptions optimizer = options.optimizer;
+  optimizer.warm_start.rate_fraction *= options.retry.warm_start_slowdown;
   if (level == 0) return optimizer;
   SamplePenaltyOptions& penalties = optimizer.objective.penalties;
   const double extra_m = level * options.retry.clearance_step_m;
@@ -192,13 +193,16 @@ WholeBodyPlanner::WholeBodyPlanner(const Kinematics& kinematics,
     : options_(Checked(std::move(options))),
       base_limits_(ResolveLimits(options_, kinematics)),
       validator_(kinematics, scene, base_limits_, options_.validator) {
+  first_back_end_ = MakeTrajectoryBackEnd(kinematics, base_field, arm_field, options_.optimizer);
   for (int round = 0; round < options_.retry.max_rounds; ++round) {
     rounds_.push_back(std::make_unique<const FrontEnd>(
         kinematics, base_field, arm_field, RoundFrontEndOptions(options_, kinematics, round),
         &validator_.checker()));
-    back_ends_.push_back(MakeTrajectoryBackEnd(
-        kinematics, base_field, arm_field,
-        MarginLevelOptions(options_, base_field, arm_field, round)));
+    if (options_.retry.max_rounds > 1) {  // round r's margin level is at most r
+      retry_back_ends_.push_back(MakeTrajectoryBackEnd(
+          kinematics, base_field, arm_field,
+          RetryBackEndOptions(options_, base_field, arm_field, round)));
+    }
   }
 }
 
@@ -335,7 +339,8 @@ WholeBodyPlanResult WholeBodyPlanner::PlanRound(int round, int level,
   result.timings.sampling_ms = stats.discretisation_ms + stats.acquisition_ms;
   result.timings.front_end_ms = Stopwatch::MillisecondsBetween(t0, Clock::now());
   if (result.front_end.success()) {
-    OptimizeCandidates(*back_ends_[level], start, X_WE_goal, round_stop, plan_stop, &result);
+    const TrajectoryBackEnd& back_end = round == 0 ? *first_back_end_ : *retry_back_ends_[level];
+    OptimizeCandidates(back_end, start, X_WE_goal, round_stop, plan_stop, &result);
   }
   result.margin_level = level;
   return result;

@@ -30,6 +30,8 @@ void CheckWholeBodyPlannerOptions(const WholeBodyPlannerOptions& o) {
           "retry.round_time_share", "in (0, 1]");
   require(o.retry.arm_budget_growth >= 1.0 && std::isfinite(o.retry.arm_budget_growth),
           "retry.arm_budget_growth", "finite and >= 1");
+  require(o.retry.warm_start_slowdown > 0.0 && o.retry.warm_start_slowdown <= 1.0,
+          "retry.warm_start_slowdown", "in (0, 1]");
 }
 
 FrontEndOptions RetryRoundFrontEnd(const FrontEndOptions& front_end, const PlanRetryOptions& retry,

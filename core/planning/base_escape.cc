@@ -49,8 +49,18 @@ bool MoveIsClear(const WholeBodyValidity& validity, const Eigen::Vector2d& a,
   return true;
 }
 
+// Where an escape may end: free on the field, and in the region if there is one.
+struct ExitTest {
+  const BaseFreeSpace& free_space;
+  const BaseReachableRegion* region;
+
+  bool operator()(const Eigen::Vector2d& p_W) const {
+    return free_space.IsFree(p_W) && (region == nullptr || region->Contains(p_W));
+  }
+};
+
 // The nearest exit reached by one straight move (rings outwards, preferred directions first).
-std::optional<Eigen::Vector2d> StraightExit(const BaseFreeSpace& free_space,
+std::optional<Eigen::Vector2d> StraightExit(const ExitTest& is_exit,
                                             const WholeBodyValidity& validity,
                                             const Eigen::Vector2d& p_W, double heading_rad,
                                             const BaseEscapeOptions& options) {
@@ -61,7 +71,7 @@ std::optional<Eigen::Vector2d> StraightExit(const BaseFreeSpace& free_space,
     const double radius_m = ring * options.step_m;
     for (const Eigen::Vector2d& u : directions) {
       const Eigen::Vector2d exit = p_W + radius_m * u;
-      if (!free_space.IsFree(exit)) continue;
+      if (!is_exit(exit)) continue;
       if (MoveIsClear(validity, p_W, exit, options.check_step_m)) return exit;
     }
   }
@@ -70,7 +80,7 @@ std::optional<Eigen::Vector2d> StraightExit(const BaseFreeSpace& free_space,
 
 // Dijkstra on the square lattice of spacing h centred on p_W (cells within max_distance_m),
 // 8-connected; a node is open if the base check accepts it, an edge if its interior points
-// every check_step_m do. Returns the lattice route p_W -> first free node (p_W excluded).
+// every check_step_m do. Returns the lattice route p_W -> first exit node (p_W excluded).
 class EscapeLattice {
  public:
   EscapeLattice(const WholeBodyValidity& validity, const Eigen::Vector2d& p_W,
@@ -80,7 +90,7 @@ class EscapeLattice {
         side_(2 * half_ + 1), state_(side_ * side_, kUnknown),
         cost_(side_ * side_, std::numeric_limits<double>::infinity()), parent_(side_ * side_, -1) {}
 
-  std::vector<Eigen::Vector2d> RouteToFree(const BaseFreeSpace& free_space) {
+  std::vector<Eigen::Vector2d> RouteToExit(const ExitTest& is_exit) {
     using Entry = std::pair<double, int>;
     std::priority_queue<Entry, std::vector<Entry>, std::greater<>> open;
     const int origin = half_ * side_ + half_;
@@ -91,7 +101,7 @@ class EscapeLattice {
       const auto [cost, node] = open.top();
       open.pop();
       if (cost > cost_[node]) continue;
-      if (node != origin && free_space.IsFree(Position(node))) return Route(node);
+      if (node != origin && is_exit(Position(node))) return Route(node);
       Expand(node);
       for (const auto& [next, next_cost] : expanded_) open.push({next_cost, next});
     }
@@ -202,15 +212,17 @@ void CheckBaseEscapeOptions(const BaseEscapeOptions& o) {
 std::optional<BaseEscape> FindBaseEscape(const BaseFreeSpace& free_space,
                                          const WholeBodyValidity& validity,
                                          const Eigen::Vector2d& p_W, double heading_rad,
-                                         const BaseEscapeOptions& options) {
+                                         const BaseEscapeOptions& options,
+                                         const BaseReachableRegion* region) {
   CheckBaseEscapeOptions(options);
   if (!p_W.allFinite() || !std::isfinite(heading_rad)) return std::nullopt;
-  if (const auto exit = StraightExit(free_space, validity, p_W, heading_rad, options)) {
+  const ExitTest is_exit{free_space, region};
+  if (const auto exit = StraightExit(is_exit, validity, p_W, heading_rad, options)) {
     return BaseEscape{{*exit}};
   }
   if (options.route_step_m <= 0.0 || !validity.IsBaseValid(p_W)) return std::nullopt;
   const std::vector<Eigen::Vector2d> route =
-      EscapeLattice(validity, p_W, options).RouteToFree(free_space);
+      EscapeLattice(validity, p_W, options).RouteToExit(is_exit);
   if (route.empty()) return std::nullopt;
   return BaseEscape{Shorten(validity, p_W, route, options.check_step_m)};
 }

@@ -6,6 +6,7 @@
 #include <Eigen/Core>
 
 #include "core/planning/base_free_space.h"
+#include "core/planning/base_reachable_region.h"
 #include "core/planning/whole_body_validity.h"
 
 namespace topay {
@@ -52,9 +53,13 @@ void CheckBaseEscapeOptions(const BaseEscapeOptions& options);
 /// nullopt if there is neither within max_distance_m. `heading_rad`: the base's yaw.
 /// The base path search then runs from the exit, and the moves are the path's first segments
 /// (the arm search checks every whole-body state along them, exactly inside the zone).
+/// `region`, if given: an exit must also lie in it (a base in a pocket of the field, free
+/// but cut off from the other end by a table top's shadow, leaves it for the region the
+/// other end's base can reach).
 std::optional<BaseEscape> FindBaseEscape(const BaseFreeSpace& free_space,
-                                              const WholeBodyValidity& validity,
-                                              const Eigen::Vector2d& p_W, double heading_rad,
-                                              const BaseEscapeOptions& options = {});
+                                         const WholeBodyValidity& validity,
+                                         const Eigen::Vector2d& p_W, double heading_rad,
+                                         const BaseEscapeOptions& options = {},
+                                         const BaseReachableRegion* region = nullptr);
 
 }  // namespace topay

@@ -429,21 +429,47 @@ TopologicalPathSearchResult FrontEnd::SearchBasePathsAt(
     const WholeBodyValidity& validity, PlanContext* context) const {
   TopologicalPathSearchOptions options = topology;
   options.clearance_m = clearance_m;
-  const BaseFreeSpace free_space(base_field_, options.base_radius_m + clearance_m);
+  const double safe_distance_m = options.base_radius_m + clearance_m;
+  const BaseFreeSpace free_space(base_field_, safe_distance_m);
   // A start or goal in an exact zone that the field rejects at this clearance: search from
-  // (to) the exit of its escape route (FindBaseEscape).
-  const auto escape = [&](const WholeBodyState& state) -> std::optional<BaseEscape> {
+  // (to) the exit of its escape route (FindBaseEscape). With a region: an end the field
+  // accepts but that lies outside the region the other end reaches (a pocket shut by table
+  // tops' shadows) leaves the pocket for the region by an exactly checked route.
+  const auto escape = [&](const WholeBodyState& state,
+                          const BaseReachableRegion* region) -> std::optional<BaseEscape> {
     const Eigen::Vector2d p_W = BaseOf(state);
-    if (free_space.IsFree(p_W) || !validity.exact_zones().Contains(p_W)) return std::nullopt;
-    return FindBaseEscape(free_space, validity, p_W, state.yaw_rad, options_.base_escape);
+    if (!validity.exact_zones().Contains(p_W)) return std::nullopt;
+    if (region == nullptr ? free_space.IsFree(p_W) : region->Contains(p_W)) return std::nullopt;
+    return FindBaseEscape(free_space, validity, p_W, state.yaw_rad, options_.base_escape, region);
   };
-  const std::optional<BaseEscape> start_escape = escape(context->start);
-  const std::optional<BaseEscape> goal_escape = escape(goal.state);
-  const Eigen::Vector2d start_W = start_escape ? start_escape->exit() : BaseOf(context->start);
-  const Eigen::Vector2d goal_W = goal_escape ? goal_escape->exit() : BaseOf(goal.state);
+  std::optional<BaseEscape> start_escape = escape(context->start, nullptr);
+  std::optional<BaseEscape> goal_escape = escape(goal.state, nullptr);
+  const auto end_W = [](const std::optional<BaseEscape>& e, const WholeBodyState& state) {
+    return e ? e->exit() : BaseOf(state);
+  };
+  TopologicalPathSearchResult search = SearchTopologicalBasePaths(
+      base_field_, end_W(start_escape, context->start), end_W(goal_escape, goal.state), options,
+      context->stop);
+  if (!search.ok() && !context->stop.stop_requested()) {
+    const Eigen::Vector2d start_W = end_W(start_escape, context->start);
+    const BaseReachableRegion from_start(base_field_, start_W, safe_distance_m);
+    std::optional<BaseEscape> pocket_exit;
+    if (from_start.start_joins_grid()) pocket_exit = escape(goal.state, &from_start);
+    if (pocket_exit) {
+      goal_escape = pocket_exit;
+    } else {
+      const BaseReachableRegion from_goal(base_field_, end_W(goal_escape, goal.state),
+                                          safe_distance_m);
+      if (from_goal.start_joins_grid()) pocket_exit = escape(context->start, &from_goal);
+      if (pocket_exit) start_escape = pocket_exit;
+    }
+    if (pocket_exit) {
+      search = SearchTopologicalBasePaths(base_field_, end_W(start_escape, context->start),
+                                          end_W(goal_escape, goal.state), options,
+                                          context->stop);
+    }
+  }
   const bool start_escaped = start_escape.has_value(), goal_escaped = goal_escape.has_value();
-  TopologicalPathSearchResult search =
-      SearchTopologicalBasePaths(base_field_, start_W, goal_W, options, context->stop);
   if (!search.ok() || !(start_escaped || goal_escaped)) return search;
   for (BasePath& path : search.paths) {
     // start, the start's route up to (not including) its exit, the searched path (exit to

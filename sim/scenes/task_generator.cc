@@ -65,8 +65,29 @@ void FillGoal(const Kinematics& kinematics, PlanningTask* task) {
 
 void CheckOptions(const TaskGeneratorOptions& options) {
   if (options.max_base_pair_tries <= 0 || options.max_arm_tries <= 0 ||
-      options.max_base_pose_tries <= 0) {
+      options.max_base_pose_tries <= 0 || options.max_tight_scene_tries <= 0) {
     throw std::invalid_argument("task generator: the max_*_tries options must be positive");
+  }
+}
+
+// A tight case: the first of max_tight_scene_tries scenes in which GenerateTightTask finds a
+// task (its search failing in every one: the last failure, with the number of scenes).
+BenchmarkCase GenerateTightCase(SceneKind kind, DistanceRange range, std::uint64_t seed,
+                                const Kinematics& kinematics,
+                                const TaskGeneratorOptions& options) {
+  for (int k = 0;; ++k) {
+    BenchmarkCase out;
+    const std::uint64_t scene_seed = k == 0 ? DeriveSeed(seed, 1) : DeriveSeed(seed, 100 + k);
+    out.scene = GenerateBenchmarkScene(kind, scene_seed);
+    try {
+      out.task = GenerateTightTask(out.scene, range, seed, kinematics, options);
+      return out;
+    } catch (const std::runtime_error& e) {
+      if (k + 1 >= options.max_tight_scene_tries) {
+        throw std::runtime_error(std::string(e.what()) + "; in each of " +
+                                 std::to_string(k + 1) + " scene(s)");
+      }
+    }
   }
 }
 
@@ -89,10 +110,7 @@ BenchmarkCase GenerateBenchmarkCase(SceneKind kind, DistanceRange range, std::ui
                                     const TaskGeneratorOptions& options) {
   CheckOptions(options);
   if (options.tightness == TaskTightness::kTight) {
-    BenchmarkCase out;
-    out.scene = GenerateBenchmarkScene(kind, DeriveSeed(seed, 1));
-    out.task = GenerateTightTask(out.scene, range, seed, kinematics, options);
-    return out;
+    return GenerateTightCase(kind, range, seed, kinematics, options);
   }
   const RobotModel& model = kinematics.model();
   const Scene room_shape;  // Default bounds: the benchmark room.

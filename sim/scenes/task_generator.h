@@ -62,6 +62,11 @@ struct TaskGeneratorOptions {
   int max_tight_base_tries = 2000;
   /// (start, goal) pairs tried before GenerateTightTask throws.
   int max_tight_pair_tries = 10;
+  /// GenerateBenchmarkCase (kTight): scenes tried. A scene where GenerateTightTask finds no
+  /// task (no under-table goal in range, say) holds no task to plan, so the case draws a
+  /// fresh scene rather than having no task (DeriveSeed(seed, 1) first, then
+  /// DeriveSeed(seed, 100 + k) for try k); every try's task is drawn from `seed`.
+  int max_tight_scene_tries = 3;
   /// Tables scenes (boxes with BoxRole::kTableTop): the share of tight goals whose end
   /// effector is on or under a table top, half each (TightGoalKind); the others are near
   /// any box. In [0, 1].
@@ -92,7 +97,8 @@ double ArmReachBound(const RobotModel& model);
 /// collision free (SceneClearanceChecker, no distance field).
 /// options.tightness == kTight: a fresh `kind` scene with seed DeriveSeed(seed, 1) and no
 /// keep-out regions, then GenerateTightTask(scene, range, seed) (tight_task_generator.h):
-/// both ends exactly clear and within tight_clearance_max_m of a box.
+/// both ends exactly clear and within tight_clearance_max_m of a box; a scene without such a
+/// task is replaced by a fresh one, at most max_tight_scene_tries scenes.
 /// Same seed and options, same case. Throws std::runtime_error if a bounded search fails
 /// (e.g. no free arm configuration in max_arm_tries), std::invalid_argument for an
 /// impossible range for the room or bad options.

@@ -109,6 +109,8 @@ TEST(PlannerConfigTest, BadValuesNameTheField) {
       {"planner: {retry: {max_rounds: 0}}", "planner.retry.max_rounds"},
       {"planner: {retry: {clearance_step_m: -0.1}}", "planner.retry.clearance_step_m"},
       {"planner: {retry: {arm_budget_growth: 0.5}}", "planner.retry.arm_budget_growth"},
+      {"planner: {retry: {warm_start_slowdown: 0}}", "planner.retry.warm_start_slowdown"},
+      {"planner: {retry: {warm_start_slowdown: 1.5}}", "planner.retry.warm_start_slowdown"},
       {"plnner: {}", "plnner"},
       {"front_end: 3", "front_end"},
   };

@@ -48,6 +48,22 @@ TEST(RetryRoundFrontEndTest, LaterRoundsGetOtherSeedsAndALargerArmBudget) {
   EXPECT_EQ(RetryRoundFrontEnd(front_end, retry, 2).rrt.time_budget_s, 0.25);
 }
 
+TEST(WholeBodyPlannerOptionsTest, WarmStartSlowdownOutsideZeroToOneIsRejectedByName) {
+  WholeBodyPlannerOptions options;
+  options.retry.warm_start_slowdown = 1.0;
+  EXPECT_NO_THROW(CheckWholeBodyPlannerOptions(options));
+  for (const double bad : {0.0, 1.5, -0.5, std::nan("")}) {
+    options.retry.warm_start_slowdown = bad;
+    try {
+      CheckWholeBodyPlannerOptions(options);
+      FAIL() << "no throw for " << bad;
+    } catch (const std::invalid_argument& e) {
+      EXPECT_NE(std::string(e.what()).find("warm_start_slowdown"), std::string::npos)
+          << e.what();
+    }
+  }
+}
+
 TEST(WholeBodyPlannerOptionsTest, ArmBudgetGrowthBelowOneIsRejectedByName) {
   WholeBodyPlannerOptions options;
   EXPECT_NO_THROW(CheckWholeBodyPlannerOptions(options));

@@ -273,6 +273,31 @@ TEST_F(WholeBodyPlannerTest, AValidatorRejectionRaisesTheNextRoundsMargins) {
       << result.failure_reason;
 }
 
+// Rounds after the first start the optimizer from the warm start slowed by
+// retry.warm_start_slowdown: more time, hence more pieces, than the same round's warm start at
+// the full rates (every success rejected, so that a second round runs).
+TEST_F(WholeBodyPlannerTest, LaterRoundsStartTheOptimizerFromASlowerWarmStart) {
+  WholeBodyPlannerOptions options = Options();
+  options.validator.ee_position_tolerance_m = 1e-9;  // every optimizer success is rejected
+  options.retry.min_time_left_s = 0.0;
+  options.retry.max_rounds = 2;
+  const WholeBodyState goal = State(3.0, 0.5, 1.0);
+  const auto second_round_pieces = [&](double slowdown) {
+    options.retry.warm_start_slowdown = slowdown;
+    const WholeBodyPlanner planner(kinematics_, fields_.base_field_2d, fields_.field_3d, scene_,
+                                   options);
+    const WholeBodyPlanResult result =
+        planner.Plan(State(-3.0, 0.0, 0.0), kinematics_.EndEffectorPose(goal), goal);
+    EXPECT_EQ(result.rounds, 2) << result.Report();
+    EXPECT_FALSE(result.candidates.empty()) << result.Report();
+    return result.candidates.empty() ? 0 : result.candidates[0].optimization.num_pieces;
+  };
+  const int same = second_round_pieces(1.0);
+  const int slower = second_round_pieces(0.6);
+  EXPECT_GT(same, 0);
+  EXPECT_GT(slower, same);
+}
+
 // No further round after a failure no seed can change (a start in collision, a target
 // inside a box).
 TEST_F(WholeBodyPlannerTest, NoRetryForABadStartOrAHopelessTarget) {

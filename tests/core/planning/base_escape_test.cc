@@ -78,6 +78,55 @@ TEST_F(BaseEscapeTest, LeavesALowTableTopByTheNearestFreePosition) {
   EXPECT_FALSE(FindBaseEscape(free_space, fields_only, {0.0, 0.0}, 0.0).has_value());
 }
 
+// A pocket: the base stands in the open middle of a square frame of low table tops (bottom
+// 0.50 m, above the rigid shoulder's 0.4915 m top but within the 2D field's upper band), so
+// the field accepts the base where it stands but cuts it off from the room around the frame.
+// Given the region the other end reaches, the escape leaves the pocket under the frame (the
+// exact base check passes there) for a free position of that region.
+TEST_F(BaseEscapeTest, LeavesAPocketForTheRegionTheOtherEndReaches) {
+  Scene scene;
+  scene.bounds_W_m = Eigen::AlignedBox3d(Eigen::Vector3d(-4, -4, 0), Eigen::Vector3d(4, 4, 1.6));
+  const double inner = 0.35, width = 0.2, z = 0.52, thick = 0.04;
+  const double mid = inner + width / 2, length = 2 * (inner + width);
+  scene.boxes.push_back(MakeBox({mid, 0.0, z}, {width, length, thick}));
+  scene.boxes.push_back(MakeBox({-mid, 0.0, z}, {width, length, thick}));
+  scene.boxes.push_back(MakeBox({0.0, mid, z}, {length, width, thick}));
+  scene.boxes.push_back(MakeBox({0.0, -mid, z}, {length, width, thick}));
+  const SceneDistanceFields fields =
+      BuildSceneDistanceFields(scene, PlannerFieldOptions(kinematics_));
+  const SceneClearanceChecker checker(kinematics_, scene);
+  const WholeBodyValidity validity =
+      WholeBodyValidity(kinematics_, fields.base_field_2d, fields.field_3d)
+          .WithExactZones({&checker, {}, {{0.0, 0.0}}});
+  const double safe_m = model_.base_cylinder.radius_m + 0.1;
+  const BaseFreeSpace free_space(fields.base_field_2d, safe_m);
+  const BaseReachableRegion room(fields.base_field_2d, {3.0, 0.0}, safe_m);
+  ASSERT_TRUE(room.start_joins_grid());
+  ASSERT_TRUE(free_space.IsFree({0.0, 0.0})) << fields.base_field_2d.Distance({0.0, 0.0});
+  ASSERT_FALSE(room.Contains({0.0, 0.0}));
+
+  const auto escape = FindBaseEscape(free_space, validity, {0.0, 0.0}, 0.0, {}, &room);
+  ASSERT_TRUE(escape.has_value());
+  EXPECT_TRUE(room.Contains(escape->exit())) << escape->exit().transpose();
+  EXPECT_LE(escape->exit().norm(), BaseEscapeOptions{}.max_distance_m + 1e-9);
+  // Every move of the route passes the zone's base check, checked afresh every 5 mm.
+  Eigen::Vector2d from(0.0, 0.0);
+  for (const Eigen::Vector2d& to : escape->waypoints_W_m) {
+    for (int k = 0; k <= 100; ++k) {
+      EXPECT_TRUE(validity.IsBaseValid(from + (to - from) * (k / 100.0))) << to.transpose();
+    }
+    from = to;
+  }
+  // Without the region the base is already out (free where it stands); without the zone the
+  // frame's shadow holds it.
+  const auto in_place = FindBaseEscape(free_space, validity, {0.0, 0.0}, 0.0);
+  ASSERT_TRUE(in_place.has_value());
+  EXPECT_LT(in_place->exit().norm(), inner);
+  const WholeBodyValidity fields_only(kinematics_, fields.base_field_2d, fields.field_3d);
+  EXPECT_FALSE(
+      FindBaseEscape(free_space, fields_only, {0.0, 0.0}, 0.0, {}, &room).has_value());
+}
+
 // Walled in on every side within the escape distance: no exit.
 TEST_F(BaseEscapeTest, NoExitWhenWalledIn) {
   Scene scene;

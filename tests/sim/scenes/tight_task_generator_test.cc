@@ -240,6 +240,30 @@ TEST_F(TightTaskGeneratorTest, WithoutThePocketCheckSomeEndsAreShutBetweenTableL
   EXPECT_GT(shut, 0);
 }
 
+// Tables large, seed DeriveSeed(2, 5) (topay-bench --scene tables --range large --tight
+// --seed 2, task 5): its first scene holds no tight start with a near-box goal in range.
+TEST_F(TightTaskGeneratorTest, ASceneWithoutATightTaskIsReplacedByAFreshOne) {
+  const std::uint64_t seed = DeriveSeed(2, 5);
+  TaskGeneratorOptions one_scene = TightOptions();
+  one_scene.max_tight_scene_tries = 1;
+  try {
+    Generate(SceneKind::kTables, DistanceRange::kLarge, seed, one_scene);
+    ADD_FAILURE() << "the first scene was expected to hold no tight task";
+  } catch (const std::runtime_error& e) {
+    EXPECT_NE(std::string(e.what()).find("in each of 1 scene(s)"), std::string::npos)
+        << e.what();
+  }
+  const BenchmarkCase c = Generate(SceneKind::kTables, DistanceRange::kLarge, seed);
+  ExpectValidTightCase(c, DistanceRange::kLarge, TightOptions());
+  EXPECT_EQ(c.task.seed, seed);
+  EXPECT_NE(c.task.scene_seed, DeriveSeed(seed, 1));
+  EXPECT_EQ(c.task.scene_seed, c.scene.scene.seed);
+  TaskGeneratorOptions none = TightOptions();
+  none.max_tight_scene_tries = 0;
+  EXPECT_THROW(Generate(SceneKind::kTables, DistanceRange::kLarge, seed, none),
+               std::invalid_argument);
+}
+
 TEST(GoalKindHoldsTest, OnAndUnderATableTop) {
   OrientedBox top;
   top.center_W_m = {1.0, 2.0, 0.775};  // upper face 0.8, lower face 0.75
