@@ -50,13 +50,15 @@ FrontEndOptions RoundFrontEndOptions(const WholeBodyPlannerOptions& options,
   return RetryRoundFrontEnd(front_end, options.retry, round);
 }
 
-// A later round's back end at margin level k: both clearance margins (their defaults resolved
-// as SamplePenalties does) + k x retry.clearance_step_m, and the slower warm start.
-TrajectoryOptimizerOptions RetryBackEndOptions(const WholeBodyPlannerOptions& options,
-                                               const SignedDistanceField2& base_field,
-                                               const SignedDistanceField3& arm_field, int level) {
+// The back end at margin level k: both clearance margins (their defaults resolved as
+// SamplePenalties does) + k x retry.clearance_step_m; `slow`: the warm start's rates x
+// retry.warm_start_slowdown.
+TrajectoryOptimizerOptions MarginLevelOptions(const WholeBodyPlannerOptions& options,
+                                              const SignedDistanceField2& base_field,
+                                              const SignedDistanceField3& arm_field, int level,
+                                              bool slow) {
   TrajectoryOptimizerOptions optimizer = options.optimizer;
-  optimizer.warm_start.rate_fraction *= options.retry.warm_start_slowdown;
+  if (slow) optimizer.warm_start.rate_fraction *= options.retry.warm_start_slowdown;
   if (level == 0) return optimizer;
   SamplePenaltyOptions& penalties = optimizer.objective.penalties;
   const double extra_m = level * options.retry.clearance_step_m;
@@ -193,15 +195,19 @@ WholeBodyPlanner::WholeBodyPlanner(const Kinematics& kinematics,
     : options_(Checked(std::move(options))),
       base_limits_(ResolveLimits(options_, kinematics)),
       validator_(kinematics, scene, base_limits_, options_.validator) {
-  first_back_end_ = MakeTrajectoryBackEnd(kinematics, base_field, arm_field, options_.optimizer);
+  const bool slow = options_.retry.max_rounds > 1 && options_.retry.warm_start_slowdown < 1.0;
   for (int round = 0; round < options_.retry.max_rounds; ++round) {
     rounds_.push_back(std::make_unique<const FrontEnd>(
         kinematics, base_field, arm_field, RoundFrontEndOptions(options_, kinematics, round),
         &validator_.checker()));
-    if (options_.retry.max_rounds > 1) {  // round r's margin level is at most r
-      retry_back_ends_.push_back(MakeTrajectoryBackEnd(
+    // Round r's margin level is at most r.
+    back_ends_.push_back(MakeTrajectoryBackEnd(
+        kinematics, base_field, arm_field,
+        MarginLevelOptions(options_, base_field, arm_field, round, /*slow=*/false)));
+    if (slow) {
+      slow_back_ends_.push_back(MakeTrajectoryBackEnd(
           kinematics, base_field, arm_field,
-          RetryBackEndOptions(options_, base_field, arm_field, round)));
+          MarginLevelOptions(options_, base_field, arm_field, round, /*slow=*/true)));
     }
   }
 }
@@ -339,7 +345,10 @@ WholeBodyPlanResult WholeBodyPlanner::PlanRound(int round, int level,
   result.timings.sampling_ms = stats.discretisation_ms + stats.acquisition_ms;
   result.timings.front_end_ms = Stopwatch::MillisecondsBetween(t0, Clock::now());
   if (result.front_end.success()) {
-    const TrajectoryBackEnd& back_end = round == 0 ? *first_back_end_ : *retry_back_ends_[level];
+    // From a moving start the warm start keeps its rates: a slower profile would begin above
+    // its own speed limit.
+    const bool slow = round > 0 && start.rates.IsAtRest() && !slow_back_ends_.empty();
+    const TrajectoryBackEnd& back_end = slow ? *slow_back_ends_[level] : *back_ends_[level];
     OptimizeCandidates(back_end, start, X_WE_goal, round_stop, plan_stop, &result);
   }
   result.margin_level = level;

@@ -117,11 +117,11 @@ class WholeBodyPlanner {
   TrajectoryValidator validator_;  // before the front ends, which use its exact checker
   /// Round r's front end (seeds derived from r; PlanRetryOptions).
   std::vector<std::unique_ptr<const FrontEnd>> rounds_;
-  /// The first round's back end (margin level 0, the configured warm start).
-  std::unique_ptr<const TrajectoryBackEnd> first_back_end_;
-  /// Later rounds' back end at margin level k: clearance margins + k x
-  /// retry.clearance_step_m, the warm start slowed by retry.warm_start_slowdown.
-  std::vector<std::unique_ptr<const TrajectoryBackEnd>> retry_back_ends_;
+  /// Back end at margin level k: clearance margins + k x retry.clearance_step_m.
+  std::vector<std::unique_ptr<const TrajectoryBackEnd>> back_ends_;
+  /// The same with the warm start slowed by retry.warm_start_slowdown: later rounds from a
+  /// start at rest (empty if the slowdown is 1 or there is one round).
+  std::vector<std::unique_ptr<const TrajectoryBackEnd>> slow_back_ends_;
 };
 
 /// "time limit 3.000 s reached during <stage>: ", the prefix of a kTimeLimit plan's reason.

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <exception>
+#include <functional>
 #include <limits>
 #include <numeric>
 #include <string>
@@ -96,6 +97,41 @@ int CountRejectedInZone(const WholeBodyValidity& validity, const std::vector<Who
     if (any) count = k + 1;
   }
   return count;
+}
+
+// Where the base path search starts or ends for an end: its escape's exit, or its base.
+Eigen::Vector2d SearchEndOf(const std::optional<BaseEscape>& escape,
+                            const WholeBodyState& state) {
+  return escape ? escape->exit() : BaseOf(state);
+}
+
+// An escape route for `state` (FindBaseEscape); with a region, out of a pocket into it.
+using EscapeFinder = std::function<std::optional<BaseEscape>(const WholeBodyState& state,
+                                                             const BaseReachableRegion* region)>;
+
+// After a failed base search: the goal, else the start, in a pocket the other end's region
+// (from its escape's exit, if any) does not reach gets a route into that region, which
+// replaces its escape. False if neither has one.
+bool LeavePocket(const SignedDistanceField2& field, double safe_distance_m,
+                 const EscapeFinder& escape, const WholeBodyState& start,
+                 const WholeBodyState& goal, std::optional<BaseEscape>* start_escape,
+                 std::optional<BaseEscape>* goal_escape) {
+  const BaseReachableRegion from_start(field, SearchEndOf(*start_escape, start),
+                                       safe_distance_m);
+  if (from_start.start_joins_grid()) {
+    if (std::optional<BaseEscape> out = escape(goal, &from_start)) {
+      *goal_escape = std::move(out);
+      return true;
+    }
+  }
+  const BaseReachableRegion from_goal(field, SearchEndOf(*goal_escape, goal), safe_distance_m);
+  if (from_goal.start_joins_grid()) {
+    if (std::optional<BaseEscape> out = escape(start, &from_goal)) {
+      *start_escape = std::move(out);
+      return true;
+    }
+  }
+  return false;
 }
 
 }  // namespace
@@ -444,30 +480,16 @@ TopologicalPathSearchResult FrontEnd::SearchBasePathsAt(
   };
   std::optional<BaseEscape> start_escape = escape(context->start, nullptr);
   std::optional<BaseEscape> goal_escape = escape(goal.state, nullptr);
-  const auto end_W = [](const std::optional<BaseEscape>& e, const WholeBodyState& state) {
-    return e ? e->exit() : BaseOf(state);
+  const auto search_base_paths = [&] {
+    return SearchTopologicalBasePaths(base_field_, SearchEndOf(start_escape, context->start),
+                                      SearchEndOf(goal_escape, goal.state), options,
+                                      context->stop);
   };
-  TopologicalPathSearchResult search = SearchTopologicalBasePaths(
-      base_field_, end_W(start_escape, context->start), end_W(goal_escape, goal.state), options,
-      context->stop);
-  if (!search.ok() && !context->stop.stop_requested()) {
-    const Eigen::Vector2d start_W = end_W(start_escape, context->start);
-    const BaseReachableRegion from_start(base_field_, start_W, safe_distance_m);
-    std::optional<BaseEscape> pocket_exit;
-    if (from_start.start_joins_grid()) pocket_exit = escape(goal.state, &from_start);
-    if (pocket_exit) {
-      goal_escape = pocket_exit;
-    } else {
-      const BaseReachableRegion from_goal(base_field_, end_W(goal_escape, goal.state),
-                                          safe_distance_m);
-      if (from_goal.start_joins_grid()) pocket_exit = escape(context->start, &from_goal);
-      if (pocket_exit) start_escape = pocket_exit;
-    }
-    if (pocket_exit) {
-      search = SearchTopologicalBasePaths(base_field_, end_W(start_escape, context->start),
-                                          end_W(goal_escape, goal.state), options,
-                                          context->stop);
-    }
+  TopologicalPathSearchResult search = search_base_paths();
+  if (!search.ok() && !context->stop.stop_requested() &&
+      LeavePocket(base_field_, safe_distance_m, escape, context->start, goal.state,
+                  &start_escape, &goal_escape)) {
+    search = search_base_paths();
   }
   const bool start_escaped = start_escape.has_value(), goal_escaped = goal_escape.has_value();
   if (!search.ok() || !(start_escaped || goal_escaped)) return search;

@@ -273,8 +273,8 @@ TEST_F(WholeBodyPlannerTest, AValidatorRejectionRaisesTheNextRoundsMargins) {
       << result.failure_reason;
 }
 
-// Rounds after the first start the optimizer from the warm start slowed by
-// retry.warm_start_slowdown: more time, hence more pieces, than the same round's warm start at
+// Rounds after the first, from a start at rest, start the optimizer from the warm start slowed
+// by retry.warm_start_slowdown: more time, hence more pieces, than the same round's warm start at
 // the full rates (every success rejected, so that a second round runs).
 TEST_F(WholeBodyPlannerTest, LaterRoundsStartTheOptimizerFromASlowerWarmStart) {
   WholeBodyPlannerOptions options = Options();
@@ -282,20 +282,24 @@ TEST_F(WholeBodyPlannerTest, LaterRoundsStartTheOptimizerFromASlowerWarmStart) {
   options.retry.min_time_left_s = 0.0;
   options.retry.max_rounds = 2;
   const WholeBodyState goal = State(3.0, 0.5, 1.0);
-  const auto second_round_pieces = [&](double slowdown) {
+  const auto second_round_pieces = [&](double slowdown, double v_start_mps) {
     options.retry.warm_start_slowdown = slowdown;
     const WholeBodyPlanner planner(kinematics_, fields_.base_field_2d, fields_.field_3d, scene_,
                                    options);
+    MovingState start{State(-3.0, 0.0, 0.0), WholeBodyRates::Zero(model_.num_joints())};
+    start.rates.v_mps = v_start_mps;
     const WholeBodyPlanResult result =
-        planner.Plan(State(-3.0, 0.0, 0.0), kinematics_.EndEffectorPose(goal), goal);
+        planner.Plan(start, kinematics_.EndEffectorPose(goal), goal);
     EXPECT_EQ(result.rounds, 2) << result.Report();
     EXPECT_FALSE(result.candidates.empty()) << result.Report();
     return result.candidates.empty() ? 0 : result.candidates[0].optimization.num_pieces;
   };
-  const int same = second_round_pieces(1.0);
-  const int slower = second_round_pieces(0.6);
+  const int same = second_round_pieces(1.0, 0.0);
+  const int slower = second_round_pieces(0.6, 0.0);
   EXPECT_GT(same, 0);
   EXPECT_GT(slower, same);
+  // A moving start keeps the configured warm start in every round.
+  EXPECT_EQ(second_round_pieces(0.6, 0.5), second_round_pieces(1.0, 0.5));
 }
 
 // No further round after a failure no seed can change (a start in collision, a target
