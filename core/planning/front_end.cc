@@ -111,27 +111,27 @@ using EscapeFinder = std::function<std::optional<BaseEscape>(const WholeBodyStat
 
 // After a failed base search: the goal, else the start, in a pocket the other end's region
 // (from its escape's exit, if any) does not reach gets a route into that region, which
-// replaces its escape. False if neither has one.
+// replaces its escape. False if neither has one. Only an end in an exact zone can leave a
+// pocket, so the other end's region (a flood fill of the 2D grid) is built for it alone.
 bool LeavePocket(const SignedDistanceField2& field, double safe_distance_m,
-                 const EscapeFinder& escape, const WholeBodyState& start,
-                 const WholeBodyState& goal, std::optional<BaseEscape>* start_escape,
+                 const ExactZones& zones, const EscapeFinder& escape,
+                 const WholeBodyState& start, const WholeBodyState& goal,
+                 std::optional<BaseEscape>* start_escape,
                  std::optional<BaseEscape>* goal_escape) {
-  const BaseReachableRegion from_start(field, SearchEndOf(*start_escape, start),
-                                       safe_distance_m);
-  if (from_start.start_joins_grid()) {
-    if (std::optional<BaseEscape> out = escape(goal, &from_start)) {
-      *goal_escape = std::move(out);
-      return true;
-    }
-  }
-  const BaseReachableRegion from_goal(field, SearchEndOf(*goal_escape, goal), safe_distance_m);
-  if (from_goal.start_joins_grid()) {
-    if (std::optional<BaseEscape> out = escape(start, &from_goal)) {
-      *start_escape = std::move(out);
-      return true;
-    }
-  }
-  return false;
+  // `end` leaves its pocket for the region of `other` (searched from `other_escape`'s exit).
+  const auto leave = [&](const WholeBodyState& end, const WholeBodyState& other,
+                         const std::optional<BaseEscape>& other_escape,
+                         std::optional<BaseEscape>* end_escape) {
+    if (!zones.Contains(BaseOf(end))) return false;
+    const BaseReachableRegion region(field, SearchEndOf(other_escape, other), safe_distance_m);
+    if (!region.start_joins_grid()) return false;
+    std::optional<BaseEscape> out = escape(end, &region);
+    if (!out) return false;
+    *end_escape = std::move(out);
+    return true;
+  };
+  return leave(goal, start, *start_escape, goal_escape) ||
+         leave(start, goal, *goal_escape, start_escape);
 }
 
 }  // namespace
@@ -487,8 +487,8 @@ TopologicalPathSearchResult FrontEnd::SearchBasePathsAt(
   };
   TopologicalPathSearchResult search = search_base_paths();
   if (!search.ok() && !context->stop.stop_requested() &&
-      LeavePocket(base_field_, safe_distance_m, escape, context->start, goal.state,
-                  &start_escape, &goal_escape)) {
+      LeavePocket(base_field_, safe_distance_m, validity.exact_zones(), escape, context->start,
+                  goal.state, &start_escape, &goal_escape)) {
     search = search_base_paths();
   }
   const bool start_escaped = start_escape.has_value(), goal_escaped = goal_escape.has_value();
