@@ -21,6 +21,7 @@
 #include "core/common/stopwatch.h"
 #include "core/optimization/back_end_factory.h"
 #include "core/planner/failure_cause.h"
+#include "core/planner/round_time.h"
 #include "core/planning/stop_deadline.h"
 
 namespace topay {
@@ -85,14 +86,6 @@ bool Retryable(const WholeBodyPlanResult& round, bool cut) {
     default:
       return false;
   }
-}
-
-// The end of a round that may be followed by another: `share` of the time left to `end`.
-Clock::time_point RoundDeadline(Clock::time_point end, double share) {
-  const Clock::time_point now = Clock::now();
-  if (end == Clock::time_point::max()) return end;  // no time limit: no share either
-  if (end <= now) return now;
-  return now + std::chrono::duration_cast<Clock::duration>((end - now) * share);
 }
 
 bool AnyValidatorRejection(const std::vector<CandidateReport>& candidates) {
@@ -289,17 +282,16 @@ WholeBodyPlanResult WholeBodyPlanner::PlanBy(Clock::time_point deadline,
     int level = 0;  // margin level: rounds so far with a validator rejection
     bool round_cut = false;  // the last round run was ended by its own share of the time
     for (int round = 0;; ++round) {
-      // A round that may be followed by another gets its share of the time left.
+      // A round that may be followed by another gets its share of the time left; the last
+      // round, the plan's limit alone.
       std::stop_source round_stop;
       const std::stop_callback forward_plan(plan_stop.get_token(),
                                             [&round_stop] { round_stop.request_stop(); });
       const bool may_retry = round + 1 < options_.retry.max_rounds;
-      std::optional<StopDeadline> round_limit;  // the last round: the plan's limit alone
-      if (may_retry) {
-        round_limit.emplace(&round_stop, RoundDeadline(end, options_.retry.round_time_share));
-      }
+      const double share = may_retry ? options_.retry.round_time_share : 1.0;
+      const RoundTime time{&round_stop, RoundShareEnd(Clock::now(), end, share), end};
       result = PlanRound(round, level, moving_start, lead_in, lead_in_exact, X_WE_goal, hint,
-                         round_stop.get_token(), plan_stop.get_token());
+                         time, plan_stop.get_token());
       round_cut = round_stop.stop_requested() && !plan_stop.stop_requested();
       AddTimings(result.timings, &earlier);
       const bool last = !may_retry || plan_stop.stop_requested() || end - Clock::now() < min_left;
@@ -330,9 +322,12 @@ WholeBodyPlanResult WholeBodyPlanner::PlanRound(int round, int level,
                                                 bool lead_in_exact,
                                                 const Eigen::Isometry3d& X_WE_goal,
                                                 const std::optional<WholeBodyState>& hint,
-                                                std::stop_token round_stop,
+                                                const RoundTime& time,
                                                 std::stop_token plan_stop) const {
   const Clock::time_point t0 = Clock::now();
+  const std::stop_token round_stop = time.stop->get_token();
+  std::optional<StopDeadline> round_limit;
+  if (time.round_end < time.plan_end) round_limit.emplace(time.stop, time.round_end);
   WholeBodyPlanResult result;
   result.front_end = rounds_[round]->Plan(lead_in.end(), X_WE_goal, hint, round_stop);
   if (result.front_end.success() && !lead_in.empty()) {
@@ -345,6 +340,12 @@ WholeBodyPlanResult WholeBodyPlanner::PlanRound(int round, int level,
   result.timings.sampling_ms = stats.discretisation_ms + stats.acquisition_ms;
   result.timings.front_end_ms = Stopwatch::MillisecondsBetween(t0, Clock::now());
   if (result.front_end.success()) {
+    // Time after this round's share for no whole round: the round keeps the plan's time.
+    if (round_limit && RoundKeepsThePlanTime(time.round_end, time.plan_end,
+                                             1e-3 * result.timings.front_end_ms,
+                                             options_.retry.min_time_left_s)) {
+      round_limit.reset();
+    }
     // From a moving start the warm start keeps its rates: a slower profile would begin above
     // its own speed limit.
     const bool slow = round > 0 && start.rates.IsAtRest() && !slow_back_ends_.empty();

@@ -94,14 +94,21 @@ class WholeBodyPlanner {
 
  private:
   // One round: the front end of round `round`, then the back end of margin level `level`;
-  // `round_stop` ends the round, `plan_stop` (the plan's) also a validation under way.
+  // A round's time: `stop` ends it (the plan's stop forwards to it), at round_end at the
+  // latest (plan_end for the last round).
+  struct RoundTime {
+    std::stop_source* stop = nullptr;
+    std::chrono::steady_clock::time_point round_end;
+    std::chrono::steady_clock::time_point plan_end;
+  };
+  // `time.stop` ends the round, `plan_stop` (the plan's) also a validation under way.
   // The front end plans from the lead-in's end; its paths get the lead-in prepended
   // (lead_in_exact: some lead-in state passed only the exact check).
   WholeBodyPlanResult PlanRound(int round, int level, const MovingState& start,
                                 const LeadIn& lead_in, bool lead_in_exact,
                                 const Eigen::Isometry3d& X_WE_goal,
-                                const std::optional<WholeBodyState>& hint,
-                                std::stop_token round_stop, std::stop_token plan_stop) const;
+                                const std::optional<WholeBodyState>& hint, const RoundTime& time,
+                                std::stop_token plan_stop) const;
   void OptimizeCandidates(const TrajectoryBackEnd& back_end, const MovingState& start,
                           const Eigen::Isometry3d& X_WE_goal, std::stop_token round_stop,
                           std::stop_token plan_stop, WholeBodyPlanResult* result) const;

@@ -28,10 +28,15 @@ struct PlanRetryOptions {
   /// rejection. >= 0.
   double clearance_step_m = 0.005;
   /// A round that may be followed by another ends, at the latest, when it has used this share
-  /// of the time left when it began (with a 3 s limit: 1.8 s, then 0.72 s, then the rest);
-  /// the last round may use all that is left. An optimizer that has not converged in that
-  /// time seldom does later, and another path often converges at once. In (0, 1].
-  double round_time_share = 0.6;
+  /// of the time left when it began (with a 3 s limit: 2.25 s, then 0.56 s, then the rest);
+  /// the last round may use all that is left. A round whose front end is done keeps the
+  /// plan's time when what its share would leave could not hold another round (a front end
+  /// as long as its own, then min_time_left_s; RoundKeepsThePlanTime). The optimizations of
+  /// long detours past tight ends often converge after 1.4-2.2 s: 0.6 cut them (tight Tables
+  /// cells, 286 -> 292 of 300 tasks with 0.75; docs/benchmarks.md, "Sixth session"), while an
+  /// optimizer that has gone astray is still cut in time for another path or warm start.
+  /// In (0, 1].
+  double round_time_share = 0.75;
   /// Round r's arm RRT* gets growth^r times the configured budget (its time_budget_s and,
   /// if set, max_iterations): an arm path that did not connect within one budget at a tight
   /// end often connects with a larger one, and a retry only runs on time the plan had left.
