@@ -93,14 +93,15 @@ class WholeBodyPlanner {
   const TrajectoryValidator& validator() const { return validator_; }
 
  private:
-  // One round: the front end of round `round`, then the back end of margin level `level`;
   // A round's time: `stop` ends it (the plan's stop forwards to it), at round_end at the
-  // latest (plan_end for the last round).
+  // latest (RoundShareEnd; plan_end for the last round) unless the round keeps the plan's
+  // time once its front end is done (RoundKeepsThePlanTime).
   struct RoundTime {
     std::stop_source* stop = nullptr;
     std::chrono::steady_clock::time_point round_end;
     std::chrono::steady_clock::time_point plan_end;
   };
+  // One round: the front end of round `round`, then the back end of margin level `level`;
   // `time.stop` ends the round, `plan_stop` (the plan's) also a validation under way.
   // The front end plans from the lead-in's end; its paths get the lead-in prepended
   // (lead_in_exact: some lead-in state passed only the exact check).
