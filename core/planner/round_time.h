@@ -2,12 +2,13 @@
 
 #include <chrono>
 
+// The time of a plan's retry rounds (WholeBodyPlanner, PlanRetryOptions): a round that may be
+// followed by another ends at its share of the time left, unless what would be left after it
+// could not hold another round.
+
 namespace topay {
 
-/// The time of a plan's retry rounds (WholeBodyPlanner, PlanRetryOptions): a round that may
-/// be followed by another ends at its share of the time left, unless what would be left after
-/// it could not hold another round.
-using RoundClock = std::chrono::steady_clock;
+using RoundClock = std::chrono::steady_clock;  ///< The planner's clock (Stopwatch::Clock).
 
 /// The end of a round that may be followed by another: `share` (in (0, 1]) of the time from
 /// `now` to `plan_end`. No limit (plan_end = max) or a share of 1 gives plan_end; a plan_end

@@ -13,6 +13,7 @@
 #include "core/map/signed_distance_field2.h"
 #include "core/map/signed_distance_field3.h"
 #include "core/optimization/trajectory_back_end.h"
+#include "core/planner/round_time.h"
 #include "core/planner/whole_body_plan_result.h"
 #include "core/planner/whole_body_planner_options.h"
 #include "core/planning/front_end.h"
@@ -98,8 +99,8 @@ class WholeBodyPlanner {
   // time once its front end is done (RoundKeepsThePlanTime).
   struct RoundTime {
     std::stop_source* stop = nullptr;
-    std::chrono::steady_clock::time_point round_end;
-    std::chrono::steady_clock::time_point plan_end;
+    RoundClock::time_point round_end;
+    RoundClock::time_point plan_end;
   };
   // One round: the front end of round `round`, then the back end of margin level `level`;
   // `time.stop` ends the round, `plan_stop` (the plan's) also a validation under way.

@@ -47,9 +47,9 @@ struct PlanRetryOptions {
   /// limits (more time, hence more pieces; a moving start keeps the configured warm start,
   /// whose profile must begin at the start's speed). An optimizer that did not converge from
   /// the warm start at the full limits (rates and clearances short together near a tight end)
-  /// often converges from the slower one: on the tight Tables cells, 7 of 12 such failures with 0.6, against 4 of 12
-  /// with the same warm start again (docs/benchmarks.md, "Fifth session"). In (0, 1]
-  /// (1: the same warm start every round).
+  /// often converges from the slower one: on the tight Tables cells, 7 of 12 such failures
+  /// with 0.6, against 4 of 12 with the same warm start again (docs/benchmarks.md, "Fifth
+  /// session"). In (0, 1] (1: the same warm start every round).
   double warm_start_slowdown = 0.6;
 };
 
