@@ -1,7 +1,7 @@
 # Two commands on a fresh Debian 12 machine:
 #   make demo   install what is missing, build, run the main job
 #   make test   install what is missing, build (with assertions), run every test
-.PHONY: all deps build build-test test test-fast test-demo demo missions demo-plan graph bench bench-replan bench-can clean
+.PHONY: all deps build build-test test test-fast test-demo demo missions demo-plan graph replay-view bench bench-replan bench-can clean
 
 BUILD_DIR      ?= build
 TEST_BUILD_DIR ?= build-test
@@ -41,11 +41,15 @@ test-fast: build-test
 # the summary (result, time, replans, ground-truth collisions, tracking error, planning and
 # solve times) and where the log and plots are (out/demo/seed-<S>/). Exits non-zero if the
 # mission failed or touched anything.
+# The viewer (topay-viz, docs/viewer.md) serves the run at http://127.0.0.1:8765/ while it lasts
+# (its address is printed); VIEW=0 leaves it out.
 DEMO_SEED ?= 1
 CAN       ?= 1
+VIEW      ?= 1
 DEMO_GRAPH = config/graphs/$(if $(filter 0,$(CAN)),demo_direct,demo).yaml
+VIEW_FLAG  = $(if $(filter 0,$(VIEW)),--no-view,)
 demo: build
-	$(BUILD_DIR)/bin/topay-missions --seeds 1 --first-seed $(DEMO_SEED) --out $(DEMO_OUT) --graph $(DEMO_GRAPH)
+	$(BUILD_DIR)/bin/topay-missions --seeds 1 --first-seed $(DEMO_SEED) --out $(DEMO_OUT) --graph $(DEMO_GRAPH) $(VIEW_FLAG)
 
 # The closed-loop demo's end-to-end test (topay-missions on seed 1 through the whole graph; not
 # in `make test`: docs/demo.md "Known problems").
@@ -57,7 +61,7 @@ test-demo: build-test
 SEEDS      ?= 20
 FIRST_SEED ?= 1
 missions: build
-	$(BUILD_DIR)/bin/topay-missions --seeds $(SEEDS) --first-seed $(FIRST_SEED) --out out/missions --graph $(DEMO_GRAPH)
+	$(BUILD_DIR)/bin/topay-missions --seeds $(SEEDS) --first-seed $(FIRST_SEED) --out out/missions --graph $(DEMO_GRAPH) $(VIEW_FLAG)
 
 # One TopAY plan (the main job before the closed loop): a seeded Tables room and a medium-range
 # task; the summary, the trajectory JSON and the plots in out/plan/. Exit code 3 (the plan failed,
@@ -68,6 +72,12 @@ demo-plan: build
 	  --json out/plan/trajectory.json --png out/plan/path.png \
 	  --time-png out/plan/time_plots.png || [ $$? -eq 3 ]
 	@echo "demo-plan: wrote out/plan/trajectory.json, path.png, time_plots.png"
+
+# A recorded run in the viewer with play / pause / speed / a time slider (docs/viewer.md):
+#   make replay-view LOG=out/demo/seed-1/graph.lcmlog      then open http://127.0.0.1:8765/
+LOG ?= $(DEMO_OUT)/seed-$(DEMO_SEED)/graph.lcmlog
+replay-view: build
+	$(BUILD_DIR)/bin/topay-viz --log $(LOG)
 
 # The simulation process graph (config/graphs/sim.yaml), isolated in a private network
 # namespace; Ctrl-C stops it. Run folder: out/runs/<date-time>/ (docs/running.md).

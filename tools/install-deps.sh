@@ -12,6 +12,7 @@ packages=(
   libcli11-dev libspdlog-dev libcairo2-dev libtbb-dev libceres-dev
   googletest libgtest-dev libbenchmark-dev
   libpcl-dev liboctomap-dev zlib1g-dev
+  libboost-dev chromium
   qemu-system-x86 busybox-static cpio
 )
 
@@ -27,7 +28,25 @@ prepare_guest() {
     echo "install-deps: no guest kernel; the real-SocketCAN tests will be skipped" >&2
 }
 
+# The viewer's page (web/): Node.js and npm (Debian's, unless a newer one is already there), then
+# the npm packages exactly as each package-lock.json pins them, when the lockfile changed.
+command -v npm >/dev/null || missing+=(nodejs npm)
+# Also the MCAP test's reader (@mcap/core, tests/procs/log_info/mcap_js/).
+prepare_web() {
+  local root dir stamp
+  root="$(cd "$(dirname "$0")/.." && pwd)"
+  for dir in web tests/procs/log_info/mcap_js; do
+    stamp="$root/$dir/node_modules/.package-lock.json"
+    [[ -f "$root/$dir/package-lock.json" ]] || continue
+    if [[ ! -f "$stamp" || "$root/$dir/package-lock.json" -nt "$stamp" ]]; then
+      echo "install-deps: npm ci in $dir/"
+      (cd "$root/$dir" && npm ci --no-audit --no-fund --loglevel=error >/dev/null)
+    fi
+  done
+}
+
 if [[ ${#missing[@]} -eq 0 ]]; then
+  prepare_web
   prepare_guest
   exit 0
 fi
@@ -41,5 +60,6 @@ echo "install-deps: installing ${missing[*]}"
 export DEBIAN_FRONTEND=noninteractive
 $sudo apt-get update -qq
 $sudo apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
+prepare_web
 prepare_guest
 echo "install-deps: done"

@@ -247,4 +247,23 @@ void SelectGroups(const std::vector<std::string>& groups, GraphSpec* graph) {
   std::erase_if(graph->processes, [&](const ProcessSpec& p) { return !keep.contains(p.name); });
 }
 
+void ExcludeGroups(const std::vector<std::string>& groups, GraphSpec* graph) {
+  const auto excluded = [&](const ProcessSpec& p) {
+    return std::find(groups.begin(), groups.end(), p.group) != groups.end();
+  };
+  std::set<std::string> dropped;
+  for (const ProcessSpec& p : graph->processes) {
+    if (excluded(p)) dropped.insert(p.name);
+  }
+  for (const ProcessSpec& p : graph->processes) {
+    if (excluded(p)) continue;
+    for (const std::string& dep : p.depends_on) {
+      if (dropped.contains(dep)) {
+        throw GraphError(graph->file + ": process " + p.name + " depends on " + dep + ", which --without drops");
+      }
+    }
+  }
+  std::erase_if(graph->processes, excluded);
+}
+
 }  // namespace topay::launch

@@ -86,4 +86,8 @@ void ExpandVariables(const GraphVariables& variables, GraphSpec* graph);
 /// they depend on, start order kept.
 void SelectGroups(const std::vector<std::string>& groups, GraphSpec* graph);
 
+/// Drops the processes of `groups` (e.g. the demo's viewer: `--without viewer`). Throws
+/// GraphError naming both if a process that stays depends on one that goes.
+void ExcludeGroups(const std::vector<std::string>& groups, GraphSpec* graph);
+
 }  // namespace topay::launch

@@ -31,6 +31,7 @@ struct Flags {
   bool plain = false;
   std::string run_dir;
   std::vector<std::string> groups;
+  std::vector<std::string> without;
   std::optional<double> duration_s;
   std::string replay_log;
   launch::ReplayOptions replay;
@@ -54,6 +55,7 @@ void AddFlags(CLI::App& app, Flags& f) {
   app.add_flag("--plain", f.plain, "no colours or live table even on a terminal");
   app.add_option("--run-dir", f.run_dir, "run folder (default: <run_root>/<date-time>)");
   app.add_option("--group", f.groups, "start only these groups (and their dependencies)");
+  app.add_option("--without", f.without, "leave out the processes of these groups (e.g. viewer)");
   app.add_option("--duration", f.duration_s, "stop the graph after this many seconds");
   app.add_option("--replay", f.replay_log, "play this LCM log into the graph once it is ready");
   app.add_option("--speed", f.replay.speed, "replay speed factor (<= 0: as fast as possible)")->capture_default_str();
@@ -66,6 +68,7 @@ void AddFlags(CLI::App& app, Flags& f) {
 launch::GraphSpec Resolve(const Flags& f, const std::string& run_dir) {
   launch::GraphSpec graph = launch::LoadGraph(f.graph_file);
   launch::SelectGroups(f.groups, &graph);
+  launch::ExcludeGroups(f.without, &graph);
   if (graph.processes.empty()) throw launch::GraphError(f.graph_file + ": no process in the selected groups");
   launch::GraphVariables vars;
   vars.values["BIN_DIR"] = fs::canonical("/proc/self/exe").parent_path().string();

@@ -10,6 +10,7 @@
 #include "topay/motorsim_fault_t.hpp"
 #include "topay/goal_t.hpp"
 #include "topay/graph_status_t.hpp"
+#include "topay/planner_paths_t.hpp"
 #include "topay/heartbeat_t.hpp"
 #include "topay/joint_state_t.hpp"
 #include "topay/map_update_t.hpp"
@@ -46,7 +47,7 @@ const std::vector<MessageTypeInfo>& AllMessageTypes() {
       Info<graph_status_t>(),   Info<sim_contact_t>(),    Info<sim_status_t>(),
       Info<sim_event_t>(),      Info<tracker_status_t>(), Info<gripper_command_t>(), Info<mission_status_t>(),
       Info<drive_status_t>(),   Info<drive_command_t>(),
-      Info<motorsim_fault_t>()};
+      Info<motorsim_fault_t>(), Info<planner_paths_t>()};
   return kTypes;
 }
 

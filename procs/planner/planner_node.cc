@@ -10,6 +10,7 @@
 #include "core/collision/scene_clearance.h"
 #include "core/common/stopwatch.h"
 #include "procs/msgs/convert_trajectory.h"
+#include "procs/planner/paths_message.h"
 #include "topay/heartbeat_t.hpp"
 #include "topay/poly_trajectory_t.hpp"
 #include "topay_msgs/channels.h"
@@ -463,6 +464,7 @@ void PlannerNode::HandleFailure(const PlanJobOutcome& outcome) {
   const WholeBodyPlanResult& r = outcome.result;
   if (r.status == PlanStatus::kCancelled) return;
   ++counts_.plans_failed;
+  PublishPaths(r, outcome.job.goal_id, 0);
   spdlog::warn("goal {}: plan {} failed ({}): {}", outcome.job.goal_id, outcome.job.job_id,
                ToString(r.status), r.failure_reason);
   const bool definite = outcome.certified_unreachable || r.status == PlanStatus::kInvalidInput;
@@ -499,7 +501,14 @@ void PlannerNode::PublishTrajectory(const PlanJobOutcome& outcome, std::int64_t 
   goal_->failed_from_rest = 0;
   ++counts_.trajectories;
   PublishActive("plan");
+  PublishPaths(outcome.result, outcome.job.goal_id, active_->trajectory_id);
   PublishStatus(planner_status_t::SUCCEEDED, "", outcome.job.trigger, &outcome.result);
+}
+
+void PlannerNode::PublishPaths(const WholeBodyPlanResult& result, std::int64_t goal_id, std::int64_t trajectory_id) {
+  if (result.front_end.base_paths.empty()) return;
+  const planner_paths_t msg = ToPathsMessage(result, clock_.Now(), goal_id, trajectory_id);
+  loop_->lcm().publish(std::string(channels::PLANNER_PATHS), &msg);
 }
 
 void PlannerNode::PublishActive(const char* what) {

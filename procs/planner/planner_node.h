@@ -1,7 +1,7 @@
 #pragma once
-// topay-planner on the bus: GOAL, ROBOT_STATE, MAP_UPDATE and TRACKER_STATUS in, TRAJECTORY and
-// PLANNER_STATUS out (docs/planner.md). The LCM thread only decides; the plans run on the
-// planning thread (PlanWorker). It replans when
+// topay-planner on the bus: GOAL, ROBOT_STATE, MAP_UPDATE and TRACKER_STATUS in, TRAJECTORY,
+// PLANNER_STATUS and PLANNER_PATHS out (docs/planner.md). The LCM thread only decides; the plans
+// run on the planning thread (PlanWorker). It replans when
 //  (a) a map update shows the rest of the current trajectory colliding (checked at once
 //      against the map's blocked voxels, exactly),
 //  (b) the robot has drifted from the trajectory beyond the tolerances,
@@ -120,6 +120,8 @@ class PlannerNode {
   void HandleFailure(const PlanJobOutcome& outcome);
   void PublishTrajectory(const PlanJobOutcome& outcome, std::int64_t now);
   void PublishActive(const char* what);
+  // PLANNER_PATHS: the plan's candidate base paths (trajectory_id 0: the plan failed).
+  void PublishPaths(const WholeBodyPlanResult& result, std::int64_t goal_id, std::int64_t trajectory_id);
   std::optional<PredictedCollision> CheckAhead(const ArcYawTrajectory& trajectory, double t_from_s) const;
   void CheckActiveAgainstMap(std::int64_t now);
   // Keeps the base position at t_s on `trajectory` (a predicted collision) for FreshRegions.

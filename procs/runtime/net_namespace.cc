@@ -11,6 +11,7 @@
 #include <unistd.h>
 
 #include <cerrno>
+#include <cstdlib>
 #include <cstring>
 #include <fstream>
 
@@ -50,9 +51,41 @@ sockaddr_in Ipv4(const char* address) {
   return in;
 }
 
+// Opens the current network namespace, inheritable, and names it in $TOPAY_HOST_NETNS_FD.
+void RememberHostNamespace() {
+  if (std::getenv(kHostNetnsFdVariable) != nullptr) return;
+  const int fd = open("/proc/self/ns/net", O_RDONLY);  // no O_CLOEXEC: children inherit it
+  if (fd >= 0) setenv(kHostNetnsFdVariable, std::to_string(fd).c_str(), 1);
+}
+
 }  // namespace
 
+bool RunInHostNetworkNamespace(const std::function<void()>& fn, std::string* error) {
+  const char* variable = std::getenv(kHostNetnsFdVariable);
+  if (variable == nullptr || *variable == '\0') {
+    fn();
+    return true;
+  }
+  const int host = std::atoi(variable);
+  const int here = open("/proc/thread-self/ns/net", O_RDONLY | O_CLOEXEC);
+  if (here < 0) {
+    *error = Errno("open /proc/thread-self/ns/net");
+    return false;
+  }
+  if (setns(host, CLONE_NEWNET) != 0) {
+    *error = Errno(std::string("setns to the host network namespace ($") + kHostNetnsFdVariable + "=" + variable + ")");
+    close(here);
+    return false;
+  }
+  fn();
+  const bool back = setns(here, CLONE_NEWNET) == 0;
+  if (!back) *error = Errno("setns back to the graph's network namespace");
+  close(here);
+  return back;
+}
+
 bool EnterPrivateNetworkNamespace(std::string* error) {
+  RememberHostNamespace();
   if (unshare(CLONE_NEWNET) != 0) {
     const std::string plain = Errno("unshare(CLONE_NEWNET)");
     if (!EnterUserAndNetworkNamespace(error)) {

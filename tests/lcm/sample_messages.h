@@ -17,6 +17,7 @@
 #include "topay/heartbeat_t.hpp"
 #include "topay/joint_state_t.hpp"
 #include "topay/map_update_t.hpp"
+#include "topay/planner_paths_t.hpp"
 #include "topay/planner_status_t.hpp"
 #include "topay/tracker_status_t.hpp"
 #include "topay/motorsim_fault_t.hpp"
@@ -47,7 +48,7 @@ using Catalogue =
     MessageList<base_pose_t, base_velocity_t, joint_state_t, robot_state_t, whole_body_state_t,
                 point_cloud_t, map_update_t, goal_t, poly_trajectory_t, control_command_t,
                 planner_status_t, heartbeat_t, graph_status_t, sim_contact_t, sim_status_t,
-                sim_event_t, tracker_status_t, motorsim_fault_t>;
+                sim_event_t, tracker_status_t, motorsim_fault_t, planner_paths_t>;
 using AllMessageTypes = Catalogue::GtestTypes;
 
 // Names typed tests after the message type ("RoundTrip/joint_state_t") instead of 0, 1, ...
@@ -327,6 +328,44 @@ struct MessageSample<control_command_t> {
     EXPECT_EQ(a.num_joints, b.num_joints);
     EXPECT_EQ(a.qdot_radps, b.qdot_radps);
     EXPECT_EQ(a.gripper, b.gripper);
+  }
+};
+
+template <>
+struct MessageSample<planner_paths_t> {
+  static planner_paths_t Make() {
+    planner_paths_t m;
+    m.utime = 1'700'000'001'500'000;
+    m.goal_id = 12;
+    m.trajectory_id = 34;
+    m.chosen = 1;
+    for (int p = 0; p < 2; ++p) {
+      base_path_t path;
+      path.num_points = 3 + p;
+      for (int k = 0; k < path.num_points; ++k) {
+        path.x_m.push_back(0.5 * k);
+        path.y_m.push_back(p - 0.25 * k);
+      }
+      path.length_m = 1.5 + p;
+      path.source = p == 0 ? "topological_prm" : "jps";
+      m.paths.push_back(path);
+    }
+    m.num_paths = 2;
+    return m;
+  }
+  static void ExpectSame(const planner_paths_t& a, const planner_paths_t& b) {
+    EXPECT_EQ(a.utime, b.utime);
+    EXPECT_EQ(a.goal_id, b.goal_id);
+    EXPECT_EQ(a.trajectory_id, b.trajectory_id);
+    EXPECT_EQ(a.chosen, b.chosen);
+    ASSERT_EQ(a.num_paths, b.num_paths);
+    for (int p = 0; p < a.num_paths; ++p) {
+      EXPECT_EQ(a.paths[p].num_points, b.paths[p].num_points);
+      EXPECT_EQ(a.paths[p].x_m, b.paths[p].x_m);
+      EXPECT_EQ(a.paths[p].y_m, b.paths[p].y_m);
+      EXPECT_EQ(a.paths[p].length_m, b.paths[p].length_m);
+      EXPECT_EQ(a.paths[p].source, b.paths[p].source);
+    }
   }
 };
 

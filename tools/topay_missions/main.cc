@@ -69,10 +69,13 @@ int main(int argc, char** argv) {
   app.add_option("--timeout-s", options.timeout_s, "stop a graph after this long (s)")
       ->check(CLI::PositiveNumber)->capture_default_str();
   app.add_flag("--quiet", quiet, "no progress lines (the summaries and the table only)");
+  bool no_view = false;
+  app.add_flag("--no-view", no_view, "leave out the graph's viewer (topay-viz, group viewer)");
   app.footer("Exit codes: 0 every mission that ran succeeded without contact, 1 file or configuration error (or "
              "no seed had a scenario), 2 usage error, 3 a mission failed, timed out or touched something, 4 "
              "interrupted. A seed whose room has no pick-and-place scenario is listed, not run.");
   if (const std::optional<int> code = topay::tools::ParseCommandLine(app, argc, argv, "topay-missions")) return *code;
+  options.view = !no_view;
   options.progress = !quiet;
   options.graph_file = fs::absolute(options.graph_file).string();
   std::error_code error;

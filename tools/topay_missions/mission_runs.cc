@@ -45,9 +45,18 @@ bool WriteScenario(const MissionRunsOptions& options, std::uint64_t seed, const 
 void RunGraph(const MissionRunsOptions& options, const std::string& run_dir, std::ostream& out,
               const std::function<bool()>& stop_requested, MissionRunRow* row) {
   LogTail mission_log(run_dir + "/mission.log");
+  LogTail viewer_log(run_dir + "/viz.log");
   const auto echo = [&](bool flush) {
     for (const std::string& line : mission_log.NewLines(flush)) {
       if (options.progress && line.rfind("===", 0) != 0) out << "  " << WithoutLogPrefix(line) << "\n" << std::flush;
+    }
+    for (const std::string& line : viewer_log.NewLines(flush)) {
+      const std::size_t at = line.find("serving http://");
+      if (at != std::string::npos) {
+        const std::size_t url = at + 8, end = line.find(' ', url);
+        out << "  viewer: " << line.substr(url, end == std::string::npos ? end : end - url) << " (open it in a browser; make demo VIEW=0 turns it off)\n"
+            << std::flush;
+      }
     }
   };
   ChildCommandOptions child;
@@ -55,8 +64,10 @@ void RunGraph(const MissionRunsOptions& options, const std::string& run_dir, std
   child.timeout_s = options.timeout_s;
   child.on_poll = [&] { echo(false); };
   child.stop_requested = stop_requested;
-  const ChildCommandResult r =
-      RunChildCommand({options.bin_dir + "/topay-launch", options.graph_file, "--run-dir", run_dir, "--plain"}, child);
+  std::vector<std::string> command = {options.bin_dir + "/topay-launch", options.graph_file, "--run-dir", run_dir,
+                                      "--plain"};
+  if (!options.view) command.insert(command.end(), {"--without", "viewer"});
+  const ChildCommandResult r = RunChildCommand(command, child);
   echo(true);
   if (r.timed_out) row->result = "TIMEOUT";
   if (!r.error.empty() || r.exit_code == 1 || r.exit_code == 2) {

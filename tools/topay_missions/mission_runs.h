@@ -22,6 +22,9 @@ struct MissionRunsOptions {
   std::string scenario_config;    ///< topay-scenario's --config (empty: its default)
   double timeout_s = 900.0;       ///< a graph still running after this long is stopped (TIMEOUT)
   bool progress = true;           ///< echo the mission's log lines while it runs
+  /// Run the graph's viewer (its group "viewer": topay-viz) and print its address once it
+  /// serves; false: topay-launch --without viewer.
+  bool view = true;
 };
 
 /// Runs the mission of `seed` and reports it (summary text on `out`; summary.json, path.png and

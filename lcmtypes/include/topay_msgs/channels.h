@@ -17,6 +17,7 @@ inline constexpr std::string_view GOAL = "GOAL";                        // goal_
 inline constexpr std::string_view TRAJECTORY = "TRAJECTORY";            // poly_trajectory_t
 inline constexpr std::string_view CONTROL_COMMAND = "CONTROL_COMMAND";  // control_command_t
 inline constexpr std::string_view PLANNER_STATUS = "PLANNER_STATUS";    // planner_status_t
+inline constexpr std::string_view PLANNER_PATHS = "PLANNER_PATHS";      // planner_paths_t
 inline constexpr std::string_view TRACKER_STATUS = "TRACKER_STATUS";    // tracker_status_t
 inline constexpr std::string_view HEARTBEAT = "HEARTBEAT";              // heartbeat_t
 inline constexpr std::string_view GRAPH_STATUS = "GRAPH_STATUS";        // graph_status_t
@@ -34,10 +35,11 @@ inline constexpr std::string_view GRIPPER_STATE = "GRIPPER_STATE";        // joi
 inline constexpr std::string_view MOTORSIM_FAULT = "MOTORSIM_FAULT";      // motorsim_fault_t
 
 // Every channel above, e.g. for a logger's or a bridge's channel list.
-inline constexpr std::array<std::string_view, 24> kAll = {
+inline constexpr std::array<std::string_view, 25> kAll = {
     BASE_POSE,   BASE_VELOCITY, JOINT_STATE,     ROBOT_STATE,     POINT_CLOUD, MAP_UPDATE,
     GOAL,        TRAJECTORY,    CONTROL_COMMAND, PLANNER_STATUS,  HEARTBEAT,   GRAPH_STATUS,
     SIM_CONTACT, SIM_STATUS,    SIM_EVENT,       TRACKER_STATUS,  GRIPPER_COMMAND, MISSION_STATUS,
-    DRIVE_STATUS, DRIVE_COMMAND, ACTUATOR_COMMAND, SIM_PLANT_STATE, GRIPPER_STATE, MOTORSIM_FAULT};
+    DRIVE_STATUS, DRIVE_COMMAND, ACTUATOR_COMMAND, SIM_PLANT_STATE, GRIPPER_STATE, MOTORSIM_FAULT,
+    PLANNER_PATHS};
 
 }  // namespace topay::channels

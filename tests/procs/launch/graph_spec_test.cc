@@ -203,6 +203,26 @@ TEST(GraphSpec, AutostartFalseOnlyWithItsGroup) {
   EXPECT_EQ(h.processes.size(), 2u);
 }
 
+TEST(GraphSpec, WithoutDropsAGroupUnlessAKeptProcessNeedsIt) {
+  std::string path;
+  ASSERT_EQ(LoadError(R"(processes:
+  - {name: a, command: x, group: g}
+  - {name: viz, command: x, depends_on: [a], group: viewer}
+  - {name: c, command: x, depends_on: [a], group: h}
+)", &path), "");
+  GraphSpec g = LoadGraph(path);
+  ExcludeGroups({"viewer"}, &g);
+  ASSERT_EQ(g.processes.size(), 2u);
+  EXPECT_EQ(g.processes[1].name, "c");
+  GraphSpec needed = LoadGraph(path);
+  try {
+    ExcludeGroups({"g"}, &needed);
+    FAIL() << "dropped a process another one depends on";
+  } catch (const GraphError& e) {
+    EXPECT_NE(std::string(e.what()).find("viz depends on a"), std::string::npos) << e.what();
+  }
+}
+
 TEST(GraphSpec, ShippedGraphsLoad) {
   const GraphSpec sim = LoadGraph(std::string(TOPAY_SOURCE_DIR) + "/config/graphs/sim.yaml");
   EXPECT_TRUE(sim.isolated);
