@@ -33,7 +33,7 @@ LogReplay::LogReplay(const std::string& path, VizFeed* feed, bool paused, double
     : path_(path), feed_(feed), span_(ScanLog(path)), clock_(span_.first_utime, span_.last_utime) {
   Restart();
   clock_.SetSpeed(speed, 0);
-  if (!paused) clock_.Play(0);
+  play_on_first_tick_ = !paused;  // the clock starts with the first Tick's wall time
 }
 
 void LogReplay::Restart() {
@@ -108,6 +108,10 @@ void LogReplay::Tick(std::int64_t wall_utime) {
     commands.swap(commands_);
   }
   bool seek = false;
+  if (play_on_first_tick_) {
+    clock_.Play(wall_utime);
+    play_on_first_tick_ = false;
+  }
   feed_->ServeNewSubscribers(fed_until_);  // as things stand before the clock moves on
   for (const PlaybackCommand& c : commands) {
     Apply(c, wall_utime);

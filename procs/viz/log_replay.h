@@ -72,6 +72,7 @@ class LogReplay {
   std::int64_t fed_until_ = 0;
   std::int64_t events_fed_ = 0;
   int seeks_ = 0;
+  bool play_on_first_tick_ = false;
   std::mutex commands_mutex_;
   std::deque<PlaybackCommand> commands_;
 };

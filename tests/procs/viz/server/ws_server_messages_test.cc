@@ -95,7 +95,7 @@ TEST_F(WsServerMessagesTest, UnknownClientsAndNullPayloadsAreIgnored) {
   std::string message;
   ASSERT_FALSE(client.Read(&message));
   EXPECT_EQ(message, "real");
-  EXPECT_EQ(server_->stats().frames_sent, 1u);
+  EXPECT_TRUE(WaitUntil([&] { return server_->stats().frames_sent == 1; }));
 }
 
 TEST_F(WsServerMessagesTest, CloseFromTheServerEndsTheClient) {
