@@ -240,6 +240,7 @@ void Supervisor::ReadOutput(Stream& stream, bool hang_up) {
     console_.ChildLine(stream.process->spec.name, stream.process->index, line);
     stream.process->log << line << '\n';
   }
+  stream.process->log.flush();  // whole lines reach <run>/<name>.log at once (tail -f, topay-missions)
   if (n == 0 || (hang_up && n < 0 && errno != EAGAIN)) {
     if (!stream.partial.empty()) {
       console_.ChildLine(stream.process->spec.name, stream.process->index, stream.partial);

@@ -21,8 +21,10 @@ struct FrameQueueOptions {
   std::size_t max_bytes = std::size_t{16} << 20;
 };
 
+/// A bounded FIFO of outgoing frames that drops its oldest frames when full.
 class FrameQueue {
  public:
+  /// An empty queue with `options` (a zero bound counts as 1).
   explicit FrameQueue(FrameQueueOptions options = {});
 
   /// Appends `frame`, first dropping the oldest frames until it fits both bounds. Returns the
@@ -33,6 +35,7 @@ class FrameQueue {
   /// Drops every queued frame (not counted as dropped: the client is gone).
   void Clear();
 
+  /// Whether no frame is queued.
   bool empty() const { return frames_.empty(); }
   /// Frames queued now.
   std::size_t frames() const { return frames_.size(); }
@@ -44,6 +47,7 @@ class FrameQueue {
   std::uint64_t pushed() const { return pushed_; }
   /// Frames dropped so far to keep the bounds.
   std::uint64_t dropped() const { return dropped_; }
+  /// The bounds in force (zeros raised to 1).
   const FrameQueueOptions& options() const { return options_; }
 
  private:

@@ -17,7 +17,7 @@
 
 namespace topay::viz {
 
-/// The largest request header the server reads (bytes); larger: 431-ish refusal (400).
+/// The largest request header the server reads (bytes); larger: 400 and closed.
 inline constexpr std::size_t kMaxRequestHeaderBytes = 8 << 10;
 /// The largest request body the server reads (bytes): GET / HEAD / upgrades carry none.
 inline constexpr std::size_t kMaxRequestBodyBytes = 16 << 10;
@@ -25,11 +25,13 @@ inline constexpr std::size_t kMaxRequestBodyBytes = 16 << 10;
 /// Bytes read at a time while draining a connection being closed.
 inline constexpr std::size_t kDrainChunkBytes = 4 << 10;
 
+/// One connection speaking HTTP (see the file comment); owned by its pending handlers.
 class HttpSession : public std::enable_shared_from_this<HttpSession> {
  public:
   /// Takes `socket` (just accepted) and counts it in context.http_connections (the
   /// destructor uncounts it).
   HttpSession(boost::asio::ip::tcp::socket socket, ServerContext& context);
+  /// Uncounts the connection (context.http_connections).
   ~HttpSession();
   HttpSession(const HttpSession&) = delete;
   HttpSession& operator=(const HttpSession&) = delete;

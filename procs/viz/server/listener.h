@@ -15,8 +15,10 @@
 
 namespace topay::viz {
 
+/// The accept loop of one WsServer (see the file comment).
 class Listener : public std::enable_shared_from_this<Listener> {
  public:
+  /// A closed listener on `io_context` handing connections to sessions of `context`.
   Listener(boost::asio::io_context& io_context, ServerContext& context);
 
   /// Opens, binds and listens on `address`:`port` (any thread, before the I/O thread runs).

@@ -20,6 +20,7 @@ namespace topay::viz {
 
 class WsSession;
 
+/// The state shared by the listener and every session of one WsServer.
 struct ServerContext {
   /// `options` must have passed CheckWsServerOptions.
   ServerContext(WsServerOptions options_in, WsServerCallbacks callbacks_in)

@@ -31,6 +31,8 @@ namespace topay::viz {
 class Listener;
 struct ServerContext;
 
+/// The HTTP + WebSocket server (see the file comment). Owns one I/O thread between Start and
+/// Stop.
 class WsServer {
  public:
   /// Nothing happens before Start. The callbacks run on the I/O thread (ws_server_callbacks.h).
@@ -52,6 +54,7 @@ class WsServer {
   bool running() const { return running_.load(); }
   /// The bound port after Start (the ephemeral one when options.port was 0); 0 before.
   int port() const { return port_.load(); }
+  /// The options given at construction.
   const WsServerOptions& options() const;
 
   /// Queues `frame` for `client` and returns at once (thread-safe, never waits on the

@@ -7,6 +7,7 @@
 
 namespace topay::viz {
 
+/// How WsServer listens and bounds its clients; every field has a documented default.
 struct WsServerOptions {
   /// The address to listen on (IPv4 or IPv6 literal). Default "127.0.0.1": loopback only.
   std::string bind_address = "127.0.0.1";

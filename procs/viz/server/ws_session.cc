@@ -18,6 +18,9 @@ namespace beast = boost::beast;
 namespace http = beast::http;
 namespace websocket = beast::websocket;
 
+/// The read buffer's capacity kept between client messages (larger: freed).
+constexpr std::size_t kKeptReadBufferBytes = 16 << 10;
+
 std::chrono::steady_clock::duration Seconds(double seconds) {
   return std::chrono::duration_cast<std::chrono::steady_clock::duration>(
       std::chrono::duration<double>(seconds));
@@ -139,7 +142,8 @@ void WsSession::OnRead(beast::error_code error, std::size_t bytes) {
     InvokeCallback(context_.callbacks.on_text, "on_text", id_, message);
   }
   read_buffer_.consume(read_buffer_.size());
-  read_buffer_.shrink_to_fit();  // one large message must not pin its memory
+  // One large message must not pin its memory for the life of the connection.
+  if (read_buffer_.capacity() > kKeptReadBufferBytes) read_buffer_.shrink_to_fit();
   if (!ended_) DoRead();
 }
 

@@ -20,11 +20,14 @@
 
 namespace topay::viz {
 
+/// One WebSocket client's connection (see the file comment); owned by its pending handlers
+/// and, while open, by the registry.
 class WsSession : public std::enable_shared_from_this<WsSession> {
  public:
   /// Takes over `stream` (the upgraded HTTP connection). The caller has counted it in
   /// context.ws_sessions; the destructor uncounts it.
   WsSession(boost::beast::tcp_stream&& stream, ServerContext& context);
+  /// Uncounts the session (context.ws_sessions, its queued bytes).
   ~WsSession();
   WsSession(const WsSession&) = delete;
   WsSession& operator=(const WsSession&) = delete;
@@ -44,8 +47,9 @@ class WsSession : public std::enable_shared_from_this<WsSession> {
   /// emptied.
   void Detach();
 
+  /// The client's id (given at construction, also to clients refused later).
   ClientId id() const { return id_; }
-  /// Thread-safe.
+  /// The client's queue and traffic (thread-safe).
   ClientStats stats() const;
 
  private:
