@@ -19,16 +19,15 @@ planner_paths_t ToPathsMessage(const WholeBodyPlanResult& result, std::int64_t u
   }
   msg.num_paths = static_cast<std::int32_t>(paths.size());
   for (const BasePath& path : paths) {
-    base_path_t out;
-    out.num_points = static_cast<std::int32_t>(path.waypoints_W_m.size());
+    msg.path_points.push_back(static_cast<std::int32_t>(path.waypoints_W_m.size()));
+    msg.length_m.push_back(path.length_m);
+    msg.source.push_back(path.source == BasePathSource::kJumpPointSearch ? "jps" : "topological_prm");
     for (const Eigen::Vector2d& p : path.waypoints_W_m) {
-      out.x_m.push_back(p.x());
-      out.y_m.push_back(p.y());
+      msg.x_m.push_back(p.x());
+      msg.y_m.push_back(p.y());
     }
-    out.length_m = path.length_m;
-    out.source = path.source == BasePathSource::kJumpPointSearch ? "jps" : "topological_prm";
-    msg.paths.push_back(std::move(out));
   }
+  msg.num_points = static_cast<std::int32_t>(msg.x_m.size());
   return msg;
 }
 

@@ -1,5 +1,6 @@
 #include "procs/viz/status_json.h"
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <string>
@@ -144,12 +145,14 @@ json GoalJson(const goal_t& m) {
 
 json CandidatePathsJson(const planner_paths_t& m) {
   json paths = json::array();
+  int first = 0;
   for (int i = 0; i < m.num_paths; ++i) {
-    const base_path_t& p = m.paths[i];
     json points = json::array();
-    for (int k = 0; k < p.num_points; ++k) points.push_back({Finite(p.x_m[k]), Finite(p.y_m[k])});
-    paths.push_back({{"points_m", std::move(points)}, {"length_m", Finite(p.length_m)},
-                     {"chosen", i == m.chosen}, {"source", p.source}});
+    const int count = std::clamp(m.path_points[i], 0, m.num_points - first);  // a short message: what is there
+    for (int k = first; k < first + count; ++k) points.push_back({Finite(m.x_m[k]), Finite(m.y_m[k])});
+    first += count;
+    paths.push_back({{"points_m", std::move(points)}, {"length_m", Finite(m.length_m[i])},
+                     {"chosen", i == m.chosen}, {"source", m.source[i]}});
   }
   return {{"t", m.utime * 1e-6}, {"goal_id", m.goal_id}, {"trajectory_id", m.trajectory_id},
           {"paths", std::move(paths)}};

@@ -339,18 +339,15 @@ struct MessageSample<planner_paths_t> {
     m.goal_id = 12;
     m.trajectory_id = 34;
     m.chosen = 1;
-    for (int p = 0; p < 2; ++p) {
-      base_path_t path;
-      path.num_points = 3 + p;
-      for (int k = 0; k < path.num_points; ++k) {
-        path.x_m.push_back(0.5 * k);
-        path.y_m.push_back(p - 0.25 * k);
-      }
-      path.length_m = 1.5 + p;
-      path.source = p == 0 ? "topological_prm" : "jps";
-      m.paths.push_back(path);
-    }
     m.num_paths = 2;
+    m.path_points = {3, 4};
+    m.length_m = {1.5, 2.5};
+    m.source = {"topological_prm", "jps"};
+    for (int k = 0; k < 7; ++k) {
+      m.x_m.push_back(0.5 * k);
+      m.y_m.push_back(1.0 - 0.25 * k);
+    }
+    m.num_points = 7;
     return m;
   }
   static void ExpectSame(const planner_paths_t& a, const planner_paths_t& b) {
@@ -358,14 +355,13 @@ struct MessageSample<planner_paths_t> {
     EXPECT_EQ(a.goal_id, b.goal_id);
     EXPECT_EQ(a.trajectory_id, b.trajectory_id);
     EXPECT_EQ(a.chosen, b.chosen);
-    ASSERT_EQ(a.num_paths, b.num_paths);
-    for (int p = 0; p < a.num_paths; ++p) {
-      EXPECT_EQ(a.paths[p].num_points, b.paths[p].num_points);
-      EXPECT_EQ(a.paths[p].x_m, b.paths[p].x_m);
-      EXPECT_EQ(a.paths[p].y_m, b.paths[p].y_m);
-      EXPECT_EQ(a.paths[p].length_m, b.paths[p].length_m);
-      EXPECT_EQ(a.paths[p].source, b.paths[p].source);
-    }
+    EXPECT_EQ(a.num_paths, b.num_paths);
+    EXPECT_EQ(a.path_points, b.path_points);
+    EXPECT_EQ(a.length_m, b.length_m);
+    EXPECT_EQ(a.source, b.source);
+    EXPECT_EQ(a.num_points, b.num_points);
+    EXPECT_EQ(a.x_m, b.x_m);
+    EXPECT_EQ(a.y_m, b.y_m);
   }
 };
 

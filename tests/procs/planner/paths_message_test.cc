@@ -36,11 +36,13 @@ TEST(PathsMessage, CarriesEveryBasePathAndTheChosenOne) {
   EXPECT_EQ(msg.trajectory_id, 7);
   ASSERT_EQ(msg.num_paths, 2);
   EXPECT_EQ(msg.chosen, 1);
-  EXPECT_EQ(msg.paths[0].num_points, 3);
-  EXPECT_DOUBLE_EQ(msg.paths[0].y_m[1], 1.0);
-  EXPECT_DOUBLE_EQ(msg.paths[0].length_m, 2.83);
-  EXPECT_EQ(msg.paths[0].source, "topological_prm");
-  EXPECT_EQ(msg.paths[1].source, "jps");
+  EXPECT_EQ(msg.path_points, (std::vector<std::int32_t>{3, 2}));
+  ASSERT_EQ(msg.num_points, 5);
+  EXPECT_DOUBLE_EQ(msg.y_m[1], 1.0);  // path 0's second point
+  EXPECT_DOUBLE_EQ(msg.x_m[4], 2.0);  // path 1's last point
+  EXPECT_DOUBLE_EQ(msg.length_m[0], 2.83);
+  EXPECT_EQ(msg.source[0], "topological_prm");
+  EXPECT_EQ(msg.source[1], "jps");
   std::vector<std::uint8_t> bytes(msg.getEncodedSize());
   msg.encode(bytes.data(), 0, static_cast<int>(bytes.size()));
   std::string error;
