@@ -140,7 +140,8 @@ int main(int argc, char** argv) {
               replay ? flags.log_path.c_str() : "live graph");
   std::fflush(stdout);
   const int code = loop.Run();
-  server->Stop();
+  server->Stop();  // its last on_close calls reach the hub, which outlives it
   std::printf("topay-viz: %s\n", feed.StatusLine(CountsOf(*server)).c_str());
+  server.reset();
   return code;
 }

@@ -1,5 +1,7 @@
 #include "procs/viz/map_blocks.h"
 
+#include <algorithm>
+
 #include "procs/viz/base64.h"
 
 namespace topay::viz {
@@ -14,14 +16,20 @@ msgs::MapAcceptResult MapBlocks::Accept(const map_update_t& msg) {
   if (result.outcome == msgs::MapUpdateOutcome::kSnapshotApplied) {
     ResetBlocks();
   } else if (result.outcome == msgs::MapUpdateOutcome::kDeltaApplied) {
+    // Recount only the blocks this delta touched (the earlier dirty ones are counted already).
+    std::vector<int> touched;
     for (const VoxelChange& change : result.changes) {
-      const int block = BlockOf(change.voxel.x(), change.voxel.y(), change.voxel.z());
+      touched.push_back(BlockOf(change.voxel.x(), change.voxel.y(), change.voxel.z()));
+    }
+    std::sort(touched.begin(), touched.end());
+    touched.erase(std::unique(touched.begin(), touched.end()), touched.end());
+    for (int block : touched) {
+      CountBlock(block);
       if (!is_dirty_[block]) {
         is_dirty_[block] = 1;
         dirty_blocks_.push_back(block);
       }
     }
-    for (int block : dirty_blocks_) CountBlock(block);
   }
   return result;
 }
