@@ -1,7 +1,7 @@
 # Two commands on a fresh Debian 12 machine:
 #   make demo   install what is missing, build, run the main job
 #   make test   install what is missing, build (with assertions), run every test
-.PHONY: all deps build build-test test test-fast test-demo demo missions demo-plan graph replay-view bench bench-replan bench-can clean
+.PHONY: all deps build build-test test test-fast test-demo demo missions demo-plan graph replay-view bench bench-replan bench-can fuzz test-asan test-tsan clean
 
 BUILD_DIR      ?= build
 TEST_BUILD_DIR ?= build-test
@@ -102,5 +102,39 @@ CAN_BENCH_S ?= 60
 bench-can: build
 	tools/bench/can_bench.sh $(BUILD_DIR) $(CAN_BENCH_S)
 
+# Reliability (docs/reliability.md). The fuzz campaign: every target of tests/fuzz/ built with
+# clang as a libFuzzer binary with ASan + UBSan (build-fuzz/), then run for FUZZ_RUNS
+# executions or FUZZ_SECONDS each (report: build-fuzz/fuzz/report.md). FUZZ_TARGETS picks some.
+# `make test` runs each target's seeds, regressions and 3,000 mutations (ctest -L fuzz).
+FUZZ_BUILD_DIR ?= build-fuzz
+FUZZ_RUNS      ?= 1000000
+FUZZ_SECONDS   ?= 1800
+FUZZ_TARGETS   ?=
+fuzz:
+	@./tools/install-deps.sh --fuzz
+	@cmake -S . -B $(FUZZ_BUILD_DIR) -G Ninja -DCMAKE_C_COMPILER=clang -DCMAKE_CXX_COMPILER=clang++ \
+	  -DCMAKE_BUILD_TYPE=RelWithDebInfo -DTOPAY_FUZZ=ON -DTOPAY_SANITIZE=address,undefined \
+	  -DTOPAY_BUILD_BENCHMARKS=OFF >/dev/null
+	@cmake --build $(FUZZ_BUILD_DIR) -j $(JOBS) --target topay_fuzz_all
+	tools/fuzz/run_fuzzers.sh $(FUZZ_BUILD_DIR) $(FUZZ_RUNS) $(FUZZ_SECONDS) $(FUZZ_TARGETS)
+
+# The whole suite under sanitizers (own build folders; any report fails the test that hit it):
+# ASan + UBSan (leaks included), and TSan. CTEST_ARGS narrows them, e.g. CTEST_ARGS='-L fuzz'.
+ASAN_BUILD_DIR ?= build-asan
+TSAN_BUILD_DIR ?= build-tsan
+CTEST_ARGS     ?=
+test-asan: deps
+	@cmake -S . -B $(ASAN_BUILD_DIR) -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DTOPAY_SANITIZE=address,undefined \
+	  -DTOPAY_BUILD_BENCHMARKS=OFF >/dev/null
+	@cmake --build $(ASAN_BUILD_DIR) -j $(JOBS)
+	@cd $(ASAN_BUILD_DIR) && ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 \
+	  UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 ctest --output-on-failure -j $(JOBS) $(CTEST_ARGS)
+test-tsan: deps
+	@cmake -S . -B $(TSAN_BUILD_DIR) -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DTOPAY_SANITIZE=thread \
+	  -DTOPAY_BUILD_BENCHMARKS=OFF >/dev/null
+	@cmake --build $(TSAN_BUILD_DIR) -j $(JOBS)
+	@cd $(TSAN_BUILD_DIR) && TSAN_OPTIONS=halt_on_error=1:second_deadlock_stack=1 \
+	  ctest --output-on-failure -j $(JOBS) $(CTEST_ARGS)
+
 clean:
-	rm -rf $(BUILD_DIR) $(TEST_BUILD_DIR)
+	rm -rf $(BUILD_DIR) $(TEST_BUILD_DIR) $(FUZZ_BUILD_DIR) $(ASAN_BUILD_DIR) $(TSAN_BUILD_DIR)

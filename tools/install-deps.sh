@@ -16,6 +16,11 @@ packages=(
   qemu-system-x86 busybox-static cpio
 )
 
+# `make fuzz` (install-deps.sh --fuzz): clang with libFuzzer and the sanitizer runtimes.
+if [[ "${1:-}" == "--fuzz" ]]; then
+  packages+=(clang libclang-rt-14-dev)
+fi
+
 missing=()
 for package in "${packages[@]}"; do
   status=$(dpkg-query -W -f='${Status}' "$package" 2>/dev/null || true)

@@ -112,10 +112,14 @@ class TreeFlattener {
       throw ConfigError(source_, JointField(joint, "mimic"), "mimic joints are not supported");
     }
     const Eigen::Vector3d axis(joint.axis.x, joint.axis.y, joint.axis.z);
-    if (!axis.allFinite() || axis.norm() < 1e-9) {
+    // Scaled by its largest entry before it is normalized: the norm of (0, 1e308, 1e308)
+    // overflows to inf, and normalized() then gives the zero vector.
+    const double largest = axis.allFinite() ? axis.cwiseAbs().maxCoeff() : 0.0;
+    const Eigen::Vector3d scaled = largest > 0.0 ? Eigen::Vector3d(axis / largest) : axis;
+    if (!(largest > 0.0) || scaled.norm() * largest < 1e-9) {
       throw ConfigError(source_, JointField(joint, "axis"), "must be a finite non-zero vector");
     }
-    out->axis_J = axis.normalized();
+    out->axis_J = scaled.normalized();
     out->q_index = static_cast<int>(tree_->joint_names.size());
     tree_->joint_names.push_back(joint.name);
     AddPositionLimits(joint);

@@ -58,7 +58,10 @@ bool ParseUdp(std::string_view url, std::string_view rest, CanUrl* out, std::str
   }
   const std::string group(rest.substr(0, colon));
   in_addr address{};
-  if (group.empty() || inet_pton(AF_INET, group.c_str(), &address) != 1) {
+  // inet_pton reads a C string: digits and dots only, or "239.255.1.1\0junk" would pass as its
+  // prefix and the junk stay in the group.
+  if (group.empty() || group.find_first_not_of("0123456789.") != std::string::npos ||
+      inet_pton(AF_INET, group.c_str(), &address) != 1) {
     return Fail(error, url, "group '" + group + "' is not an IPv4 address (dotted quad)");
   }
   if (!IN_MULTICAST(ntohl(address.s_addr))) {

@@ -248,10 +248,15 @@ std::string CanbridgeNode::TransientCause(double now_s) const {
                   base_.status_age_s(now_s) * 1e3);
     return text;
   }
-  for (const DriveLink& drive : drives_) {
+  for (std::size_t i = 0; i < drives_.size(); ++i) {
+    const DriveLink& drive = drives_[i];
+    if (drive.phase() == DrivePhase::kFailed) return "drive start-up failed: " + drive.failure();
+    // Stopped, a drive marked for a restart (lost or rebooted) waits for the recovery's start-up,
+    // the only thing that can bring it back (a rebooted drive stays unconfigured: no heartbeat
+    // or PDOs until its start-up writes); a start-up that fails then is the cause.
+    if (state_ == BridgeState::kStopped && restart_[i]) continue;
     if (drive.rebooted()) return drive.Label() + " rebooted (boot-up while operational)";
     if (std::string lost = drive.LostReason(now_s); !lost.empty()) return "drive lost: " + lost;
-    if (drive.phase() == DrivePhase::kFailed) return "drive start-up failed: " + drive.failure();
   }
   if (CommandStale(now_s)) {
     char text[120];
@@ -394,8 +399,14 @@ void CanbridgeNode::SendCycleFrames(double now_s) {
                                                         : base::BaseMode::kQuickStop);
   DeviceCommand command;
   command.qdot_radps.assign(drives_.size(), 0.0);
-  // Running: the latest command again (zero before the first), clamped; else zero.
-  if (state_ == BridgeState::kRunning) command = limiter_.Step(latest_command_, now_s);
+  // Running: the latest command again (zero before the first), clamped; else zero, which is then
+  // the previous value sent: the first step of the next RUNNING changes from it, over the time
+  // since this frame (not since the stop began).
+  if (state_ == BridgeState::kRunning) {
+    command = limiter_.Step(latest_command_, now_s);
+  } else {
+    limiter_.ResetToZero(now_s);
+  }
 
   std::vector<can::CanFrame> frames = base_.CycleFrames(now_s, command.v_mps, command.omega_radps);
   const DriveIntent intent = moving_state ? DriveIntent::kEnable : DriveIntent::kQuickStop;

@@ -4,6 +4,8 @@
 #include <set>
 #include <stdexcept>
 
+#include <fmt/format.h>
+
 #include "core/common/error.h"
 #include "core/io/yaml_section.h"
 
@@ -32,6 +34,10 @@ void ReadDrives(YamlSection s, DriveLinkOptions* o) {
   o->node_ids.clear();
   for (const double id : ids) {
     if (id != std::floor(id)) throw ConfigError(s.source(), s.FieldPath("node_ids"), "node ids must be integers");
+    // Before the conversion to int, which is undefined for a double out of its range (1e300).
+    if (!(id >= 1.0 && id <= 127.0)) {
+      throw ConfigError(s.source(), s.FieldPath("node_ids"), fmt::format("node id {} is outside 1..127", id));
+    }
     o->node_ids.push_back(static_cast<int>(id));
   }
   s.Read("heartbeat_timeout_s", &o->heartbeat_timeout_s);

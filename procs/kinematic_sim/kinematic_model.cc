@@ -36,7 +36,12 @@ KinematicModelOptions LoadKinematicModelOptions(const std::string& path) {
   if (!root.IsMap()) throw std::runtime_error(path + ": expected a mapping");
   const std::set<std::string> known = {"x_m", "y_m", "yaw_rad", "q_rad", "joint_names", "max_step_s", "state_rate_hz"};
   for (const auto& entry : root) {
-    const std::string key = entry.first.as<std::string>();
+    // A list, a map or null as a key (`[k]: 1`) has no name: yaml-cpp's bad conversion otherwise.
+    if (!entry.first.IsScalar()) {
+      throw std::runtime_error(path + ":" + std::to_string(entry.first.Mark().line + 1) +
+                               ": a key must be a name, not a list, a map or null");
+    }
+    const std::string key = entry.first.Scalar();
     if (!known.contains(key)) throw std::runtime_error(path + ": unknown key '" + key + "'");
   }
   Read(root, "x_m", path, &o.x_m);

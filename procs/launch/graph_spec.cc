@@ -4,8 +4,10 @@
 
 #include <algorithm>
 #include <filesystem>
+#include <fstream>
 #include <functional>
 #include <set>
+#include <sstream>
 
 namespace topay::launch {
 namespace {
@@ -20,14 +22,16 @@ struct Where {
     const int line = node.IsDefined() ? node.Mark().line + 1 : 0;
     std::string at = file + (line > 0 ? ":" + std::to_string(line) : "") + ": ";
     const std::string name = path.empty() ? field : (field.empty() ? path : path + "." + field);
-    throw GraphError(at + name + ": " + what);
+    throw GraphError(at + (name.empty() ? "" : name + ": ") + what);
   }
 };
 
 void CheckKeys(const YAML::Node& map, const std::set<std::string>& known, const Where& where) {
   if (!map.IsMap()) where.Fail(map, "", "expected a mapping");
   for (const auto& entry : map) {
-    const std::string key = entry.first.as<std::string>();
+    // A key that is a list, a map or null (e.g. `[a]: 1`) has no name (and no string value).
+    if (!entry.first.IsScalar()) where.Fail(entry.first, "", "a key must be a name, not a list, a map or null");
+    const std::string key = entry.first.Scalar();
     if (!known.contains(key)) where.Fail(entry.first, key, "unknown key '" + key + "'");
   }
 }
@@ -150,11 +154,17 @@ const char* ToString(RestartPolicy policy) {
 }
 
 GraphSpec LoadGraph(const std::string& path) {
+  std::ifstream file(path, std::ios::binary);
+  if (!file) throw GraphError(path + ": cannot read the file");
+  std::ostringstream text;
+  text << file.rdbuf();
+  return ParseGraph(text.str(), path);
+}
+
+GraphSpec ParseGraph(const std::string& yaml_text, const std::string& path) {
   YAML::Node root;
   try {
-    root = YAML::LoadFile(path);
-  } catch (const YAML::BadFile&) {
-    throw GraphError(path + ": cannot read the file");
+    root = YAML::Load(yaml_text);
   } catch (const YAML::Exception& e) {
     throw GraphError(path + ":" + std::to_string(e.mark.line + 1) + ": YAML: " + e.msg);
   }

@@ -78,6 +78,10 @@ struct GraphVariables {
 /// Variables are not expanded here (ExpandVariables).
 GraphSpec LoadGraph(const std::string& path);
 
+/// As LoadGraph, from the graph file's text: `path` stands for the file (GraphSpec::file, the
+/// default name and every GraphError name it). Malformed YAML is a GraphError too.
+GraphSpec ParseGraph(const std::string& yaml_text, const std::string& path);
+
 /// Replaces ${NAME} in every command, argument, environment value and working directory.
 /// Throws GraphError naming the process and field for an unknown variable.
 void ExpandVariables(const GraphVariables& variables, GraphSpec* graph);

@@ -1,6 +1,7 @@
 #include "procs/msgs/trajectory_from_message.h"
 
 #include <cmath>
+#include <limits>
 #include <sstream>
 #include <stdexcept>
 
@@ -61,6 +62,12 @@ double RelativeCoefficientError(const PolyTrajectory& poly, const Eigen::MatrixX
       size = std::max(size, poly.coefficients.row(row).cwiseAbs().maxCoeff() * power);
     }
   }
+  // A trajectory whose weighted coefficients come near the largest double cannot be evaluated
+  // (the sum of six terms and the derivatives' factors up to 60 overflow to inf): as far from a
+  // MINCO solution as can be (found by tests/fuzz/trajectory_message_fuzz.cc: a 3.7e307
+  // coefficient gave 0 here, was accepted, and sampled to non-finite joints).
+  constexpr double kLargestEvaluable = std::numeric_limits<double>::max() / 1024;
+  if (!(size <= kLargestEvaluable) || !std::isfinite(difference)) return std::numeric_limits<double>::infinity();
   return difference / size;
 }
 

@@ -50,8 +50,10 @@ SimOptions LoadSimOptions(const std::string& path) {
   top.Read("seed", &o.seed);
   double start_utime = 0.0;
   top.Read("start_utime", &start_utime);
-  if (start_utime < 0.0 || start_utime != std::floor(start_utime)) {
-    throw ConfigError(path, "start_utime", "must be a whole number of microseconds >= 0");
+  // Below 2^63: a larger value (or .inf) does not fit the int64 it is converted to.
+  constexpr double kMaxUtime = 9223372036854775808.0;  // 2^63
+  if (!(start_utime >= 0.0 && start_utime < kMaxUtime) || start_utime != std::floor(start_utime)) {
+    throw ConfigError(path, "start_utime", "must be a whole number of microseconds >= 0 (and below 2^63)");
   }
   o.start_utime = static_cast<std::int64_t>(start_utime);
   top.Read("rate", &o.rate);

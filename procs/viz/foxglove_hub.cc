@@ -1,4 +1,5 @@
 #include "procs/viz/foxglove_hub.h"
+#include "procs/viz/json_text.h"
 
 #include <chrono>
 #include <set>
@@ -50,7 +51,7 @@ FoxgloveHub::FoxgloveHub(FoxgloveHubOptions options, HubSend send)
     list.push_back({{"id", i + 1}, {"topic", c.name}, {"encoding", "json"}, {"schemaName", c.schema_name},
                     {"schema", c.schema}, {"schemaEncoding", "jsonschema"}});
   }
-  advertise_ = json{{"op", "advertise"}, {"channels", std::move(list)}}.dump();
+  advertise_ = json{{"op", "advertise"}, {"channels", std::move(list)}}.dump(-1, ' ', false, kReplaceInvalidUtf8);
 }
 
 void FoxgloveHub::SetPlaybackHandler(std::function<void(const PlaybackCommand&)> handler) {
@@ -64,7 +65,7 @@ void FoxgloveHub::SendText(HubClientId client, const std::string& text) {
 }
 
 void FoxgloveHub::Status(HubClientId client, int level, const std::string& message) {
-  SendText(client, json{{"op", "status"}, {"level", level}, {"message", message}}.dump());
+  SendText(client, json{{"op", "status"}, {"level", level}, {"message", message}}.dump(-1, ' ', false, kReplaceInvalidUtf8));
 }
 
 void FoxgloveHub::Refuse(HubClientId client, const std::string& why) {
@@ -83,7 +84,7 @@ void FoxgloveHub::OnOpen(HubClientId client) {
                         {"capabilities", std::move(capabilities)},
                         {"metadata", {{"mode", options_.replay ? "replay" : "live"}}},
                         {"sessionId", std::to_string(session)}}
-                       .dump());
+                       .dump(-1, ' ', false, kReplaceInvalidUtf8));
   SendText(client, advertise_);
 }
 

@@ -1,4 +1,5 @@
 #include "procs/viz/viz_channels.h"
+#include "procs/viz/json_text.h"
 
 #include <nlohmann/json.hpp>
 
@@ -140,7 +141,7 @@ json Playback() {
 }
 
 VizChannel Make(Topic topic, const char* name, const char* schema_name, const json& schema, bool latched) {
-  return VizChannel{topic, name, std::string("topay.viz.") + schema_name, schema.dump(), latched};
+  return VizChannel{topic, name, std::string("topay.viz.") + schema_name, schema.dump(-1, ' ', false, kReplaceInvalidUtf8), latched};
 }
 
 }  // namespace

@@ -1,4 +1,5 @@
 #include "procs/viz/viz_feed.h"
+#include "procs/viz/json_text.h"
 
 #include <fmt/format.h>
 
@@ -44,7 +45,7 @@ void VizFeed::PublishStats(std::int64_t now_utime, const TransportCounts& transp
                                 {"frames_dropped", transport.frames_dropped},
                                 {"bytes_sent", transport.bytes_sent},
                                 {"bytes_per_s", rate}};
-  hub_->Publish(Topic::kVizStats, now_utime, stats.dump());
+  hub_->Publish(Topic::kVizStats, now_utime, stats.dump(-1, ' ', false, kReplaceInvalidUtf8));
 }
 
 void VizFeed::PublishPlayback(std::int64_t now_utime, const PlaybackState& s) {
@@ -55,7 +56,7 @@ void VizFeed::PublishPlayback(std::int64_t now_utime, const PlaybackState& s) {
                                    {"playing", s.playing},
                                    {"speed", s.speed},
                                    {"seeks", s.seeks}};
-  hub_->Publish(Topic::kPlayback, now_utime, playback.dump());
+  hub_->Publish(Topic::kPlayback, now_utime, playback.dump(-1, ' ', false, kReplaceInvalidUtf8));
 }
 
 std::string VizFeed::StatusLine(const TransportCounts& transport) const {

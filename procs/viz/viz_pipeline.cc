@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "procs/msgs/convert_robot_state.h"
+#include "procs/viz/json_text.h"
 #include "procs/viz/status_json.h"
 #include "topay/map_update_t.hpp"
 #include "topay/point_cloud_t.hpp"
@@ -23,7 +24,7 @@ nlohmann::json Nullable(double value) { return std::isfinite(value) ? nlohmann::
 
 VizPipeline::VizPipeline(const RobotView& robot, const VizPipelineOptions& options, Sink sink)
     : robot_(robot), options_(options), sink_(std::move(sink)),
-      description_(robot.Description().dump()), trajectory_(robot, options.trajectory) {
+      description_(robot.Description().dump(-1, ' ', false, kReplaceInvalidUtf8)), trajectory_(robot, options.trajectory) {
   const VizRates& r = options_.rates;
   topics_[Index(Topic::kRobotState)].min_interval_us = IntervalOf(r.robot_state_hz);
   topics_[Index(Topic::kMapBlocks)].min_interval_us = IntervalOf(r.map_hz);
@@ -145,7 +146,7 @@ void VizPipeline::HandleStatus(std::string_view channel, const void* data, std::
   std::string error;
   const std::optional<Msg> msg = CheckedDecode<Msg>(data, size, &error);
   if (!msg) return Malformed(channel, error);
-  Offer(topic, recv_utime, to_json(*msg).dump());
+  Offer(topic, recv_utime, to_json(*msg).dump(-1, ' ', false, kReplaceInvalidUtf8));
 }
 
 void VizPipeline::HandleRobotState(const void* data, std::size_t size, std::int64_t recv_utime) {
@@ -161,7 +162,7 @@ void VizPipeline::HandleRobotState(const void* data, std::size_t size, std::int6
   const double t = estimate->utime * 1e-6;
   if (Due(topics_[Index(Topic::kRobotState)], recv_utime)) {
     Emit(Topic::kRobotState, recv_utime,
-         robot_.State(t, estimate->state, estimate->v_mps, estimate->omega_radps, estimate->gripper).dump());
+         robot_.State(t, estimate->state, estimate->v_mps, estimate->omega_radps, estimate->gripper).dump(-1, ' ', false, kReplaceInvalidUtf8));
   }
   if (!Due(topics_[Index(Topic::kPlotSample)], recv_utime)) return;
   const std::vector<double> q(estimate->state.q_rad.data(), estimate->state.q_rad.data() + estimate->state.q_rad.size());
@@ -176,7 +177,7 @@ void VizPipeline::HandleRobotState(const void* data, std::size_t size, std::int6
   plot["q_plan_rad"] = plan ? nlohmann::json(std::vector<double>(plan->state.q_rad.data(),
                                                                   plan->state.q_rad.data() + plan->state.q_rad.size()))
                             : nlohmann::json(nullptr);
-  Emit(Topic::kPlotSample, recv_utime, plot.dump());
+  Emit(Topic::kPlotSample, recv_utime, plot.dump(-1, ' ', false, kReplaceInvalidUtf8));
 }
 
 void VizPipeline::HandleMap(const void* data, std::size_t size, std::int64_t recv_utime) {
@@ -222,7 +223,7 @@ void VizPipeline::HandleContact(const void* data, std::size_t size, std::int64_t
   ++contact_count_;
   contacts_.push_back(std::move(contact));
   if (static_cast<int>(contacts_.size()) > options_.max_contacts) contacts_.erase(contacts_.begin());
-  Emit(Topic::kContacts, recv_utime, nlohmann::json{{"count", contact_count_}, {"contacts", contacts_}}.dump());
+  Emit(Topic::kContacts, recv_utime, nlohmann::json{{"count", contact_count_}, {"contacts", contacts_}}.dump(-1, ' ', false, kReplaceInvalidUtf8));
 }
 
 }  // namespace topay::viz

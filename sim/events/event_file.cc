@@ -62,6 +62,8 @@ SimEvent ReadEvent(const YAML::Node& node, const std::string& source, const std:
     }
     if (center.size() == 3) {
       if ((size.array() <= 0.0).any()) throw ConfigError(source, action.FieldPath("size"), "sizes must be > 0");
+      // YamlSection reads .inf as a number (for limits); a box's yaw must be finite.
+      if (!std::isfinite(yaw)) throw ConfigError(source, action.FieldPath("yaw"), "must be a finite angle");
       OrientedBox box;
       box.center_W_m = center;
       box.size_m = size;

@@ -129,5 +129,24 @@ TEST(UrdfTreeTest, DeeplyNestedXmlIsAnError) {
   EXPECT_EQ(tree.links.size(), 3u);
 }
 
+TEST(UrdfTreeTest, AJointAxisIsAUnitVectorWhateverItsScale) {
+  // The norm of an axis with entries near 1e308 overflowed: the joint got the zero vector as
+  // its axis (found by the robot_model fuzz target, tests/fuzz/regressions/robot_model/
+  // axis_norm_overflow).
+  const auto axis_of = [](const std::string& xyz) {
+    const UrdfTree tree = ParseUrdfTree(
+        Robot(Links({"a", "b"}) + "<joint name=\"j\" type=\"revolute\"><parent link=\"a\"/><child link=\"b\"/>"
+              "<axis xyz=\"" + xyz + "\"/><limit lower=\"-1\" upper=\"1\" effort=\"1\" velocity=\"1\"/></joint>"),
+        "ok.urdf");
+    return tree.links.at(1).axis_J;
+  };
+  EXPECT_NEAR((axis_of("1e308 0 0") - Eigen::Vector3d::UnitX()).norm(), 0.0, 1e-15);
+  EXPECT_NEAR((axis_of("0 -1.5e308 1.5e308") - Eigen::Vector3d(0, -1, 1).normalized()).norm(), 0.0, 1e-15);
+  EXPECT_NEAR((axis_of("0 0 2") - Eigen::Vector3d::UnitZ()).norm(), 0.0, 1e-15);
+  ExpectNotATree(Robot(Links({"a", "b"}) + "<joint name=\"j\" type=\"continuous\"><parent link=\"a\"/>"
+                       "<child link=\"b\"/><axis xyz=\"1e-300 0 0\"/></joint>"),
+                 "joint[j].axis", {"finite non-zero"});
+}
+
 }  // namespace
 }  // namespace topay

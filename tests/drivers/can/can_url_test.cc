@@ -4,6 +4,8 @@
 
 #include <gtest/gtest.h>
 
+#include <string>
+
 namespace topay::can {
 namespace {
 
@@ -57,6 +59,20 @@ TEST(CanUrlTest, BadUrlsNameTheBadPart) {
   EXPECT_EQ(ErrorOf("udp://239.255.1.1:65536"), "udp://239.255.1.1:65536: port 65536 is outside 1-65535");
   EXPECT_EQ(ErrorOf("udp://239.255.1.1:9x"), "udp://239.255.1.1:9x: port '9x' is not a number");
   EXPECT_EQ(ErrorOf("udp://239.255.1.1:-1"), "udp://239.255.1.1:-1: port '-1' is not a number");
+}
+
+// Found by the can_text fuzz target (tests/fuzz/regressions/can_text/udp_group_with_nul): the
+// group went to inet_pton as a C string, so a NUL ended it early and whatever followed was kept
+// in the accepted group.
+TEST(CanUrlTest, GroupWithAnEmbeddedNulIsRefused) {
+  using namespace std::string_literals;
+  const std::string text = "udp://239.255.1.1\0junk:9000"s;
+  std::string error;
+  EXPECT_FALSE(ParseCanUrl(text, &error));
+  EXPECT_NE(error.find("is not an IPv4 address (dotted quad)"), std::string::npos) << error;
+  EXPECT_FALSE(ParseCanUrl("udp://239.255.1.1\0:9000"s, &error));
+  EXPECT_FALSE(ParseCanUrl("udp:// 239.255.1.1:9000", &error));
+  EXPECT_TRUE(ParseCanUrl("udp://239.255.1.10:9000", &error)) << error;
 }
 
 TEST(CanUrlTest, OpenCanBusReportsBadUrlsAndOptions) {

@@ -12,6 +12,7 @@
 #include <random>
 
 #include "drivers/arm/arm_pdo.h"
+#include "drivers/arm/cia402_drive_model.h"
 #include "drivers/arm/emcy.h"
 #include "drivers/base/protocol_ids.h"
 #include "drivers/base/status_frame.h"
@@ -270,6 +271,8 @@ TEST(CanbridgeNodeTest, LostDriveHeartbeatStopsAndRecovers) {
   Rig rig;
   ASSERT_TRUE(rig.Running());
   rig.CommandFor(rig.Command(0.0, 0.0, 0.0), 0.5);
+  const int resets_before = rig.peers.drives[5].resets;
+  const int starts_before = rig.peers.drives[5].starts;
   rig.peers.drives[5].silent = true;
   ASSERT_TRUE(rig.CommandUntil(rig.Command(0.0, 0.0, 0.0), [&] { return rig.node.state() == BridgeState::kStopped; }, 0.5));
   EXPECT_NE(rig.node.stop_reason().find("node 6"), std::string::npos) << rig.node.stop_reason();
@@ -278,11 +281,13 @@ TEST(CanbridgeNodeTest, LostDriveHeartbeatStopsAndRecovers) {
   EXPECT_EQ(rig.peers.base.mode(), base::BaseMode::kQuickStop);
   rig.CommandFor(rig.Command(0.0, 0.0, 0.0), 1.0);
   EXPECT_NE(rig.node.state(), BridgeState::kRunning);
-  const int resets_before = rig.peers.drives[5].resets;
   rig.peers.drives[5].silent = false;
   rig.CommandFor(rig.Command(0.0, 0.0, 0.0), 4.0);
   EXPECT_EQ(rig.node.state(), BridgeState::kRunning) << rig.node.stop_reason();
-  EXPECT_GT(rig.peers.drives[5].resets, resets_before);  // re-configured from NMT reset
+  // Re-configured from NMT reset (the recovery's start-up, begun while it was still silent and
+  // retried until it answered) to NMT start.
+  EXPECT_GT(rig.peers.drives[5].resets, resets_before);
+  EXPECT_GT(rig.peers.drives[5].starts, starts_before);
 }
 
 TEST(CanbridgeNodeTest, LostBaseStopsEverything) {
@@ -386,6 +391,66 @@ TEST(CanbridgeNodeTest, MalformedAndUnknownFramesAreCounted) {
   EXPECT_EQ(rig.last_status.frames_unknown, 2);
   EXPECT_EQ(rig.node.state(), BridgeState::kRunning);
   EXPECT_EQ(rig.node.frame_counters().by_kind().size(), 4u);
+}
+
+// Found by the canbridge fuzz target (tests/fuzz/regressions/canbridge/
+// first_running_step_from_last_zero_sent): the first command after a stop counted its change
+// from the time the stop began, not from the zero frame sent just before, so with cycles closer
+// together than the period (here two at the same time) a near-zero command (within
+// zero_command_tolerance) was a step of a whole cycle's acceleration at once.
+TEST(CanbridgeNodeTest, FirstRunningCommandChangesFromTheLastZeroSent) {
+  Rig rig;
+  ASSERT_TRUE(rig.Running());
+  rig.peers.base.silent = true;
+  ASSERT_TRUE(rig.TickUntil([&] { return rig.node.state() == BridgeState::kStopped; }, 0.5));
+  rig.peers.base.silent = false;
+  const control_command_t near_zero = rig.Command(0.0, 0.0, 0.9 * rig.options.zero_command_tolerance);
+  // Every cycle twice at the same time: whichever of the two enters RUNNING, its frames follow a
+  // frame sent at the same time, so nothing may change.
+  double entered_at = -1.0;
+  for (int i = 0; i < 800 && entered_at < 0.0; ++i) {
+    for (int twice = 0; twice < 2 && entered_at < 0.0; ++twice) {
+      rig.node.OnCommand(near_zero, rig.t);
+      rig.node.Cycle(rig.t, static_cast<std::int64_t>(rig.t * 1e6));
+      if (rig.node.state() == BridgeState::kRunning) entered_at = rig.t;
+      rig.peers.Step(rig.t);
+    }
+    if (entered_at < 0.0) rig.t += rig.options.cycle_period_s;
+  }
+  ASSERT_GE(entered_at, 0.0) << rig.node.stop_reason();
+  const std::uint32_t rpdo1 = 0x200u + static_cast<std::uint32_t>(rig.options.drives.node_ids[0]);
+  std::optional<double> previous;
+  for (const auto& [time, frame] : SentSince(rig, entered_at - 1.0)) {
+    if (frame.id != rpdo1) continue;
+    const auto pdo = cia402::DecodeRpdo1(frame, rig.options.drives.units, nullptr);
+    ASSERT_TRUE(pdo);
+    if (previous && time >= entered_at - 1e-9) {
+      EXPECT_EQ(pdo->target_velocity_rad_per_s, *previous) << "at " << time << " s, no time after the last frame";
+    }
+    previous = pdo->target_velocity_rad_per_s;
+  }
+}
+
+// Found by the canbridge fuzz target (tests/fuzz/regressions/canbridge/drive_reboot_recovers): a
+// drive that restarted while operational kept "rebooted" as a stop cause until its start-up was
+// re-run, which only a recovery does, and a recovery needs the cause gone: STOPPED for good.
+TEST(CanbridgeNodeTest, DriveRebootWhileRunningStopsAndRecovers) {
+  Rig rig;
+  ASSERT_TRUE(rig.Running());
+  rig.CommandFor(rig.Command(0.0, 0.0, 0.0), 0.2);
+  const int resets_before = rig.peers.drives[3].resets;
+  std::vector<can::CanFrame> out;
+  rig.peers.drives[3].model = cia402::DriveModel{};
+  rig.peers.drives[3].PowerOn(&out);  // a power dip: boot-up while operational
+  rig.peers.Send(out);
+  rig.Tick();
+  EXPECT_EQ(rig.node.state(), BridgeState::kStopped);
+  EXPECT_NE(rig.node.stop_reason().find("node 4) rebooted"), std::string::npos) << rig.node.stop_reason();
+  ASSERT_TRUE(rig.CommandUntil(rig.Command(0.0, 0.0, 0.0), [&] { return rig.node.state() == BridgeState::kRunning; },
+                               3.0))
+      << rig.node.stop_reason();
+  EXPECT_GT(rig.peers.drives[3].resets, resets_before);  // configured again from NMT reset
+  EXPECT_EQ(rig.peers.drives[3].model.state(), DriveState::kOperationEnabled);
 }
 
 }  // namespace

@@ -56,6 +56,13 @@ TEST(CanbridgeOptionsTest, ErrorsNameTheFileAndKey) {
   EXPECT_NE(ErrorOf("base: {node_id: 3}\n").find("drives.node_ids"), std::string::npos);
   EXPECT_NE(ErrorOf("drives: {node_ids: [1, 1, 2, 3, 4, 5, 6]}\n").find("appears twice"), std::string::npos);
   EXPECT_NE(ErrorOf("drives: {node_ids: [1.5]}\n").find("drives.node_ids"), std::string::npos);
+  // A whole number far outside int was converted to int first (undefined behaviour; the error
+  // then named whatever int came out): the error names the value given (config_yaml fuzz
+  // target, tests/fuzz/regressions/config_yaml/canbridge_node_id_range).
+  EXPECT_NE(ErrorOf("drives: {node_ids: [1e300]}\n").find("drives.node_ids: node id 1e+300 is outside 1..127"),
+            std::string::npos);
+  EXPECT_NE(ErrorOf("drives: {node_ids: [-4294967297]}\n").find("node id -4294967297 is outside"), std::string::npos);
+  EXPECT_NE(ErrorOf("drives: {node_ids: [0]}\n").find("node id 0 is outside 1..127"), std::string::npos);
   EXPECT_NE(ErrorOf("base: {wheel_radius_m: -1}\n").find("base"), std::string::npos);
 }
 

@@ -7,6 +7,8 @@
 
 #include <cmath>
 
+#include <yaml-cpp/exceptions.h>
+
 #include "graph_test_support.h"
 #include "procs/command_pattern/command_pattern.h"
 
@@ -89,6 +91,21 @@ TEST(KinematicModelOptions, LoadsTheShippedConfigAndNamesBadKeys) {
   }
   test::WriteText(path, "joint_names: [a]\n");
   EXPECT_THROW(LoadKinematicModelOptions(path), std::runtime_error);
+}
+
+TEST(KinematicModelOptions, AKeyThatIsNotANameIsNamedWithTheFile) {
+  // `[k]: 1` used to escape as yaml-cpp's bad conversion, without the file's name (config_yaml
+  // fuzz target, tests/fuzz/regressions/config_yaml/kinematic_key_not_a_name).
+  const std::string path = test::TestDir("kinematic_model") + "/key.yaml";
+  test::WriteText(path, "x_m: 1\n[k]: 1\n");
+  try {
+    LoadKinematicModelOptions(path);
+    FAIL() << "accepted a list as a key";
+  } catch (const YAML::Exception& e) {
+    FAIL() << "yaml-cpp's exception passed through: " << e.what();
+  } catch (const std::runtime_error& e) {
+    EXPECT_NE(std::string(e.what()).find(path + ":2: a key must be a name"), std::string::npos) << e.what();
+  }
 }
 
 }  // namespace

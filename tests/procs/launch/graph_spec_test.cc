@@ -5,6 +5,9 @@
 
 #include <gtest/gtest.h>
 
+#include <fstream>
+#include <iterator>
+
 #include "graph_test_support.h"
 
 namespace topay::launch {
@@ -153,6 +156,41 @@ TEST(GraphSpec, OtherBadValuesAreNamed) {
   EXPECT_NE(LoadError("name: x\n").find("processes: a non-empty list is required"), std::string::npos);
   EXPECT_NE(LoadError("processes: [\n").find("YAML"), std::string::npos);
   EXPECT_NE(LoadError("processes:\n  - {command: x}\n").find("name: missing"), std::string::npos);
+}
+
+TEST(GraphSpec, KeyThatIsNotANameIsAGraphError) {
+  // A list, a map or null as a key (`[k]: 1`) used to escape LoadGraph as yaml-cpp's bad
+  // conversion instead of a GraphError (found by the graph_yaml fuzz target,
+  // tests/fuzz/regressions/graph_yaml/key_not_a_name).
+  std::string path;
+  const std::string error = LoadError("processes:\n  - {name: a, command: x, [k]: 1}\n", &path);
+  EXPECT_NE(error.find(path + ":2: processes[0] (a): a key must be a name"), std::string::npos) << error;
+  EXPECT_NE(LoadError("{a: 1}: 2\nprocesses:\n  - {name: a, command: x}\n").find(":1: a key must be a name"),
+            std::string::npos);
+  EXPECT_NE(LoadError("processes:\n  - name: a\n    command: x\n    realtime: {~: 1}\n").find("(a).realtime: a key"),
+            std::string::npos);
+}
+
+TEST(GraphSpec, ParsesTextAsLoadGraphReadsFiles) {
+  const std::string path = std::string(TOPAY_SOURCE_DIR) + "/config/graphs/demo.yaml";
+  const GraphSpec loaded = LoadGraph(path);
+  std::ifstream file(path);
+  const std::string text((std::istreambuf_iterator<char>(file)), std::istreambuf_iterator<char>());
+  const GraphSpec parsed = ParseGraph(text, path);
+  EXPECT_EQ(parsed.file, path);
+  EXPECT_EQ(parsed.name, loaded.name);
+  ASSERT_EQ(parsed.processes.size(), loaded.processes.size());
+  for (std::size_t i = 0; i < parsed.processes.size(); ++i) {
+    EXPECT_EQ(parsed.processes[i].name, loaded.processes[i].name);
+    EXPECT_EQ(parsed.processes[i].args, loaded.processes[i].args);
+  }
+  try {
+    ParseGraph("processes: [\n", "mem/graph.yaml");
+    FAIL() << "no error for malformed YAML";
+  } catch (const GraphError& e) {
+    EXPECT_NE(std::string(e.what()).find("mem/graph.yaml:"), std::string::npos) << e.what();
+  }
+  EXPECT_EQ(ParseGraph("processes:\n  - {name: a, command: x}\n", "some/dir/g2.yaml").name, "g2");
 }
 
 TEST(GraphSpec, ExpandsVariablesAndNamesUnknownOnes) {

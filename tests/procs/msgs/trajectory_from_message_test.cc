@@ -6,6 +6,8 @@
 
 #include <gtest/gtest.h>
 
+#include <limits>
+
 #include "tests/common/expect_same_motion.h"
 
 #include <cmath>
@@ -106,6 +108,18 @@ TEST(TrajectoryFromMessage, RejectsCoefficientsThatAreNoMincoSolution) {
   error.clear();
   EXPECT_FALSE(ToArcYaw(arbitrary, {}, &error));
   EXPECT_NE(error.find("not a MINCO"), std::string::npos) << error;
+}
+
+// Found by tests/fuzz/trajectory_message_fuzz.cc (regressions/trajectory_message/): a joint
+// coefficient of 3.7e307 made the size of the coefficients overflow, the relative difference
+// came out 0 and the trajectory was accepted, though its joints sample to inf.
+TEST(TrajectoryFromMessage, RejectsCoefficientsTooLargeToEvaluate) {
+  PolyTrajectory poly = MakePoly(Eigen::Vector2d::Zero());
+  poly.coefficients(6 * 1 + 2, 4) = 3.7e307;
+  std::string error;
+  EXPECT_FALSE(ToArcYaw(poly, {}, &error));
+  EXPECT_NE(error.find("not a MINCO s = 3 trajectory"), std::string::npos) << error;
+  EXPECT_EQ(RelativeCoefficientError(poly, poly.coefficients), std::numeric_limits<double>::infinity());
 }
 
 TEST(TrajectoryFromMessage, ToleratesRoundingButNotMore) {

@@ -90,6 +90,13 @@ TEST(SimOptions, NamesTheFileAndKeyOfBadOptions) {
   expect_error("follower: {max_start_offset_m: 0}\n", "follower.max_start_offset_m");
   expect_error("follower: {panels_per_piece: 0}\n", "follower.panels_per_piece");
   expect_error("follower: {tolerance: 1}\n", "follower.tolerance");
+  expect_error("start_utime: -1\n", "start_utime");
+  // Beyond int64 (.inf, 1e300, 2^63) the conversion to start_utime was undefined behaviour
+  // (config_yaml fuzz target, tests/fuzz/regressions/config_yaml/sim_start_utime_in_int64).
+  expect_error("start_utime: .inf\n", "start_utime");
+  expect_error("start_utime: 1e300\n", "start_utime");
+  expect_error("start_utime: 9223372036854775808\n", "start_utime");
+  EXPECT_EQ(LoadSimOptions(Write("utime.yaml", "start_utime: 1700000000000000\n")).start_utime, 1700000000000000);
 }
 
 SimOptions Base() {

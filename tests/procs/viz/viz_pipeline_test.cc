@@ -67,6 +67,18 @@ TEST_F(PipelineTest, ForwardsTheLatestStatusOnceItsIntervalHasPassed) {
   EXPECT_EQ(*pipeline_.Latched(Topic::kPlannerStatus), out[1].payload.dump());
 }
 
+// Found by tests/fuzz/viz_inputs_fuzz.cc: a status string that is not UTF-8 made the JSON
+// text throw (nlohmann type_error 316), ending topay-viz. Such bytes now become U+FFFD.
+TEST_F(PipelineTest, AStatusThatIsNotUtf8IsForwardedWithReplacementCharacters) {
+  planner_status_t status = report::test::Planner(planner_status_t::FAILED, 11, 0, 0, 0);
+  status.failure_reason = "bad \xff\xfe byte";
+  EXPECT_NO_THROW(Feed("PLANNER_STATUS", status, At(0.0)));
+  pipeline_.Flush(At(0.2));
+  const std::vector<test::Forwarded> out = recorder_.Of(Topic::kPlannerStatus);
+  ASSERT_EQ(out.size(), 1u);
+  EXPECT_EQ(out[0].payload["failure_reason"], "bad \xef\xbf\xbd\xef\xbf\xbd byte");
+}
+
 TEST_F(PipelineTest, SamplesATrajectoryOncePerIdAndPlotsItsPlan) {
   Feed("TRAJECTORY", report::test::TrajectoryMessage(101, 0.25, 0.3), At(0.25));
   Feed("TRAJECTORY", report::test::TrajectoryMessage(101, 0.25, 0.3), At(0.26));  // same id

@@ -100,6 +100,9 @@ INSTANTIATE_TEST_SUITE_P(
         BadCase{"events:\n  - {at_s: 1, appear: {id: 9, center: [0, 0, 1]}}\n", "events[0].appear.center", "together"},
         BadCase{"events:\n  - {at_s: 1, appear: {id: 9, center: [0, 0, 1], size: [1, 0, 1]}}\n", "events[0].appear.size", "> 0"},
         BadCase{"events:\n  - {at_s: 1, appear: {id: 9, center: [0, .nan, 1], size: [1, 1, 1]}}\n", "events[0].appear.center[1]", "finite"},
+        // An infinite yaw used to load (config_yaml fuzz target, regressions/config_yaml/event_yaw_finite).
+        BadCase{"events:\n  - {at_s: 1, appear: {id: 9, center: [0, 0, 1], size: [1, 1, 1], yaw: .inf}}\n", "events[0].appear.yaw", "finite"},
+        BadCase{"events:\n  - {at_s: 1, appear: {id: 9, center: [0, 0, 1], size: [1, 1, 1], yaw: -.inf}}\n", "events[0].appear.yaw", "finite"},
         BadCase{"events:\n  - {at_s: 1, appear: {id: 9, colour: red}}\n", "events[0].appear.colour", "unknown field"},
         BadCase{"events:\n  - {at_s: 1, when: 3, appear: {id: 9}}\n", "events[0].when", "unknown field"},
         BadCase{"events:\n  - {near: {point: [1, 2]}, disappear: {id: 2}}\n", "events[0].near.distance_m", "required"},

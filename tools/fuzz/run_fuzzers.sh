@@ -1,0 +1,79 @@
+#!/usr/bin/env bash
+# Runs the libFuzzer targets of a TOPAY_FUZZ build (make fuzz; docs/reliability.md): each for
+# RUNS executions or MAX_SECONDS, whichever comes first, from its committed seeds
+# (tests/fuzz/corpus/<target>/) and regressions plus what earlier runs found
+# (BUILD_DIR/fuzz/corpus/<target>/, where new inputs go). A crash, a leak, a UBSan report, a
+# hang (> 10 s for one input) or memory above 2.5 GB stops that target and fails the run; the
+# input is kept as BUILD_DIR/fuzz/artifacts/<target>-crash-... (add it to
+# tests/fuzz/regressions/<target>/ with the fix). Writes BUILD_DIR/fuzz/report.md: executions,
+# time and result per target.
+#
+#   tools/fuzz/run_fuzzers.sh BUILD_DIR RUNS MAX_SECONDS [TARGET...]
+set -uo pipefail
+
+if [ $# -lt 3 ]; then
+  echo "usage: $0 BUILD_DIR RUNS MAX_SECONDS [TARGET...]" >&2
+  exit 2
+fi
+build_dir=$(cd "$1" && pwd)
+runs=$2
+max_seconds=$3
+shift 3
+root=$(cd "$(dirname "$0")/../.." && pwd)
+out=$build_dir/fuzz
+mkdir -p "$out/artifacts" "$out/logs"
+
+targets=("$@")
+if [ ${#targets[@]} -eq 0 ]; then
+  for exe in "$build_dir"/bin/fuzz/*_fuzz; do targets+=("$(basename "$exe" _fuzz)"); done
+fi
+if [ ${#targets[@]} -eq 0 ]; then
+  echo "run_fuzzers: no fuzz target in $build_dir/bin/fuzz (build target topay_fuzz_all)" >&2
+  exit 1
+fi
+
+report=$out/report.md
+{
+  echo "| target | executions | seconds | exec/s | corpus | peak RSS MB | result |"
+  echo "|---|---:|---:|---:|---:|---:|---|"
+} > "$report"
+
+failed=0
+for name in "${targets[@]}"; do
+  exe=$build_dir/bin/fuzz/${name}_fuzz
+  if [ ! -x "$exe" ]; then
+    echo "run_fuzzers: $exe is not built" >&2
+    failed=1
+    continue
+  fi
+  work=$out/corpus/$name
+  mkdir -p "$work"
+  dirs=("$work" "$root/tests/fuzz/corpus/$name")
+  [ -d "$root/tests/fuzz/regressions/$name" ] && dirs+=("$root/tests/fuzz/regressions/$name")
+  log=$out/logs/$name.log
+  echo "run_fuzzers: $name (up to $runs runs, $max_seconds s)"
+  start=$(date +%s.%N)
+  ASAN_OPTIONS=${ASAN_OPTIONS:-detect_leaks=1:allocator_may_return_null=0} \
+  UBSAN_OPTIONS=${UBSAN_OPTIONS:-print_stacktrace=1:halt_on_error=1} \
+    "$exe" -runs="$runs" -max_total_time="$max_seconds" -timeout=10 -rss_limit_mb=2560 \
+      -print_final_stats=1 -artifact_prefix="$out/artifacts/$name-" "${dirs[@]}" > "$log" 2>&1
+  code=$?
+  seconds=$(awk -v a="$start" -v b="$(date +%s.%N)" 'BEGIN { printf "%.1f", b - a }')
+  execs=$(sed -n 's/^stat::number_of_executed_units: *//p' "$log" | tail -1)
+  rss=$(sed -n 's/^stat::peak_rss_mb: *//p' "$log" | tail -1)
+  corpus=$(find "$work" -type f | wc -l)
+  if [ "$code" -eq 0 ]; then
+    result=ok
+  else
+    result="FAILED (exit $code; $log)"
+    failed=1
+    grep -m3 -E "ERROR: |runtime error|fuzz check failed|SUMMARY" "$log" | sed 's/^/  /'
+  fi
+  rate=$(awk -v n="${execs:-0}" -v s="$seconds" 'BEGIN { printf "%.0f", (s > 0 ? n / s : 0) }')
+  printf '| %s | %s | %.0f | %s | %s | %s | %s |\n' "$name" "${execs:-?}" "$seconds" "$rate" "$corpus" \
+    "${rss:-?}" "$result" >> "$report"
+  echo "  $name: ${execs:-?} executions in ${seconds%.*} s: $result"
+done
+echo "run_fuzzers: report in $report"
+cat "$report"
+exit $failed
