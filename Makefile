@@ -1,7 +1,7 @@
 # Two commands on a fresh Debian 12 machine:
 #   make demo   install what is missing, build, run the main job
 #   make test   install what is missing, build (with assertions), run every test
-.PHONY: all deps build build-test test test-fast test-demo demo missions demo-plan graph replay-view bench bench-replan bench-can fuzz test-asan test-tsan clean
+.PHONY: all deps build build-test test test-fast test-demo demo missions demo-plan graph replay-view bench bench-replan bench-can fuzz faults test-asan test-tsan clean
 
 BUILD_DIR      ?= build
 TEST_BUILD_DIR ?= build-test
@@ -117,6 +117,16 @@ fuzz:
 	  -DTOPAY_BUILD_BENCHMARKS=OFF >/dev/null
 	@cmake --build $(FUZZ_BUILD_DIR) -j $(JOBS) --target topay_fuzz_all
 	tools/fuzz/run_fuzzers.sh $(FUZZ_BUILD_DIR) $(FUZZ_RUNS) $(FUZZ_SECONDS) $(FUZZ_TARGETS)
+
+# The fault-injection suite (tools/topay_faults, docs/reliability.md): the closed-loop mission
+# through CAN, again and again, with FAULT_RUNS episodes of every fault (kill -9 of each process,
+# CAN, LCM, hostile goals and payloads) injected during it; the table in out/faults/results.md.
+# Exits non-zero if any episode broke a rule (contact, no stop, late stop, crash, no recovery).
+# FAULTS picks some (comma-separated; `build/bin/topay-faults --list`). About 2 h for 20 runs.
+FAULT_RUNS ?= 20
+FAULTS     ?=
+faults: build
+	$(BUILD_DIR)/bin/topay-faults --runs $(FAULT_RUNS) --out out/faults $(if $(FAULTS),--faults $(FAULTS),)
 
 # The whole suite under sanitizers (own build folders; any report fails the test that hit it):
 # ASan + UBSan (leaks included), and TSan. CTEST_ARGS narrows them, e.g. CTEST_ARGS='-L fuzz'.

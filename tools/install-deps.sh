@@ -8,6 +8,7 @@ packages=(
   libeigen3-dev
   liblcm-dev liblcm-bin liblcm-java libglib2.0-dev default-jdk-headless
   iproute2 util-linux python3 can-utils
+  nftables  # topay-faults (make faults): LCM datagram loss inside the graph's namespace
   liburdfdom-dev libyaml-cpp-dev nlohmann-json3-dev
   libcli11-dev libspdlog-dev libcairo2-dev libtbb-dev libceres-dev
   googletest libgtest-dev libbenchmark-dev

@@ -1,0 +1,240 @@
+// FaultEpisode and FaultInjector on a real LCM bus in a private network namespace (skipped,
+// with the reason, where none can be made), with the test playing the graph: it answers the
+// injected fault the way the bridge would (DRIVE_STATUS STOPPED some ms later, then RUNNING and
+// moving again), and the episode must time the stop and the recovery from what it saw on the
+// bus. A kill -9 episode kills a real process named topay-tracker (a copy of sleep) and sees the
+// "launcher's" restart (a new process whose heartbeat the test publishes).
+
+#include <gtest/gtest.h>
+#include <lcm/lcm-cpp.hpp>
+
+#include <atomic>
+#include <mutex>
+#include <optional>
+#include <filesystem>
+#include <thread>
+
+#include "tests/procs/graph_test_support.h"
+#include "tools/topay_faults/fault_episode.h"
+#include "topay/control_command_t.hpp"
+#include "topay/drive_status_t.hpp"
+#include "topay/heartbeat_t.hpp"
+#include "topay/mission_status_t.hpp"
+#include "topay/motorsim_fault_t.hpp"
+
+namespace topay::tools {
+namespace {
+
+using test::Clock;
+using test::SecondsSince;
+
+constexpr const char* kUrl = "udpm://239.255.76.67:7667?ttl=0";
+
+// Plays the graph on the bus every 5 ms: a moving robot (ACTUATOR_COMMAND) under a running bridge
+// (DRIVE_STATUS, at once on a change) and a running mission, and CONTROL_COMMAND if asked. Stop()
+// makes the bridge STOPPED `delay_s` after now, or after the last command once commands have
+// stopped; Resume() makes it RUNNING and moving again.
+class PlayedGraph {
+ public:
+  explicit PlayedGraph(bool send_commands) : send_commands_(send_commands), thread_([this] { Run(); }) {}
+  ~PlayedGraph() {
+    quit_ = true;
+    thread_.join();
+  }
+  void Stop(const std::string& reason, double delay_s) {
+    std::lock_guard<std::mutex> lock(mutex_);
+    reason_ = reason;
+    const Clock::time_point from = commands_stopped_ ? last_command_ : Clock::now();
+    stop_at_ = from + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(delay_s));
+    stopping_ = true;
+  }
+  void StopCommands() {
+    std::lock_guard<std::mutex> lock(mutex_);
+    commands_stopped_ = true;
+  }
+  void Resume() {
+    std::lock_guard<std::mutex> lock(mutex_);
+    stopping_ = false, commands_stopped_ = false;
+  }
+  // HEARTBEAT of a process with this pid every 100 ms from now on (a restarted process at work).
+  void Heartbeat(pid_t pid) {
+    std::lock_guard<std::mutex> lock(mutex_);
+    heartbeat_pid_ = pid;
+  }
+
+ private:
+  void Run() {
+    lcm::LCM bus(kUrl);
+    int last_state = -1;
+    for (int cycle = 0; !quit_; ++cycle) {
+      std::unique_lock<std::mutex> lock(mutex_);
+      const Clock::time_point now = Clock::now();
+      const bool halted = stopping_ && now >= stop_at_;
+      const bool commands = send_commands_ && !commands_stopped_;
+      if (commands) last_command_ = now;
+      const std::string reason = halted ? reason_ : "";
+      const pid_t heartbeat_pid = heartbeat_pid_;
+      lock.unlock();
+      if (heartbeat_pid > 0 && cycle % 20 == 0) {
+        heartbeat_t beat{};
+        beat.process_name = "tracker";
+        beat.pid = heartbeat_pid;
+        bus.publish("HEARTBEAT", &beat);
+      }
+      control_command_t command{};
+      command.num_joints = 7;
+      command.qdot_radps.assign(7, 0.0);
+      command.v_mps = halted ? 0.0 : 0.3;
+      const int state = halted ? drive_status_t::STOPPED : drive_status_t::RUNNING;
+      if (state != last_state || cycle % 20 == 0) {  // the bridge: on every change, and at 10 Hz
+        drive_status_t status{};
+        status.state = static_cast<std::int8_t>(state);
+        status.stop_reason = reason;
+        bus.publish("DRIVE_STATUS", &status);
+        mission_status_t mission{};
+        mission.state = mission_status_t::RUNNING;
+        mission.step_index = 1;
+        bus.publish("MISSION_STATUS", &mission);
+        last_state = state;
+      }
+      if (commands) bus.publish("CONTROL_COMMAND", &command);
+      bus.publish("ACTUATOR_COMMAND", &command);
+      std::this_thread::sleep_for(std::chrono::milliseconds(5));
+    }
+  }
+
+  const bool send_commands_;
+  std::atomic<bool> quit_{false};
+  std::mutex mutex_;
+  bool stopping_ = false, commands_stopped_ = false;
+  Clock::time_point stop_at_{}, last_command_{};
+  pid_t heartbeat_pid_ = 0;
+  std::string reason_;
+  std::thread thread_;
+};
+
+class FaultEpisodeTest : public testing::Test {
+ protected:
+  void SetUp() override {
+    std::string why;
+    if (!test::EnterTestNamespace(&why)) GTEST_SKIP() << why;
+    dir_ = test::TestDir("episode");
+  }
+  FaultInjectorOptions InjectorOptions() const {
+    FaultInjectorOptions options;
+    options.lcm_url = kUrl;
+    options.work_dir = dir_;
+    options.graph_ancestor = getpid();
+    options.room_max_m = Eigen::Vector3d(10, 10, 1.6);
+    return options;
+  }
+  // Ticks the episode every ms until it is over (20 s at most).
+  static void RunEpisode(FaultEpisode* episode, GraphMonitor* monitor,
+                         const std::function<void(const GraphView&)>& on_tick = nullptr) {
+    const Clock::time_point start = Clock::now();
+    while (SecondsSince(start) < 20.0) {
+      const GraphView view = monitor->View();
+      if (on_tick) on_tick(view);
+      if (episode->Tick(view)) return;
+      std::this_thread::sleep_for(std::chrono::milliseconds(1));
+    }
+    FAIL() << "the episode did not end within 20 s";
+  }
+
+  std::string dir_;
+};
+
+FaultEpisodeOptions QuickOptions() {
+  FaultEpisodeOptions options;
+  options.ready_timeout_s = 10.0;
+  options.recover_timeout_s = 10.0;
+  options.settle_s = 0.2;
+  return options;
+}
+
+TEST_F(FaultEpisodeTest, TimesTheBridgesStopAndTheRecoveryFromTheBus) {
+  GraphMonitor monitor(kUrl);
+  FaultInjector injector(InjectorOptions(), &monitor);
+  PlayedGraph graph(false);
+  lcm::LCM listener(kUrl);
+  std::atomic<int> faults_seen{0};
+  struct Counter {
+    std::atomic<int>* n;
+    PlayedGraph* graph;
+    void On(const lcm::ReceiveBuffer*, const std::string&, const motorsim_fault_t* f) {
+      if (f->kind == motorsim_fault_t::BUS_OFF) ++*n, graph->Stop("bus-off", 0.05);
+    }
+  } counter{&faults_seen, &graph};
+  listener.subscribe("MOTORSIM_FAULT", &Counter::On, &counter);
+  std::thread listen([&] {
+    for (int k = 0; k < 300; ++k) listener.handleTimeout(10);
+  });
+  FaultEpisode episode(SelectFaults({"can-bus-off"})[0], 7, &injector, getpid(), QuickOptions());
+  std::optional<Clock::time_point> stopped_at;
+  bool resumed = false;
+  RunEpisode(&episode, &monitor, [&](const GraphView& view) {
+    if (view.drive_state == drive_status_t::STOPPED && !stopped_at) stopped_at = Clock::now();
+    if (stopped_at && !resumed && SecondsSince(*stopped_at) > 1.0) graph.Resume(), resumed = true;
+  });
+  listen.join();
+  const EpisodeResult& r = episode.Result();
+  EXPECT_EQ(faults_seen.load(), 1);
+  ASSERT_TRUE(r.injected) << r.notes;
+  EXPECT_NE(r.notes.find("MOTORSIM_FAULT kind 3"), std::string::npos) << r.notes;
+  EXPECT_EQ(r.safe_evidence, "bridge STOPPED: bus-off");
+  EXPECT_GE(r.safe_ms, 50.0);    // the bridge's answer came 50 ms after the fault was seen
+  EXPECT_LT(r.safe_ms, 1000.0);
+  EXPECT_TRUE(r.recovered) << r.reaction;
+  EXPECT_GE(r.recover_s, 1.0);   // RUNNING and moving again only after 1 s stopped
+  EXPECT_EQ(r.contacts, 0);
+}
+
+TEST_F(FaultEpisodeTest, AKillIsTimedFromTheLastCommandAndTheRestartIsSeen) {
+  const std::string tracker = dir_ + "/topay-tracker";
+  std::filesystem::copy_file("/bin/sleep", tracker);
+  std::filesystem::permissions(tracker, std::filesystem::perms::owner_all);
+  pid_t first = test::Spawn({tracker, "60"}, dir_ + "/first.txt");
+  GraphMonitor monitor(kUrl);
+  FaultInjector injector(InjectorOptions(), &monitor);
+  PlayedGraph graph(true);
+  FaultEpisode episode(SelectFaults({"kill-tracker"})[0], 5, &injector, getpid(), QuickOptions());
+  pid_t second = 0;
+  Clock::time_point died{};
+  RunEpisode(&episode, &monitor, [&](const GraphView&) {
+    if (first > 0 && waitpid(first, nullptr, WNOHANG) == first) {  // the tracker died: no more commands
+      graph.StopCommands();
+      graph.Stop("stale command", 0.08);
+      first = 0, died = Clock::now();
+    }
+    if (first == 0 && second == 0 && SecondsSince(died) > 0.5) {  // the launcher's restart
+      second = test::Spawn({tracker, "60"}, dir_ + "/second.txt");
+      graph.Heartbeat(second);
+      graph.Resume();
+    }
+  });
+  const EpisodeResult& r = episode.Result();
+  ASSERT_TRUE(r.injected) << r.notes;
+  EXPECT_NE(r.notes.find("(topay-tracker)"), std::string::npos) << r.notes;
+  EXPECT_EQ(r.safe_evidence, "bridge STOPPED: stale command");
+  EXPECT_GE(r.safe_ms, 75.0);  // 80 ms after the last command, on the test's clock
+  EXPECT_LT(r.safe_ms, 1000.0);
+  EXPECT_TRUE(r.recovered) << r.reaction;
+  EXPECT_NE(r.reaction.find("restarted as pid " + std::to_string(second)), std::string::npos) << r.reaction;
+  EXPECT_EQ(r.other_restarts, 0) << r.reaction;
+  if (second > 0) kill(second, SIGKILL), waitpid(second, nullptr, 0);
+}
+
+TEST_F(FaultEpisodeTest, ARobotThatNeverMovesIsNotInjected) {
+  GraphMonitor monitor(kUrl);
+  FaultInjector injector(InjectorOptions(), &monitor);
+  FaultEpisodeOptions options = QuickOptions();
+  options.ready_timeout_s = 0.5;
+  FaultEpisode episode(SelectFaults({"can-bus-off"})[0], 1, &injector, getpid(), options);
+  RunEpisode(&episode, &monitor);
+  EXPECT_FALSE(episode.Result().injected);
+  EXPECT_FALSE(episode.Result().refused);  // owed again, not given up
+  EXPECT_NE(episode.Result().notes.find("did not move"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace topay::tools

@@ -1,0 +1,244 @@
+#include "fault_episode.h"
+
+#include <algorithm>
+
+#include <fmt/format.h>
+
+#include "graph_processes.h"
+#include "topay/drive_status_t.hpp"
+#include "topay/mission_status_t.hpp"
+#include "topay/planner_status_t.hpp"
+
+namespace topay::tools {
+namespace {
+
+constexpr double kMovingRecentlyS = 0.3;  // moving = an ACTUATOR_COMMAND above threshold this recently
+constexpr double kResetPeriodS = 0.5;
+constexpr std::int64_t kToolGoalIds = 900000000;  // goal ids at or above: the injector's goals
+constexpr double kDriveStatusFreshS = 0.5;         // DRIVE_STATUS comes at 10 Hz: older means no bridge
+
+// The bridge's state, if its last DRIVE_STATUS is recent (a dead bridge's last word is not news).
+int FreshDriveState(const GraphView& view) {
+  return view.last_drive_status_s >= 0.0 && view.now_s - view.last_drive_status_s < kDriveStatusFreshS
+             ? view.drive_state
+             : -1;
+}
+
+bool HeartbeatFrom(const GraphView& view, pid_t pid) {
+  for (const auto& [name, beat_pid] : view.heartbeat_pid) {
+    if (beat_pid == pid) return true;
+  }
+  return false;
+}
+
+std::string DriveStateName(int state) {
+  switch (state) {
+    case drive_status_t::STARTING: return "STARTING";
+    case drive_status_t::ENABLING: return "ENABLING";
+    case drive_status_t::RUNNING: return "RUNNING";
+    case drive_status_t::STOPPED: return "STOPPED";
+    case drive_status_t::FAULT: return "FAULT";
+    case drive_status_t::RECOVERING: return "RECOVERING";
+    case drive_status_t::REPLAY: return "REPLAY";
+  }
+  return "none";
+}
+
+bool MissionOver(int state) {
+  return state == mission_status_t::SUCCEEDED || state == mission_status_t::FAILED ||
+         state == mission_status_t::ABORTED;
+}
+
+}  // namespace
+
+FaultEpisode::FaultEpisode(const FaultSpec& fault, std::uint64_t seed, FaultInjector* injector, pid_t graph_ancestor,
+                           const FaultEpisodeOptions& options)
+    : fault_(fault), injector_(injector), ancestor_(graph_ancestor), options_(options) {
+  result_.fault = fault.name;
+  result_.seed = seed;
+}
+
+bool FaultEpisode::Ready(const GraphView& view) const {
+  return view.last_moving_s >= 0.0 && view.now_s - view.last_moving_s < kMovingRecentlyS &&
+         FreshDriveState(view) == drive_status_t::RUNNING && view.mission_state == mission_status_t::RUNNING;
+}
+
+bool FaultEpisode::Tick(const GraphView& view) {
+  if (start_s_ < 0.0) start_s_ = view.now_s;
+  switch (phase_) {
+    case Phase::kWaitReady:
+      if (Ready(view)) {
+        Inject(view);
+      } else if (view.now_s - start_s_ > options_.ready_timeout_s || MissionOver(view.mission_state)) {
+        result_.notes = MissionOver(view.mission_state) ? "the mission ended before the robot moved again"
+                                                        : "the robot did not move under a running bridge";
+        phase_ = Phase::kDone;
+      }
+      break;
+    case Phase::kFault:
+      injector_->Tick();
+      WatchSafeState(view, -1.0);
+      OperatorReset(view);
+      if (view.now_s - inject_s_ >= fault_.hold_s) {
+        injector_->End();
+        clear_s_ = view.now_s;
+        phase_ = Phase::kRecover;
+      }
+      break;
+    case Phase::kRecover:
+      WatchSafeState(view, -1.0);
+      OperatorReset(view);
+      if (Recovered(view)) {
+        result_.recovered = true;
+        result_.recover_s = view.now_s - inject_s_;
+        recovered_at_s_ = view.now_s;
+        phase_ = Phase::kSettle;
+      } else if (view.mission_state == mission_status_t::FAILED || view.mission_state == mission_status_t::ABORTED) {
+        Finish(view, "mission " + std::string(view.mission_state == mission_status_t::FAILED ? "FAILED" : "ABORTED") +
+                         ": " + view.mission_detail);
+      } else if (view.now_s - clear_s_ > options_.recover_timeout_s) {
+        Finish(view, fmt::format("not recovered {:.0f} s after the fault was cleared (bridge {}, mission step {})",
+                                 options_.recover_timeout_s, DriveStateName(FreshDriveState(view)), view.mission_step));
+      }
+      break;
+    case Phase::kSettle:
+      if (view.now_s - recovered_at_s_ >= options_.settle_s || MissionOver(view.mission_state)) Finish(view, "");
+      break;
+    case Phase::kDone:
+      break;
+  }
+  return phase_ == Phase::kDone;
+}
+
+void FaultEpisode::Inject(const GraphView& view) {
+  pids_at_start_ = DescendantProcesses(ancestor_);
+  contacts_at_start_ = view.contacts;
+  mission_step_at_start_ = view.mission_step;
+  inject_s_ = view.now_s;
+  result_.injected = injector_->Begin(fault_);
+  result_.notes = injector_->Notes();
+  if (!result_.injected) {
+    result_.refused = true;
+    phase_ = Phase::kDone;
+    return;
+  }
+  phase_ = Phase::kFault;
+}
+
+// The safe state: the bridge STOPPED or FAULT, every drive commanded to 0, or the graph gone;
+// whichever is seen first after the injection.
+void FaultEpisode::WatchSafeState(const GraphView& view, double graph_end_s) {
+  if (result_.safe_ms >= 0.0) return;
+  double safe_s = -1.0;
+  std::string evidence;
+  for (const DriveStateChange& change : view.drive_changes) {
+    if (change.time_s >= inject_s_ &&
+        (change.state == drive_status_t::STOPPED || change.state == drive_status_t::FAULT)) {
+      safe_s = change.time_s;
+      evidence = "bridge " + DriveStateName(change.state) + ": " + change.stop_reason;
+      break;
+    }
+  }
+  if (view.actuator_zero && view.actuator_zero_since_s >= inject_s_ &&
+      (safe_s < 0.0 || view.actuator_zero_since_s < safe_s)) {
+    safe_s = view.actuator_zero_since_s;
+    evidence = "every drive commanded to 0";
+  }
+  if (graph_end_s >= 0.0 && safe_s < 0.0) safe_s = graph_end_s, evidence = "graph stopped";
+  if (safe_s < 0.0) return;
+  const double reference_s =
+      fault_.from_last_command && view.last_control_command_s >= 0.0 ? view.last_control_command_s : inject_s_;
+  result_.safe_ms = 1000.0 * (safe_s - reference_s);
+  result_.safe_evidence = evidence;
+}
+
+void FaultEpisode::OperatorReset(const GraphView& view) {
+  if (!fault_.operator_reset || view.drive_state != drive_status_t::FAULT) {
+    fault_seen_s_ = -1.0;
+    return;
+  }
+  if (fault_seen_s_ < 0.0) fault_seen_s_ = view.now_s;
+  if (view.now_s - fault_seen_s_ >= options_.reset_after_s &&
+      (last_reset_s_ < 0.0 || view.now_s - last_reset_s_ >= kResetPeriodS)) {
+    injector_->SendFaultReset();
+    last_reset_s_ = view.now_s;
+    ++resets_sent_;
+  }
+}
+
+bool FaultEpisode::Recovered(const GraphView& view) {
+  if (!planner_failure_noted_ && view.planner_state == planner_status_t::FAILED &&
+      view.planner_goal_id >= kToolGoalIds) {
+    AddReaction("planner: " + view.planner_failure);
+    planner_failure_noted_ = true;
+  }
+  if (view.mission_state == mission_status_t::SUCCEEDED) return true;
+  if (fault_.stop_expected && result_.safe_ms < 0.0) return false;  // no recovery before the stop
+  // Moving again after the fault was cleared and after the stop it caused, if it caused one.
+  const double stopped_s = result_.safe_ms >= 0.0 ? inject_s_ + std::max(0.0, result_.safe_ms * 1e-3) : 0.0;
+  const bool moving_again = view.last_moving_s > std::max(clear_s_, stopped_s);
+  const bool step_done = view.mission_step > mission_step_at_start_;
+  if (FreshDriveState(view) != drive_status_t::RUNNING || !(moving_again || step_done)) return false;
+  const auto now = DescendantProcesses(ancestor_);  // only now: a scan of /proc
+  for (const auto& [name, pid] : pids_at_start_) {
+    if (!now.count(name)) return false;
+  }
+  if (fault_.family == FaultFamily::kKill) {
+    const auto it = now.find(CommandNameOf(fault_.target));
+    if (it == now.end() || it->second == injector_->KilledPid()) return false;
+    // Back at work: its first heartbeat (the logger sends none).
+    if (fault_.target != "logger" && !HeartbeatFrom(view, it->second)) return false;
+  }
+  return true;
+}
+
+void FaultEpisode::GraphEnded(const GraphView& view, int exit_code) {
+  if (phase_ == Phase::kDone) return;
+  if (phase_ == Phase::kWaitReady) {
+    result_.notes = "the graph ended before the robot moved again";
+    phase_ = Phase::kDone;
+    return;
+  }
+  injector_->End();
+  WatchSafeState(view, view.now_s);
+  const bool success = view.mission_state == mission_status_t::SUCCEEDED && exit_code == 0;
+  if (success && !result_.recovered) result_.recovered = true, result_.recover_s = view.now_s - inject_s_;
+  Finish(view, fmt::format("graph ended (launcher exit code {}{})", exit_code,
+                           view.mission_state >= 0 && !view.mission_detail.empty() && !success
+                               ? ", mission: " + view.mission_detail
+                               : ""));
+}
+
+void FaultEpisode::Finish(const GraphView& view, const std::string& outcome) {
+  injector_->End();
+  result_.notes = injector_->Notes();
+  result_.contacts = view.contacts - contacts_at_start_;
+  const auto now = DescendantProcesses(ancestor_);
+  const std::string target = fault_.family == FaultFamily::kKill ? CommandNameOf(fault_.target) : "";
+  std::string restarted;
+  for (const auto& [name, pid] : pids_at_start_) {
+    const auto it = now.find(name);
+    if (name != target && it != now.end() && it->second != pid) {
+      ++result_.other_restarts;
+      restarted += (restarted.empty() ? "" : ", ") + name;
+    }
+  }
+  std::string head = result_.safe_ms >= 0.0 ? fmt::format("{} after {:.0f} ms", result_.safe_evidence, result_.safe_ms)
+                                            : "no stop";
+  if (resets_sent_ > 0) head += fmt::format("; {} FAULT_RESET sent", resets_sent_);
+  result_.reaction = head + (result_.reaction.empty() ? "" : "; " + result_.reaction);
+  if (!target.empty()) {
+    const auto it = now.find(target);
+    const bool back = it != now.end() && it->second != injector_->KilledPid();
+    AddReaction(back ? fmt::format("restarted as pid {}", it->second) : std::string("NOT restarted"));
+  }
+  if (!restarted.empty()) AddReaction("also restarted: " + restarted);
+  if (!outcome.empty()) AddReaction(outcome);
+  phase_ = Phase::kDone;
+}
+
+void FaultEpisode::AddReaction(const std::string& text) {
+  result_.reaction += (result_.reaction.empty() ? "" : "; ") + text;
+}
+
+}  // namespace topay::tools
