@@ -9,8 +9,6 @@
 // <out>/results.md: the summary table and every episode; results.json; <out>/mission-<k>/: each
 // mission's room, graph.lcmlog and process logs.
 
-#include <signal.h>
-
 #include <filesystem>
 #include <fstream>
 #include <iostream>
@@ -21,6 +19,7 @@
 #include "fault_table.h"
 #include "fault_verdict.h"
 #include "procs/runtime/net_namespace.h"
+#include "tools/common/stop_signals.h"
 #include "tools/common/tool_cli.h"
 
 namespace {
@@ -31,23 +30,6 @@ using namespace topay::tools;
 constexpr int kExitViolations = 3;  // an episode broke a rule (contact, no stop, late stop, crash, no recovery)
 constexpr int kExitInterrupted = 4;
 constexpr int kExitNoNamespace = 5;  // no private network namespace could be made (nothing was run)
-
-bool StopRequested() {
-  sigset_t signals;
-  sigemptyset(&signals);
-  sigaddset(&signals, SIGINT);
-  sigaddset(&signals, SIGTERM);
-  const timespec no_wait{0, 0};
-  return sigtimedwait(&signals, nullptr, &no_wait) > 0;
-}
-
-void BlockStopSignals() {
-  sigset_t signals;
-  sigemptyset(&signals);
-  sigaddset(&signals, SIGINT);
-  sigaddset(&signals, SIGTERM);
-  sigprocmask(SIG_BLOCK, &signals, nullptr);
-}
 
 std::vector<std::string> SplitList(const std::string& text) {
   std::vector<std::string> items;

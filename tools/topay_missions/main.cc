@@ -4,8 +4,6 @@
 // Per seed: <out>/seed-<S>/ holds the room, the mission, graph.lcmlog, every process's log,
 // summary.json, path.png and time_plots.png; <out>/results.{md,json} the table.
 
-#include <signal.h>
-
 #include <filesystem>
 #include <fstream>
 #include <iostream>
@@ -13,6 +11,7 @@
 #include <fmt/format.h>
 
 #include "mission_runs.h"
+#include "tools/common/stop_signals.h"
 #include "tools/common/tool_cli.h"
 
 namespace {
@@ -22,24 +21,6 @@ using topay::tools::MissionRunRow;
 
 constexpr int kExitMissionFailed = 3;  // a mission failed, timed out or touched something
 constexpr int kExitInterrupted = 4;    // Ctrl-C / SIGTERM: the graph was stopped
-
-// True once SIGINT or SIGTERM came (they are blocked, so they wait here to be taken).
-bool StopRequested() {
-  sigset_t signals;
-  sigemptyset(&signals);
-  sigaddset(&signals, SIGINT);
-  sigaddset(&signals, SIGTERM);
-  const timespec no_wait{0, 0};
-  return sigtimedwait(&signals, nullptr, &no_wait) > 0;
-}
-
-void BlockStopSignals() {
-  sigset_t signals;
-  sigemptyset(&signals);
-  sigaddset(&signals, SIGINT);
-  sigaddset(&signals, SIGTERM);
-  sigprocmask(SIG_BLOCK, &signals, nullptr);
-}
 
 bool WriteResults(const std::string& out_dir, const std::vector<MissionRunRow>& rows, const std::string& table) {
   nlohmann::json runs = nlohmann::json::array();
@@ -84,9 +65,9 @@ int main(int argc, char** argv) {
     std::cerr << "topay-missions: cannot create " << options.out_dir << ": " << error.message() << "\n";
     return topay::tools::kExitFileError;
   }
-  BlockStopSignals();
+  topay::tools::BlockStopSignals();
   bool interrupted = false;
-  const auto stop = [&] { return interrupted = interrupted || StopRequested(); };
+  const auto stop = [&] { return interrupted = interrupted || topay::tools::StopRequested(); };
   std::vector<MissionRunRow> rows;
   for (int k = 0; k < options.seeds && !stop(); ++k) {
     rows.push_back(topay::tools::RunMissionSeed(options, options.first_seed + k, std::cout, stop));

@@ -26,7 +26,7 @@ TEST(LaunchCli, DryRunPrintsTheResolvedPlan) {
   EXPECT_NE(out.find("1. logger"), std::string::npos) << out;
   EXPECT_NE(out.find("2. sim"), std::string::npos) << out;
   EXPECT_NE(out.find(BinDir() + "/topay-sim --config"), std::string::npos) << out;
-  EXPECT_NE(out.find("lcm-logger --quiet -f " + dir + "/run/graph.lcmlog"), std::string::npos) << out;
+  EXPECT_NE(out.find("lcm-logger --quiet --append " + dir + "/run/graph.lcmlog"), std::string::npos) << out;
   EXPECT_EQ(out.find("drive-pattern"), std::string::npos) << "autostart: false";
   EXPECT_FALSE(std::filesystem::exists(dir + "/run")) << "a dry run creates nothing";
   EXPECT_EQ(RunLaunch({std::string(TOPAY_SOURCE_DIR) + "/config/graphs/sim.yaml", "--dry-run", "--no-isolated"},
