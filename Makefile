@@ -1,7 +1,7 @@
 # Two commands on a fresh Debian 12 machine:
 #   make demo   install what is missing, build, run the main job
 #   make test   install what is missing, build (with assertions), run every test
-.PHONY: all deps build build-test test test-fast test-demo demo missions demo-plan graph replay-view bench bench-replan bench-can fuzz faults test-asan test-tsan clean
+.PHONY: all deps build build-test test test-fast test-demo demo missions demo-plan graph replay-view bench bench-replan bench-can fuzz faults test-faults test-asan test-tsan clean
 
 BUILD_DIR      ?= build
 TEST_BUILD_DIR ?= build-test
@@ -127,6 +127,11 @@ FAULT_RUNS ?= 20
 FAULTS     ?=
 faults: build
 	$(BUILD_DIR)/bin/topay-faults --runs $(FAULT_RUNS) --out out/faults $(if $(FAULTS),--faults $(FAULTS),)
+
+# The fault-injection smoke (one mission: kill -9 of the tracker, a NaN goal, hostile payloads;
+# about 25 s; not in `make test`: docs/reliability.md).
+test-faults: build-test
+	@cd $(TEST_BUILD_DIR) && TOPAY_FAULTS_TEST=1 ctest --output-on-failure -R FaultsSmoke
 
 # The whole suite under sanitizers (own build folders; any report fails the test that hit it):
 # ASan + UBSan (leaks included), and TSan. CTEST_ARGS narrows them, e.g. CTEST_ARGS='-L fuzz'.
