@@ -54,6 +54,14 @@ const TrackerOutput& NmpcTracker::Step(const TrackerInput& input) {
   return output_;
 }
 
+void NmpcTracker::Halt() {
+  last_.v_mps = 0.0;
+  last_.omega_radps = 0.0;
+  last_.qd_radps.setZero();
+  history_.Clear();
+  active_id_ = 0;
+}
+
 void NmpcTracker::Stop() {
   StopStep(last_, solver_.options().control_period_s, solver_.limits(), &output_.command);
   // Tracking may resume later (the same or a new trajectory): start again from the command.

@@ -59,6 +59,11 @@ class NmpcTracker {
   NmpcTracker(const NmpcOptions& options, const TrackerLimits& limits);
 
   const TrackerOutput& Step(const TrackerInput& input);
+  /// The robot was stopped outside the tracker (its drives quick-stopped and held at zero):
+  /// the last command and the commands remembered for the latency prediction become zero and
+  /// the next trajectory starts from rest (without it, Step would ramp down from the command
+  /// before the stop, commanding motion to a robot at rest).
+  void Halt();
 
   const ControlCommand& last_command() const { return last_; }
   const NmpcSolver& solver() const { return solver_; }

@@ -26,6 +26,11 @@ inline constexpr std::uint16_t kPdoLengthError = 0x8210;     ///< PDO not proces
 inline constexpr std::uint16_t kFollowingError = 0x8611;     ///< CiA 402 positioning control.
 }  // namespace emcy_code
 
+/// A CAN communication error (0x81xx: overrun, error passive, heartbeat / life guard lost,
+/// recovered from bus-off, ...): the bus failed the device, not the device itself.
+/// 0x82xx (protocol errors such as a PDO length error) are not.
+constexpr bool IsCommunicationError(std::uint16_t code) { return (code & 0xFF00u) == emcy_code::kCommunication; }
+
 /// Error register bits (object 0x1001, CiA 301 §7.5.2.2).
 namespace error_register {
 inline constexpr std::uint8_t kGeneric = 0x01;

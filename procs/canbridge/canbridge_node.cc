@@ -8,6 +8,7 @@
 #include <limits>
 #include <stdexcept>
 
+#include "drivers/arm/emcy.h"
 #include "drivers/arm/heartbeat.h"
 #include "drivers/arm/sync.h"
 #include "drivers/base/fault_codes.h"
@@ -123,11 +124,47 @@ std::string CanbridgeNode::OnDriveCommand(const drive_command_t& msg, double now
     return refused;
   }
   spdlog::info("DRIVE_COMMAND from '{}': fault reset ({})", msg.source, stop_reason_);
+  ResetFaults(now_s);
+  return "";
+}
+
+void CanbridgeNode::ResetFaults(double now_s) {
   for (DriveLink& drive : drives_) drive.ArmFaultReset();
   base_.ArmFaultReset();
   fault_reset_s_ = now_s;
   BeginRecovery(now_s);
-  return "";
+}
+
+void CanbridgeNode::MaybeResetCommunicationFault(double now_s) {
+  if (!options_.auto_reset_communication_faults || base_.faulted()) return;
+  std::string codes;
+  for (DriveLink& drive : drives_) {
+    if (!drive.faulted()) continue;
+    const std::optional<std::uint16_t> code = drive.FaultCode();
+    if (!code) {
+      drive.RequestErrorCode();  // no EMCY came (lost with the bus): ask the drive; none -> operator
+      return;
+    }
+    if (!canopen::IsCommunicationError(*code)) return;  // a fault of the drive itself: the operator's
+    char text[48];
+    std::snprintf(text, sizeof(text), "%s%s 0x%04X", codes.empty() ? "" : ", ", drive.Label().c_str(), *code);
+    codes += text;
+  }
+  if (codes.empty() || !CommandAllowsRecovery(now_s)) return;
+  constexpr double kWindow_s = 60.0;
+  while (!auto_resets_s_.empty() && now_s - auto_resets_s_.front() > kWindow_s) auto_resets_s_.pop_front();
+  if (static_cast<int>(auto_resets_s_.size()) >= options_.max_auto_resets_per_minute) {
+    if (!auto_reset_limit_logged_) {
+      spdlog::error("canbridge: {} automatic fault resets within {:.0f} s: waiting for the operator's FAULT_RESET",
+                    auto_resets_s_.size(), kWindow_s);
+    }
+    auto_reset_limit_logged_ = true;
+    return;
+  }
+  auto_reset_limit_logged_ = false;
+  auto_resets_s_.push_back(now_s);
+  spdlog::warn("canbridge: automatic fault reset: communication errors only ({}): {}", codes, stop_reason_);
+  ResetFaults(now_s);
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -372,6 +409,8 @@ void CanbridgeNode::UpdateState(double now_s) {
       return;
     }
     case BridgeState::kFault:
+      MaybeResetCommunicationFault(now_s);
+      return;
     case BridgeState::kReplay:
       return;
   }
@@ -419,6 +458,7 @@ void CanbridgeNode::SendCycleFrames(double now_s) {
     }
     any_operational = true;
     frames.push_back(drive.Rpdo(intent, command.qdot_radps[i]));
+    drive.StartupStep(now_s, &frames);  // operational: only an error-code read, when asked
   }
   if (any_operational) {
     if (auto sync = canopen::EncodeSync({}, nullptr)) frames.push_back(*sync);

@@ -8,6 +8,7 @@
 // tests drive it on a simulated clock; ConnectCanbridgeNode wires it to a ProcessLoop.
 
 #include <cstdint>
+#include <deque>
 #include <functional>
 #include <memory>
 #include <optional>
@@ -90,6 +91,11 @@ class CanbridgeNode {
   bool SendFrame(const can::CanFrame& frame, double now_s);
   void Enter(BridgeState state, double now_s, std::string reason);
   void BeginRecovery(double now_s);
+  // Arms every device's fault reset and recovers (FAULT_RESET, or the automatic one).
+  void ResetFaults(double now_s);
+  // options.auto_reset_communication_faults: in FAULT, reads the faulted drives' codes and
+  // resets them itself when all are communication errors (0x81xx).
+  void MaybeResetCommunicationFault(double now_s);
   void MarkRestarts(double now_s);
   std::string FaultCause() const;
   std::string TransientCause(double now_s) const;
@@ -118,6 +124,8 @@ class CanbridgeNode {
   double state_since_s_ = 0.0;
   std::optional<double> cause_clear_since_s_;
   std::optional<double> fault_reset_s_;
+  std::deque<double> auto_resets_s_;  // times of the automatic resets within the last 60 s
+  bool auto_reset_limit_logged_ = false;
   bool bus_down_ = false;
   double last_reopen_s_ = -1e9;
   double last_host_heartbeat_s_ = -1e9;

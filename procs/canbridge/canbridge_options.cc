@@ -66,6 +66,8 @@ void CanbridgeOptions::Check() const {
   Require(std::isfinite(recovery_hold_s) && recovery_hold_s >= 0.0, "recovery_hold_s", "must be finite and >= 0");
   Require(Positive(enable_timeout_s), "enable_timeout_s", "must be finite and > 0");
   Require(Positive(fault_reset_timeout_s), "fault_reset_timeout_s", "must be finite and > 0");
+  Require(max_auto_resets_per_minute >= 0 && max_auto_resets_per_minute <= 60, "max_auto_resets_per_minute",
+          "must be in 0..60");
   Require(Positive(status_period_s), "status_period_s", "must be finite and > 0");
   Require(Positive(bus_reopen_period_s), "bus_reopen_period_s", "must be finite and > 0");
   Require(!record_interface.empty() && record_interface.size() <= 15 &&
@@ -113,6 +115,8 @@ CanbridgeOptions LoadCanbridgeOptions(const std::string& path) {
   top.Read("recovery_hold_s", &o.recovery_hold_s);
   top.Read("enable_timeout_s", &o.enable_timeout_s);
   top.Read("fault_reset_timeout_s", &o.fault_reset_timeout_s);
+  top.Read("auto_reset_communication_faults", &o.auto_reset_communication_faults);
+  top.Read("max_auto_resets_per_minute", &o.max_auto_resets_per_minute);
   top.Read("status_period_s", &o.status_period_s);
   top.Read("bus_reopen_period_s", &o.bus_reopen_period_s);
   top.Read("record_interface", &o.record_interface);

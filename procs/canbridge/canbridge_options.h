@@ -78,6 +78,14 @@ struct CanbridgeOptions {
   double enable_timeout_s = 3.0;
   /// A fault reset that leaves a fault after this long is a fault again [s]. Default 1 s.
   double fault_reset_timeout_s = 1.0;
+  /// Reset, as an operator's FAULT_RESET would, a fault of the drives alone whose every code
+  /// (the active EMCY's, else 0x603F read by SDO) is a CAN communication error (0x81xx: e.g. the
+  /// drive lost the bridge's heartbeat while the bus was off, its EMCY lost with it): the cause
+  /// is gone once the bridge hears the drives again. Only at a zero command. Any other code, an
+  /// unreadable one or a base fault waits for the operator. Default true.
+  bool auto_reset_communication_faults = true;
+  /// At most this many automatic resets within 60 s; then the operator's. Default 3.
+  int max_auto_resets_per_minute = 3;
   /// DRIVE_STATUS period [s] (also published at once on every change). Default 0.1 s (10 Hz).
   double status_period_s = 0.1;
   /// Reopen a bus whose interface went down every this many seconds. Default 0.1 s.

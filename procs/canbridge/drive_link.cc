@@ -18,6 +18,10 @@ using canopen::NmtCommand;
 using canopen::NmtState;
 using cia402::DriveState;
 
+namespace {
+constexpr canopen::ObjectAddress kErrorCodeAddress{0x603F, 0x00};  // CiA 402 error code
+}  // namespace
+
 const char* ToString(DrivePhase phase) {
   switch (phase) {
     case DrivePhase::kIdle: return "idle";
@@ -99,6 +103,7 @@ FrameResult DriveLink::Handle(const can::CanFrame& frame, double now_s, std::str
 FrameResult DriveLink::HandleSdoReply(const can::CanFrame& frame, double now_s, std::string* error) {
   const auto reply = canopen::DecodeSdoServerReply(frame, error);
   if (!reply) return FrameResult::kMalformed;
+  HandleErrorCodeReply(*reply);
   if (phase_ != DrivePhase::kConfiguring || !write_pending_ || next_write_ >= writes_.size()) {
     return FrameResult::kDecoded;  // a late or unexpected reply: nothing waits for it
   }
@@ -147,9 +152,45 @@ void DriveLink::SendWrite(double now_s, std::vector<can::CanFrame>* out) {
   ++attempts_;
 }
 
+void DriveLink::RequestErrorCode() {
+  if (error_code_read_.wanted || error_code_ || error_code_read_.gave_up) return;  // gave up: until a reset
+  error_code_read_ = ErrorCodeRead{};
+  error_code_read_.wanted = true;
+}
+
+std::optional<std::uint16_t> DriveLink::FaultCode() const {
+  if (emcy_active_) return last_emcy_code_;
+  return error_code_;
+}
+
+void DriveLink::ErrorCodeStep(double now_s, std::vector<can::CanFrame>* out) {
+  ErrorCodeRead& r = error_code_read_;
+  if (!r.wanted || (r.requests > 0 && now_s - r.sent_s < options_.sdo_timeout_s)) return;
+  if (r.requests >= options_.sdo_attempts) {
+    r.wanted = false;
+    r.gave_up = true;
+    return;
+  }
+  if (auto frame = canopen::EncodeSdoUploadRequest({node_id_, kErrorCodeAddress}, nullptr)) out->push_back(*frame);
+  r.sent_s = now_s;
+  ++r.requests;
+}
+
+void DriveLink::HandleErrorCodeReply(const canopen::SdoServerReply& reply) {
+  if (!error_code_read_.wanted) return;
+  if (const auto* up = std::get_if<canopen::SdoUploadResponse>(&reply); up && up->address == kErrorCodeAddress) {
+    error_code_ = static_cast<std::uint16_t>(up->value & 0xFFFFu);
+    error_code_read_.wanted = false;
+  } else if (const auto* abort = std::get_if<canopen::SdoAbort>(&reply); abort && abort->address == kErrorCodeAddress) {
+    error_code_read_.wanted = false;
+    error_code_read_.gave_up = true;
+  }
+}
+
 void DriveLink::StartupStep(double now_s, std::vector<can::CanFrame>* out) {
   switch (phase_) {
     case DrivePhase::kOperational:
+      ErrorCodeStep(now_s, out);
       return;
     case DrivePhase::kFailed:
       if (now_s - phase_since_s_ < options_.retry_after_s) return;

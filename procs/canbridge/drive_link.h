@@ -12,6 +12,7 @@
 
 #include "drivers/arm/cia402_state.h"
 #include "drivers/arm/heartbeat.h"
+#include "drivers/arm/sdo.h"
 #include "drivers/arm/startup_sdo.h"
 #include "drivers/can/can_frame.h"
 #include "procs/canbridge/canbridge_options.h"
@@ -45,13 +46,29 @@ class DriveLink {
 
   /// Starts (again) the start-up from NMT reset communication.
   void BeginStartup(double now_s);
-  /// The start-up frames due at now_s (NMT, one SDO request), none when operational.
+  /// The start-up frames due at now_s (NMT, one SDO request); when operational, only the
+  /// error-code read's request (RequestErrorCode).
   void StartupStep(double now_s, std::vector<can::CanFrame>* out);
 
   /// The RPDO1 of this cycle for `intent` with target velocity `qdot_radps` (0 unless enabled).
   can::CanFrame Rpdo(DriveIntent intent, double qdot_radps);
   /// Allows fault reset edges while the drive reports Fault (DRIVE_COMMAND FAULT_RESET).
-  void ArmFaultReset() { fault_reset_armed_ = true; emcy_active_ = false; }
+  void ArmFaultReset() {
+    fault_reset_armed_ = true;
+    emcy_active_ = false;
+    error_code_.reset();
+    error_code_read_ = ErrorCodeRead{};
+  }
+  /// Reads the drive's error code (0x603F:00) by SDO upload while it is operational: a fault
+  /// whose EMCY was lost (sent while the bus was off) is named by it. The request goes out with
+  /// the next StartupStep, again after sdo_timeout_s, at most sdo_attempts times; a call while
+  /// one is under way, answered or given up (until the next fault reset) does nothing.
+  void RequestErrorCode();
+  /// The code the current fault is known by: the active EMCY's, else the 0x603F read since the
+  /// last fault reset (nullopt: not known yet).
+  std::optional<std::uint16_t> FaultCode() const;
+  /// The 0x603F read gave up (no answer, or an abort).
+  bool error_code_unavailable() const { return error_code_read_.gave_up; }
 
   int node_id() const { return node_id_; }
   const std::string& joint_name() const { return joint_name_; }
@@ -82,6 +99,15 @@ class DriveLink {
   FrameResult HandleSdoReply(const can::CanFrame& frame, double now_s, std::string* error);
   void Fail(std::string why, double now_s);
   void SendWrite(double now_s, std::vector<can::CanFrame>* out);
+  void ErrorCodeStep(double now_s, std::vector<can::CanFrame>* out);
+  void HandleErrorCodeReply(const canopen::SdoServerReply& reply);
+
+  struct ErrorCodeRead {
+    bool wanted = false;
+    bool gave_up = false;
+    int requests = 0;
+    double sent_s = 0.0;
+  };
 
   int node_id_;
   std::string joint_name_;
@@ -106,6 +132,8 @@ class DriveLink {
   bool fault_reset_armed_ = false;
   std::uint16_t last_emcy_code_ = 0;
   bool emcy_active_ = false;
+  std::optional<std::uint16_t> error_code_;  // 0x603F, read since the last fault reset
+  ErrorCodeRead error_code_read_;
   double position_rad_ = 0.0;
   double velocity_rad_per_s_ = 0.0;
   bool new_feedback_ = false;

@@ -43,8 +43,10 @@ struct ProcessSpec {
   int max_restarts = -1;              ///< -1: unlimited
   bool heartbeat = true;              ///< supervised by HEARTBEAT (false: ready once started)
   /// How late a heartbeat may be: the process is reported silent and restarted after
-  /// heartbeat_period_s + heartbeat_timeout_s without one (default 1 s late, i.e. 2 s silent).
-  double heartbeat_timeout_s = 1.0;
+  /// heartbeat_period_s + heartbeat_timeout_s without one (default 3 s late, i.e. 4 s silent:
+  /// four heartbeats lost in a row. With 2 s, two lost datagrams of a 10 %-lossy bus killed
+  /// working processes (docs/reliability.md); a dead process is seen by its exit at once).
+  double heartbeat_timeout_s = 3.0;
   double startup_timeout_s = 5.0;     ///< time allowed to the first heartbeat
   double ready_delay_s = 0.3;  ///< without heartbeat: counted ready this long after its start
   std::string group;                  ///< label; --group GROUP starts only those groups

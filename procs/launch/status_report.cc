@@ -78,7 +78,9 @@ std::string ToJson(const std::string& graph_name, const std::string& run_dir, do
                                  {"health", r.health},
                                  {"status", r.status}});
   }
-  return json.dump(2) + "\n";
+  // Heartbeat status texts come off the bus: invalid UTF-8 in one (a corrupted or hostile
+  // heartbeat) is replaced, never thrown (it stopped the launcher, and the whole graph with it).
+  return json.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) + "\n";
 }
 
 }  // namespace topay::launch

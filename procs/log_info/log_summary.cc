@@ -89,7 +89,7 @@ std::string SummaryJson(const LogSummary& s) {
                                  {"last_utime", c.last_utime}, {"types", c.types},
                                  {"decode_failures", c.decode_failures}};
   }
-  return json.dump(2) + "\n";
+  return json.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) + "\n";  // channel names from the log
 }
 
 }  // namespace topay::loginfo

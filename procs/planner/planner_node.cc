@@ -36,6 +36,14 @@ TrajectorySample StartFromEstimate(const msgs::RobotStateEstimate& robot) {
   return s;
 }
 
+// The goal's content (all but its utime) as bytes: a goal id is issued once.
+std::vector<std::uint8_t> GoalContent(goal_t msg) {
+  msg.utime = 0;
+  std::vector<std::uint8_t> bytes(static_cast<std::size_t>(msg.getEncodedSize()));
+  msg.encode(bytes.data(), 0, static_cast<int>(bytes.size()));
+  return bytes;
+}
+
 }  // namespace
 
 const char* ToString(PlanTrigger trigger) {
@@ -44,6 +52,7 @@ const char* ToString(PlanTrigger trigger) {
     case PlanTrigger::kMapCollision: return "map_collision";
     case PlanTrigger::kDrift: return "drift";
     case PlanTrigger::kRetry: return "retry";
+    case PlanTrigger::kResume: return "resume";
   }
   return "?";
 }
@@ -114,6 +123,19 @@ void PlannerNode::HandleInbox() {
 
 void PlannerNode::OnGoal(const goal_t& msg) {
   ++counts_.goals;
+  std::vector<std::uint8_t> content = GoalContent(msg);
+  if (last_goal_ && last_goal_->first == msg.goal_id) {
+    // A repeat of the goal in hand changes nothing; another goal under its id (a corrupted or
+    // foreign sender) must not take the robot elsewhere in its name: both are ignored.
+    const bool same = last_goal_->second == content;
+    ++(same ? counts_.goals_repeated : counts_.goals_refused);
+    if (!same || counts_.goals_repeated <= 3) {
+      spdlog::warn("GOAL {} ignored: {}", msg.goal_id,
+                   same ? "a repeat of the goal in hand" : "its id was issued before with a different target");
+    }
+    return;
+  }
+  last_goal_.emplace(msg.goal_id, std::move(content));
   std::string error;
   const std::optional<msgs::PlanGoal> goal = msgs::FromMessage(msg, &error);
   std::string reason = goal ? ScreenGoal(*goal, map_, reach_, options_.goals) : "bad goal: " + error;
@@ -185,7 +207,30 @@ void PlannerNode::OnMap(const map_update_t& msg) {
   if (applied) CheckActiveAgainstMap(clock_.Now());
 }
 
-void PlannerNode::OnTrackerStatus(const tracker_status_t& msg) { tracker_ = msg; }
+void PlannerNode::OnTrackerStatus(const tracker_status_t& msg) {
+  tracker_ = msg;
+  const bool held = msg.state == tracker_status_t::HELD;
+  if (held == held_) return;
+  held_ = held;
+  if (held) return Hold(msg);
+  spdlog::info("tracker released: the drives run again");
+  RequestPlan(PlanTrigger::kResume, "the drives run again");
+}
+
+void PlannerNode::Hold(const tracker_status_t& msg) {
+  spdlog::warn("tracker HELD at {:.3f} s: the drives are stopped and every trajectory was dropped{}",
+               1e-6 * static_cast<double>(msg.utime), active_ ? fmt::format(" (was on {})", active_->trajectory_id) : "");
+  if (worker_->busy()) worker_->Cancel();
+  latest_job_ = 0;  // no result of a plan asked for before the hold is used
+  pending_.reset();
+  retry_at_utime_ = 0;
+  active_.reset();
+  replaced_.clear();
+  ClearPredictedCollision();
+  if (goal_ && !goal_->done) {
+    PublishStatus(planner_status_t::PLANNING, "", "waiting: the drives are stopped (tracker HELD)");
+  }
+}
 
 std::optional<PredictedCollision> PlannerNode::CheckAhead(const ArcYawTrajectory& trajectory,
                                                            double t_from_s) const {
@@ -298,6 +343,10 @@ void PlannerNode::RequestPlan(PlanTrigger trigger, const std::string& reason, bo
   PlanJob job;
   std::string error;
   const std::int64_t now = clock_.Now();
+  if (held_) {  // planned when the drives run again (kResume)
+    PublishStatus(planner_status_t::PLANNING, "", "waiting: the drives are stopped (tracker HELD)");
+    return;
+  }
   if (!map_.has_map()) error = "no map yet (no MAP_UPDATE snapshot received)";  // e.g. a goal at start-up
   if (!error.empty() || !FillStart(trigger, now, &job, &error)) {
     spdlog::warn("goal {}: cannot plan yet: {}", goal_->goal.goal_id, error);
@@ -665,9 +714,9 @@ void PlannerNode::UpdateHealth() {
 std::string PlannerNode::Report() const {
   const PlanWorkerCounts w = worker_->counts();
   std::string out = fmt::format(
-      "topay-planner: {} goals ({} refused, {} cancelled), {} trajectories, {} stops, {} plans "
+      "topay-planner: {} goals ({} refused, {} repeats ignored, {} cancelled), {} trajectories, {} stops, {} plans "
       "({} failed, {} cancelled, {} late, {} colliding with a newer map)\n",
-      counts_.goals, counts_.goals_refused, counts_.goals_cancelled, counts_.trajectories,
+      counts_.goals, counts_.goals_refused, counts_.goals_repeated, counts_.goals_cancelled, counts_.trajectories,
       counts_.stops, w.plans, counts_.plans_failed, w.cancelled, counts_.results_dropped_late,
       counts_.results_colliding);
   out += "  triggers:";

@@ -5,7 +5,11 @@
 //  (a) a map update shows the rest of the current trajectory colliding (checked at once
 //      against the map's blocked voxels, exactly),
 //  (b) the robot has drifted from the trajectory beyond the tolerances,
-//  (c) the goal changed (a new goal cancels the plan in progress),
+//  (c) the goal changed (a new goal cancels the plan in progress; a GOAL with the id of the
+//      last one is not a new goal: a repeat is ignored, a different target under it refused),
+//  (d) the drives run again after the tracker was HELD (the CAN bridge stopped or faulted the
+//      robot and the tracker dropped every trajectory): while held it forgets its trajectories,
+//      cancels the plan in progress and waits; then it plans from rest where the robot stopped,
 // and, while the robot moves, a replan starts on the current trajectory at t0 = now + the
 // replanning budget and joins it there C2-continuously. If the trajectory ahead collides and
 // no new one comes before the robot must start braking, it publishes a stopping trajectory
@@ -45,13 +49,14 @@
 namespace topay::planner {
 
 /// Why a plan was asked for.
-enum class PlanTrigger { kGoal, kMapCollision, kDrift, kRetry };
+enum class PlanTrigger { kGoal, kMapCollision, kDrift, kRetry, kResume };
 const char* ToString(PlanTrigger trigger);
 
 /// What the node counted since its start (the heartbeat and the exit report).
 struct PlannerNodeCounts {
   std::map<PlanTrigger, std::int64_t> triggers;
   std::int64_t goals = 0, goals_refused = 0, goals_cancelled = 0;
+  std::int64_t goals_repeated = 0;  ///< repeats of the last goal (same id and content): ignored
   std::int64_t trajectories = 0, stops = 0;
   std::int64_t plans_failed = 0, results_dropped_late = 0, results_colliding = 0;
   std::int64_t maps_rejected = 0, map_checks = 0;
@@ -139,6 +144,8 @@ class PlannerNode {
   void PublishStatus(std::int8_t state, const std::string& reason, const std::string& detail,
                      const WholeBodyPlanResult* result = nullptr);
   void UpdateHealth();
+  // The tracker is HELD (drives not running): the robot is at rest off every trajectory.
+  void Hold(const tracker_status_t& msg);
   void MakeActive(ActiveTrajectory trajectory);
   void ClearPredictedCollision();
   // The trajectory the robot is on at `utime`: the newest one started by then (null: none).
@@ -156,6 +163,10 @@ class PlannerNode {
   MapIntake map_;
   std::optional<msgs::RobotStateEstimate> robot_;
   std::optional<tracker_status_t> tracker_;  // the last TRACKER_STATUS (heartbeat status line)
+  bool held_ = false;                        // the last TRACKER_STATUS was HELD
+  // The last GOAL's id and content (GoalContent): ids are issued once; a repeat is ignored and
+  // a different goal under the same id refused.
+  std::optional<std::pair<std::int64_t, std::vector<std::uint8_t>>> last_goal_;
   std::optional<GoalRecord> goal_;
   std::optional<ActiveTrajectory> active_;
   // The trajectories active_ replaced that may still be under way (the newest last): until a

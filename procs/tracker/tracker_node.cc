@@ -3,6 +3,7 @@
 #include <spdlog/spdlog.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 
 #include "core/common/sample_statistics.h"
@@ -60,6 +61,14 @@ void TrackerNode::OnTrajectory(const poly_trajectory_t& msg, std::int64_t now_ut
       spdlog::warn("rejected TRAJECTORY {} (#{}): {}", msg.trajectory_id, counts_.trajectories_rejected, why);
     }
   };
+  if (held_) {
+    ++counts_.trajectories_dropped_held;
+    if (Every(counts_.trajectories_dropped_held)) {
+      spdlog::warn("dropped TRAJECTORY {} (#{}): the drives are not running ({})", msg.trajectory_id,
+                   counts_.trajectories_dropped_held, hold_reason_);
+    }
+    return;
+  }
   const std::int64_t newest = !pending_.empty() ? pending_.back().id : active_ ? active_->id : 0;
   if (msg.trajectory_id <= newest) {
     ++counts_.trajectories_ignored;
@@ -142,8 +151,38 @@ void TrackerNode::OnGripper(const gripper_command_t& msg) {
   gripper_ = msg.position;
 }
 
+void TrackerNode::OnDriveStatus(const drive_status_t& msg) {
+  ++counts_.drive_statuses;
+  if (msg.state == drive_status_t::REPLAY) return;  // a log being decoded: drives nothing
+  if (msg.state == drive_status_t::RUNNING) {
+    if (held_) spdlog::info("drives running again: tracker released (at rest, waiting for a trajectory)");
+    held_ = false;
+    return;
+  }
+  static constexpr std::array<const char*, 6> kStates = {"STARTING", "ENABLING", "RUNNING",
+                                                         "STOPPED",  "FAULT",    "RECOVERING"};
+  const bool known = msg.state >= 0 && msg.state < static_cast<int>(kStates.size());
+  hold_reason_ = fmt::format("bridge {}{}{}", known ? kStates[msg.state] : "state " + std::to_string(msg.state),
+                             msg.stop_reason.empty() ? "" : ": ", msg.stop_reason);
+  if (held_) return;
+  held_ = true;
+  ++counts_.holds;
+  const std::int64_t dropped = (active_ ? 1 : 0) + static_cast<std::int64_t>(pending_.size());
+  counts_.trajectories_dropped_held += dropped;
+  spdlog::warn("drives not running ({}): holding the robot at zero, {} trajectories dropped (active {})",
+               hold_reason_, dropped, active_id());
+  active_.reset();
+  pending_.clear();
+  tracker_.Halt();
+}
+
 const TrackerCycle& TrackerNode::Step(std::int64_t now_utime) {
   ++counts_.cycles;
+  if (held_) {
+    FillHeld(now_utime);
+    tracker_.Halt();  // the drives are at rest: no command to ramp down from on release
+    return cycle_;
+  }
   // Pending ones start in order; of those whose start has come the last is the one to follow.
   while (!pending_.empty() && pending_.front().start_utime <= now_utime) {
     Activate(std::move(pending_.front()));
@@ -211,11 +250,27 @@ void TrackerNode::Fill(const TrackerOutput& out, std::int64_t now_utime) {
   s.solve_ms = out.solve_ms;
 }
 
+void TrackerNode::FillHeld(std::int64_t now_utime) {
+  control_command_t& c = cycle_.command;
+  c.utime = now_utime;
+  c.trajectory_id = 0;
+  c.v_mps = 0.0;
+  c.omega_radps = 0.0;
+  c.num_joints = num_joints_;
+  std::fill(c.qdot_radps.begin(), c.qdot_radps.end(), 0.0);
+  c.gripper = gripper_.value_or(measured_gripper_);
+  cycle_.status = tracker_status_t{};
+  cycle_.status.utime = now_utime;
+  cycle_.status.state = tracker_status_t::HELD;
+  last_mode_ = TrackerMode::kStopNoReference;
+}
+
 std::int8_t TrackerNode::Health() const {
-  return last_mode_ == TrackerMode::kStopStaleState && active_ ? heartbeat_t::WARN : heartbeat_t::OK;
+  return held_ || (last_mode_ == TrackerMode::kStopStaleState && active_) ? heartbeat_t::WARN : heartbeat_t::OK;
 }
 
 std::string TrackerNode::StatusLine() const {
+  if (held_) return fmt::format("held: {}, {} trajectories dropped", hold_reason_, counts_.trajectories_dropped_held);
   return fmt::format("{} trajectory {} (pending {}), {} solves, {} fallbacks, {} rejected", TrackerModeName(last_mode_),
                      active_id(), pending_id(), counts_.solves,
                      tracker_.solver().summary().num_over_budget + tracker_.solver().summary().num_failed,
@@ -228,14 +283,15 @@ std::string TrackerNode::Report() const {
   return fmt::format(
       "topay-tracker: {} cycles, {} solves (median {:.3f} ms, p99 {:.3f} ms, max {:.3f} ms), fallbacks {} "
       "({} over budget, {} failed)\n"
-      "  stops: {} stale state, {} trajectory ended\n"
+      "  stops: {} stale state, {} trajectory ended; held {} times (drives not running), {} trajectories "
+      "dropped held\n"
       "  trajectories: {} received, {} became active, {} rejected, {} ignored (not newer), {} pending superseded\n"
       "  robot states: {} ({} rejected); gripper commands: {} ({} rejected)\n",
       c.cycles, c.solves, solve_ms_.empty() ? 0.0 : Median(solve_ms_),
       solve_ms_.empty() ? 0.0 : NearestRankQuantile(solve_ms_, 0.99),
       solve_ms_.empty() ? 0.0 : *std::max_element(solve_ms_.begin(), solve_ms_.end()),
       summary.num_over_budget + summary.num_failed, summary.num_over_budget, summary.num_failed, c.stops_stale,
-      c.stops_ended, c.trajectories, c.switches, c.trajectories_rejected, c.trajectories_ignored, c.pending_superseded,
+      c.stops_ended, c.holds, c.trajectories_dropped_held, c.trajectories, c.switches, c.trajectories_rejected, c.trajectories_ignored, c.pending_superseded,
       c.states, c.states_rejected, c.grippers, c.grippers_rejected);
 }
 
@@ -247,6 +303,8 @@ void ConnectTrackerNode(procs::ProcessLoop* loop, TrackerNode* node, double peri
                                  [node](const robot_state_t& msg) { node->OnRobotState(msg); });
   loop->Subscribe<gripper_command_t>(std::string(channels::GRIPPER_COMMAND),
                                      [node](const gripper_command_t& msg) { node->OnGripper(msg); });
+  loop->Subscribe<drive_status_t>(std::string(channels::DRIVE_STATUS),
+                                  [node](const drive_status_t& msg) { node->OnDriveStatus(msg); });
   loop->AddTimer(period_s, [loop, node] {
     const TrackerCycle& cycle = node->Step(procs::NowUtime());
     loop->lcm().publish(std::string(channels::CONTROL_COMMAND), &cycle.command);

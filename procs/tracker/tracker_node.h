@@ -14,6 +14,13 @@
 // equal to the active's (or the newest pending one's) is ignored. Bad ones are counted and
 // logged, never followed. Safe behaviour (no trajectory, an ended one, a robot state older than
 // nmpc.stale_state_s or none) is NmpcTracker's: decelerate to a stop within the limits.
+//
+// Drives not running: a DRIVE_STATUS whose state is not RUNNING (the CAN bridge stopped or
+// faulted the robot, or is starting or recovering) holds the tracker: it drops its trajectories,
+// commands exact zeros (the bridge's condition for running again) and drops every TRAJECTORY
+// that comes meanwhile; its status is HELD. When the bridge is RUNNING again the tracker is IDLE
+// at rest, and the planner, which saw HELD, plans anew from where the robot stopped. Without a
+// bridge (no DRIVE_STATUS, e.g. the kinematic simulator) it is never held. docs/tracker.md.
 
 #include <cstdint>
 #include <deque>
@@ -28,6 +35,7 @@
 #include "procs/msgs/convert_robot_state.h"
 #include "procs/tracker/tracker_options.h"
 #include "topay/control_command_t.hpp"
+#include "topay/drive_status_t.hpp"
 #include "topay/gripper_command_t.hpp"
 #include "topay/poly_trajectory_t.hpp"
 #include "topay/robot_state_t.hpp"
@@ -51,6 +59,9 @@ struct TrackerCounts {
   std::int64_t cycles = 0, solves = 0;
   std::int64_t stops_stale = 0;  ///< cycles that entered the stale-state stop
   std::int64_t stops_ended = 0;  ///< trajectories whose end was reached (stop after the settle)
+  std::int64_t holds = 0;        ///< times a DRIVE_STATUS not RUNNING held the tracker
+  std::int64_t trajectories_dropped_held = 0;  ///< active, pending or arriving ones dropped while held
+  std::int64_t drive_statuses = 0;
 };
 
 /// One cycle's messages.
@@ -67,6 +78,8 @@ class TrackerNode {
   void OnTrajectory(const poly_trajectory_t& msg, std::int64_t now_utime);
   void OnRobotState(const robot_state_t& msg);
   void OnGripper(const gripper_command_t& msg);
+  /// The CAN bridge's state: not RUNNING (REPLAY aside) holds the tracker, RUNNING releases it.
+  void OnDriveStatus(const drive_status_t& msg);
   /// One control cycle at now_utime: activates a pending trajectory whose start has come,
   /// steps the NMPC and returns the command and the status to publish.
   const TrackerCycle& Step(std::int64_t now_utime);
@@ -76,8 +89,10 @@ class TrackerNode {
   /// The active trajectory's id (0: none) and the next pending one's (0: none).
   std::int64_t active_id() const { return active_ ? active_->id : 0; }
   std::int64_t pending_id() const { return pending_.empty() ? 0 : pending_.front().id; }
-  /// heartbeat_t::WARN while stopping on a stale or missing robot state with a trajectory,
-  /// else OK; and the heartbeat's status line (mode, ids, solves, fallbacks, rejected messages).
+  /// True while the drives are not running (the last DRIVE_STATUS was not RUNNING).
+  bool held() const { return held_; }
+  /// heartbeat_t::WARN while held or stopping on a stale or missing robot state with a
+  /// trajectory, else OK; and the heartbeat's status line (mode, ids, solves, fallbacks, rejected messages).
   std::int8_t Health() const;
   std::string StatusLine() const;
   /// The final report: cycles, solves, median / p99 solve ms, fallbacks, stops, counts.
@@ -94,6 +109,7 @@ class TrackerNode {
   double Seconds(std::int64_t utime);
   void Activate(Loaded loaded);
   void Fill(const TrackerOutput& out, std::int64_t now_utime);
+  void FillHeld(std::int64_t now_utime);
 
   TrackerOptions options_;
   int num_joints_;
@@ -105,6 +121,8 @@ class TrackerNode {
   std::optional<double> gripper_;       // the latest GRIPPER_COMMAND target
   double measured_gripper_ = 0.0;       // the robot's, until a GRIPPER_COMMAND comes
   TrackerMode last_mode_ = TrackerMode::kStopNoReference;
+  bool held_ = false;
+  std::string hold_reason_;  // the bridge's state and stop reason while held
   std::vector<double> solve_ms_;
   TrackerCycle cycle_;
   TrackerCounts counts_;

@@ -22,7 +22,7 @@ json Finite(double value) { return std::isfinite(value) ? json(value) : json(nul
 
 constexpr std::array<const char*, 6> kPlannerStates = {"IDLE", "PLANNING", "SUCCEEDED", "FAILED", "CANCELLED",
                                                        "STOPPING"};
-constexpr std::array<const char*, 4> kTrackerStates = {"IDLE", "TRACKING", "FINISHED", "STOPPING"};
+constexpr std::array<const char*, 5> kTrackerStates = {"IDLE", "TRACKING", "FINISHED", "STOPPING", "HELD"};
 constexpr std::array<const char*, 5> kMissionStates = {"IDLE", "RUNNING", "SUCCEEDED", "FAILED", "ABORTED"};
 constexpr std::array<const char*, 7> kDriveStates = {"STARTING", "ENABLING", "RUNNING",   "STOPPED",
                                                      "FAULT",    "RECOVERING", "REPLAY"};

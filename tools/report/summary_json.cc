@@ -101,7 +101,7 @@ json SummaryToJson(const RunSummary& s) {
 
 void WriteSummaryJson(const RunSummary& summary, const std::string& path) {
   std::ofstream file(path);
-  file << SummaryToJson(summary).dump(2) << "\n";
+  file << SummaryToJson(summary).dump(2, ' ', false, nlohmann::json::error_handler_t::replace) << "\n";  // texts from the log
   if (!file.good()) throw std::runtime_error(path + ": cannot write the summary");
 }
 

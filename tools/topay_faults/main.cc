@@ -49,7 +49,7 @@ bool WriteResults(const std::string& out_dir, const std::string& report, const C
   for (const EpisodeResult& e : result.episodes) episodes.push_back(ToJson(e));
   std::ofstream md(out_dir + "/results.md"), json(out_dir + "/results.json");
   md << report;
-  json << nlohmann::json{{"episodes", episodes}}.dump(2) << "\n";
+  json << nlohmann::json{{"episodes", episodes}}.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) << "\n";  // texts off the bus
   return md.good() && json.good();
 }
 

@@ -27,7 +27,7 @@ bool WriteResults(const std::string& out_dir, const std::vector<MissionRunRow>& 
   for (const MissionRunRow& r : rows) runs.push_back(topay::tools::ToJson(r));
   std::ofstream md(out_dir + "/results.md"), json(out_dir + "/results.json");
   md << table;
-  json << nlohmann::json{{"runs", runs}}.dump(2) << "\n";
+  json << nlohmann::json{{"runs", runs}}.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) << "\n";  // texts off the bus
   return md.good() && json.good();
 }
 

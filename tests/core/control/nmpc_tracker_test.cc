@@ -142,6 +142,24 @@ TEST(NmpcTrackerTest, EndedReferenceStops) {
   }, TrackerMode::kStopReferenceEnded);
 }
 
+TEST(NmpcTrackerTest, HaltForgetsTheLastCommand) {
+  NmpcTracker tracker(Untimed(), TopayLimits());
+  Loop loop(&tracker);
+  const SyntheticReference cruise = Cruise(0.8, 1.2);
+  TrackerReference reference{1, 0.0, cruise.duration_s(), cruise.Sampler()};
+  for (int i = 0; i < 150; ++i) loop.Step(&reference, 0.0);
+  ASSERT_GT(tracker.last_command().v_mps, 0.6);
+  tracker.Halt();  // the drives stopped the robot
+  EXPECT_EQ(tracker.last_command().v_mps, 0.0);
+  EXPECT_EQ(tracker.last_command().qd_radps.norm(), 0.0);
+  const TrackerOutput& out = loop.Step(nullptr, 0.0);  // no reference: nothing to ramp down
+  EXPECT_EQ(out.mode, TrackerMode::kStopNoReference);
+  EXPECT_EQ(out.command.v_mps, 0.0);
+  EXPECT_EQ(out.command.omega_radps, 0.0);
+  // Without Halt the same step ramps down from 0.8 m/s (the test above): the stop step is
+  // what Halt changes, not the mode.
+}
+
 TEST(NmpcTrackerTest, NewTrajectoryIdSwitchesWithoutAJump) {
   const TrackerLimits limits = TopayLimits();
   NmpcTracker tracker(Untimed(), limits);

@@ -37,3 +37,19 @@ TEST(EmcyTest, MalformedFramesAreRejected) {
 
 }  // namespace
 }  // namespace topay::canopen
+
+namespace topay::canopen {
+namespace {
+
+TEST(EmcyTest, CommunicationErrorsAreThe81xxCodes) {
+  EXPECT_TRUE(IsCommunicationError(emcy_code::kHeartbeatError));
+  EXPECT_TRUE(IsCommunicationError(emcy_code::kCanOverrun));
+  EXPECT_TRUE(IsCommunicationError(0x8140));  // recovered from bus-off
+  EXPECT_FALSE(IsCommunicationError(emcy_code::kPdoLengthError));
+  EXPECT_FALSE(IsCommunicationError(emcy_code::kCurrent));
+  EXPECT_FALSE(IsCommunicationError(emcy_code::kFollowingError));
+  EXPECT_FALSE(IsCommunicationError(emcy_code::kErrorResetOrNoError));
+}
+
+}  // namespace
+}  // namespace topay::canopen

@@ -144,10 +144,14 @@ class DrivePeer {
     }
   }
 
+  /// A fault with `code` (kept in 0x603F); its EMCY goes to *out (nullptr: lost, e.g. sent
+  /// while the bus was off).
   void Fault(std::uint16_t code, std::vector<can::CanFrame>* out) {
     model.OnFault();
     model.CompleteFaultReaction();
     velocity_ = 0.0;
+    error_code = code;
+    if (out == nullptr) return;
     canopen::Emcy emcy;
     emcy.node_id = node_;
     emcy.error_code = code;
@@ -167,6 +171,8 @@ class DrivePeer {
   bool silent = false;           ///< No heartbeat, no TPDOs, no SDO answers.
   std::optional<std::uint16_t> abort_index;  ///< Abort every write to this index.
   int resets = 0, starts = 0;
+  int uploads = 0;               ///< SDO upload (read) requests answered
+  std::uint16_t error_code = 0;  ///< 0x603F
   double target_velocity = 0.0;
 
  private:
@@ -194,6 +200,12 @@ class DrivePeer {
     if (silent) return;
     const auto request = canopen::DecodeSdoClientRequest(frame, nullptr);
     if (!request) return;
+    if (const auto* read = std::get_if<canopen::SdoUploadRequest>(&*request)) {
+      ++uploads;
+      const std::uint32_t value = read->address.index == 0x603F ? error_code : Object(read->address.index, read->address.subindex);
+      if (auto f = canopen::EncodeSdoUploadResponse({node_, read->address, 4, value}, nullptr)) out->push_back(*f);
+      return;
+    }
     const auto* write = std::get_if<canopen::SdoDownloadRequest>(&*request);
     if (write == nullptr) return;
     if (abort_index && write->address.index == *abort_index) {

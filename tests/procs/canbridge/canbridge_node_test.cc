@@ -267,6 +267,64 @@ TEST(CanbridgeNodeTest, DriveFaultStopsAndNeedsAFaultReset) {
   EXPECT_EQ(rig.peers.drives[2].model.state(), DriveState::kOperationEnabled);
 }
 
+// A drive that lost the bridge's heartbeat while the bus was off faults with 0x8130 and its
+// EMCY is lost with the bus: the bridge reads 0x603F, sees a communication error only, and
+// resets it itself at a zero command (no operator). A fault of the drive itself read the same
+// way stays for the operator.
+TEST(CanbridgeNodeTest, CommunicationFaultWithoutEmcyIsReadAndResetByTheBridge) {
+  Rig rig;
+  ASSERT_TRUE(rig.Running());
+  rig.CommandFor(rig.Command(0.0, 0.0, 0.0), 0.2);
+  rig.peers.drives[3].Fault(canopen::emcy_code::kHeartbeatError, nullptr);  // no EMCY on the bus
+  ASSERT_TRUE(rig.CommandUntil(rig.Command(0.0, 0.0, 0.0), [&] { return rig.node.state() == BridgeState::kFault; }, 0.2));
+  EXPECT_EQ(rig.last_status.last_emcy_code[3], 0);
+  ASSERT_TRUE(rig.CommandUntil(rig.Command(0.0, 0.0, 0.0), [&] { return rig.node.state() == BridgeState::kRunning; }, 3.0))
+      << rig.node.stop_reason();
+  EXPECT_GE(rig.peers.drives[3].uploads, 1);
+  EXPECT_EQ(rig.peers.drives[3].model.state(), DriveState::kOperationEnabled);
+}
+
+TEST(CanbridgeNodeTest, ADriveFaultOfItsOwnReadBySdoWaitsForTheOperator) {
+  Rig rig;
+  ASSERT_TRUE(rig.Running());
+  rig.peers.drives[1].Fault(0x2310, nullptr);  // over-current, EMCY lost
+  ASSERT_TRUE(rig.CommandUntil(rig.Command(0.0, 0.0, 0.0), [&] { return rig.node.state() == BridgeState::kFault; }, 0.2));
+  rig.CommandFor(rig.Command(0.0, 0.0, 0.0), 2.0);
+  EXPECT_GE(rig.peers.drives[1].uploads, 1);  // read, and not reset
+  EXPECT_EQ(rig.node.state(), BridgeState::kFault);
+  EXPECT_EQ(rig.peers.drives[1].model.state(), DriveState::kFault);
+}
+
+TEST(CanbridgeNodeTest, AutomaticResetsWaitForAZeroCommandAndStopAfterTheLimit) {
+  CanbridgeOptions options;
+  options.max_auto_resets_per_minute = 2;
+  Rig rig(options);
+  ASSERT_TRUE(rig.Running());
+  for (int k = 0; k < 3; ++k) {
+    std::vector<can::CanFrame> out;
+    rig.peers.drives[0].Fault(canopen::emcy_code::kHeartbeatError, &out);  // with its EMCY this time
+    rig.peers.Send(out);
+    ASSERT_TRUE(rig.CommandUntil(rig.Command(0.2, 0.0, 0.0), [&] { return rig.node.state() == BridgeState::kFault; }, 0.2));
+    rig.CommandFor(rig.Command(0.2, 0.0, 0.0), 1.0);  // a command still moving: no reset
+    EXPECT_EQ(rig.node.state(), BridgeState::kFault) << k;
+    rig.CommandFor(rig.Command(0.0, 0.0, 0.0), 3.0);
+    if (k < 2) {
+      EXPECT_EQ(rig.node.state(), BridgeState::kRunning) << k << ": " << rig.node.stop_reason();
+    } else {
+      EXPECT_EQ(rig.node.state(), BridgeState::kFault) << "the third within a minute waits for the operator";
+    }
+  }
+  CanbridgeOptions off;
+  off.auto_reset_communication_faults = false;
+  Rig manual(off);
+  ASSERT_TRUE(manual.Running());
+  std::vector<can::CanFrame> out;
+  manual.peers.drives[0].Fault(canopen::emcy_code::kHeartbeatError, &out);
+  manual.peers.Send(out);
+  manual.CommandFor(manual.Command(0.0, 0.0, 0.0), 2.0);
+  EXPECT_EQ(manual.node.state(), BridgeState::kFault);
+}
+
 TEST(CanbridgeNodeTest, LostDriveHeartbeatStopsAndRecovers) {
   Rig rig;
   ASSERT_TRUE(rig.Running());

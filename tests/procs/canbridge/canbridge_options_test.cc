@@ -36,6 +36,8 @@ TEST(CanbridgeOptionsTest, ShippedConfigIsTheDefaults) {
   EXPECT_EQ(o.drives.heartbeat_timeout_s, d.drives.heartbeat_timeout_s);
   EXPECT_EQ(o.drives.startup.consumer_heartbeat_ms, d.drives.startup.consumer_heartbeat_ms);
   EXPECT_EQ(o.drives.sdo_attempts, d.drives.sdo_attempts);
+  EXPECT_EQ(o.auto_reset_communication_faults, d.auto_reset_communication_faults);
+  EXPECT_EQ(o.max_auto_resets_per_minute, d.max_auto_resets_per_minute);
 }
 
 TEST(CanbridgeOptionsTest, ReadsValues) {
@@ -53,6 +55,9 @@ TEST(CanbridgeOptionsTest, ErrorsNameTheFileAndKey) {
   EXPECT_NE(ErrorOf("comand_timeout_s: 1\n").find("comand_timeout_s"), std::string::npos);
   EXPECT_NE(ErrorOf("comand_timeout_s: 1\n").find("bad.yaml"), std::string::npos);
   EXPECT_NE(ErrorOf("command_timeout_s: 0.001\n").find("command_timeout_s"), std::string::npos);
+  EXPECT_NE(ErrorOf("max_auto_resets_per_minute: -1\n").find("max_auto_resets_per_minute"), std::string::npos);
+  EXPECT_NE(ErrorOf("auto_reset_communication_faults: maybe\n").find("auto_reset_communication_faults"),
+            std::string::npos);
   EXPECT_NE(ErrorOf("base: {node_id: 3}\n").find("drives.node_ids"), std::string::npos);
   EXPECT_NE(ErrorOf("drives: {node_ids: [1, 1, 2, 3, 4, 5, 6]}\n").find("appears twice"), std::string::npos);
   EXPECT_NE(ErrorOf("drives: {node_ids: [1.5]}\n").find("drives.node_ids"), std::string::npos);

@@ -67,6 +67,71 @@ TEST(DriveLinkTest, StartupSequence) {
   EXPECT_NE(link.LostReason(t + 0.55).find("no heartbeat"), std::string::npos);
 }
 
+// Brings a link through its start-up to operational (every write confirmed); returns the time.
+double MakeOperational(DriveLink& link) {
+  std::string error;
+  Step(link, 0.0);
+  link.Handle(*canopen::EncodeHeartbeat({3, canopen::NmtState::kBootUp}, nullptr), 0.01, &error);
+  double t = 0.02;
+  for (int i = 0; i < 100 && link.phase() != DrivePhase::kOperational; ++i, t += 0.01) {
+    for (const can::CanFrame& f : Step(link, t)) {
+      if (const auto request = canopen::DecodeSdoDownloadRequest(f, nullptr)) {
+        link.Handle(*canopen::EncodeSdoDownloadResponse({3, request->address}, nullptr), t, &error);
+      }
+    }
+  }
+  return t;
+}
+
+TEST(DriveLinkTest, ErrorCodeReadBySdoNamesAFaultWithoutEmcy) {
+  DriveLink link = MakeLink();
+  double t = MakeOperational(link);
+  ASSERT_EQ(link.phase(), DrivePhase::kOperational);
+  std::string error;
+  EXPECT_TRUE(Step(link, t).empty());  // nothing asked: nothing sent
+  link.Handle(Tpdo1(DriveState::kFault), t, &error);
+  EXPECT_TRUE(link.faulted());
+  EXPECT_FALSE(link.FaultCode().has_value());  // no EMCY came
+  link.RequestErrorCode();
+  auto out = Step(link, t);
+  ASSERT_EQ(out.size(), 1u);
+  const auto read = canopen::DecodeSdoUploadRequest(out[0], nullptr);
+  ASSERT_TRUE(read);
+  EXPECT_EQ(read->address, (canopen::ObjectAddress{0x603F, 0}));
+  EXPECT_TRUE(Step(link, t + 0.05).empty());  // waits sdo_timeout_s
+  EXPECT_EQ(Step(link, t + 0.11).size(), 1u);  // asked again
+  link.Handle(*canopen::EncodeSdoUploadResponse({3, {0x603F, 0}, 2, 0x8130}, nullptr), t + 0.12, &error);
+  EXPECT_EQ(link.FaultCode(), std::optional<std::uint16_t>(0x8130));
+  EXPECT_TRUE(Step(link, t + 0.3).empty());
+  link.ArmFaultReset();  // the reset forgets the code: a later fault is read again
+  EXPECT_FALSE(link.FaultCode().has_value());
+  // An EMCY names the fault without a read.
+  link.Handle(*canopen::EncodeEmcy({3, 0x2310, 1, {}}, nullptr), t + 0.4, &error);
+  EXPECT_EQ(link.FaultCode(), std::optional<std::uint16_t>(0x2310));
+}
+
+TEST(DriveLinkTest, ErrorCodeReadGivesUpAfterItsAttemptsOrAnAbort) {
+  DriveLink link = MakeLink();
+  const double t = MakeOperational(link);
+  link.RequestErrorCode();
+  EXPECT_EQ(Step(link, t).size(), 1u);
+  EXPECT_EQ(Step(link, t + 0.11).size(), 1u);
+  EXPECT_EQ(Step(link, t + 0.22).size(), 1u);
+  EXPECT_TRUE(Step(link, t + 0.33).empty());  // three unanswered: gave up
+  EXPECT_TRUE(link.error_code_unavailable());
+  EXPECT_FALSE(link.FaultCode().has_value());
+  DriveLink other = MakeLink();
+  const double u = MakeOperational(other);
+  other.RequestErrorCode();
+  Step(other, u);
+  std::string error;
+  other.Handle(*canopen::EncodeSdoAbort({3, {0x603F, 0}, canopen::sdo_abort::kGeneralError},
+                                        canopen::SdoChannel::kServerToClient, nullptr),
+               u + 0.01, &error);
+  EXPECT_TRUE(other.error_code_unavailable());
+  EXPECT_TRUE(Step(other, u + 0.2).empty());
+}
+
 TEST(DriveLinkTest, NoBootUpNoAnswerAndAbort) {
   DriveLink link = MakeLink();
   std::string error;

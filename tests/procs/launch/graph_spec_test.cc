@@ -105,7 +105,7 @@ TEST(GraphSpec, DefaultsNameToTheFileStem) {
   EXPECT_EQ(g.name, "graph");
   EXPECT_FALSE(g.isolated);
   EXPECT_EQ(g.processes[0].restart, RestartPolicy::kOnFailure);
-  EXPECT_EQ(g.processes[0].heartbeat_timeout_s, 1.0);
+  EXPECT_EQ(g.processes[0].heartbeat_timeout_s, 3.0);
 }
 
 TEST(GraphSpec, UnknownKeyIsNamedWithFileAndLine) {

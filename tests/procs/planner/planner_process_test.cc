@@ -22,6 +22,7 @@
 #include "tests/procs/planner/planner_test_support.h"
 #include "topay/planner_status_t.hpp"
 #include "topay/poly_trajectory_t.hpp"
+#include "topay/tracker_status_t.hpp"
 
 namespace topay::test {
 namespace {
@@ -188,6 +189,69 @@ TEST_F(PlannerProcess, AGoalGetsATrajectoryWithItsIdStartingAtTheRobot) {
   EXPECT_NEAR(poly->yaw0_rad, start_.yaw_rad, 1e-3);
   EXPECT_NEAR((poly->Evaluate(0.0).tail(7) - start_.q_rad).cwiseAbs().maxCoeff(), 0.0, 1e-3);
   EXPECT_GT(out_.Last(11, planner_status_t::SUCCEEDED)->total_ms, 0.0);
+}
+
+// The CAN bridge stops the drives (a lost heartbeat, bus-off) and the tracker, HELD, drops every
+// trajectory: the planner forgets them and waits, saying so; a goal meanwhile waits too; when
+// the tracker is released it plans the goal from rest where the robot stopped (not from where
+// the dropped trajectory would have led).
+TEST_F(PlannerProcess, AHeldTrackerMakesItWaitAndPlanFromRestWhereTheRobotStopped) {
+  Send(ReachableGoal(21));
+  ASSERT_TRUE(SpinWithRobot([&] { return !out_.trajectories.empty(); }, 60.0)) << ReadText(dir_ + "/planner.txt");
+  const std::int64_t first_id = out_.trajectories.back().trajectory_id;
+  const auto tracker = [&](std::int8_t state) {
+    tracker_status_t t{};
+    t.utime = procs::NowUtime();
+    t.state = state;
+    watcher_->lcm().publish(std::string(channels::TRACKER_STATUS), &t);
+  };
+  tracker(tracker_status_t::HELD);
+  start_.x_m += 0.3;  // where the robot was stopped
+  start_.yaw_rad += 0.2;
+  const auto waiting = [&] {
+    const planner_status_t* s = out_.Last(22, planner_status_t::PLANNING);
+    return s != nullptr && s->detail.find("waiting: the drives are stopped (tracker HELD)") != std::string::npos;
+  };
+  Send(ReachableGoal(22));
+  ASSERT_TRUE(SpinWithRobot(waiting, 10.0)) << ReadText(dir_ + "/planner.txt");
+  const std::size_t before = out_.trajectories.size();
+  SpinWithRobot([&] { tracker(tracker_status_t::HELD); return false; }, 1.0);  // still held: no plan
+  EXPECT_EQ(out_.trajectories.size(), before);
+  EXPECT_EQ(out_.Last(22, planner_status_t::FAILED), nullptr);
+  tracker(tracker_status_t::IDLE);  // released: the drives run again
+  ASSERT_TRUE(SpinWithRobot([&] { return out_.trajectories.size() > before; }, 60.0)) << ReadText(dir_ + "/planner.txt");
+  const poly_trajectory_t& t = out_.trajectories.back();
+  EXPECT_EQ(t.goal_id, 22);
+  EXPECT_GT(t.trajectory_id, first_id);
+  std::string error;
+  const auto poly = msgs::FromMessage(t, &error);
+  ASSERT_TRUE(poly.has_value()) << error;
+  EXPECT_NEAR(poly->p0_W_m.x(), start_.x_m, 1e-3);  // from rest at the robot
+  EXPECT_NEAR(poly->p0_W_m.y(), start_.y_m, 1e-3);
+  EXPECT_NEAR(poly->yaw0_rad, start_.yaw_rad, 1e-3);
+  EXPECT_NE(ReadText(dir_ + "/planner.txt").find("resume: the drives run again"), std::string::npos);
+}
+
+// Goal ids are issued once: a repeat of the goal in hand changes nothing, and another target
+// under its id (a corrupted copy, a foreign sender) neither cancels it nor moves the robot.
+TEST_F(PlannerProcess, AGoalIdIsNotReusedForAnotherTarget) {
+  const goal_t goal = ReachableGoal(31);
+  Send(goal);
+  ASSERT_TRUE(SpinWithRobot([&] { return !out_.trajectories.empty(); }, 60.0)) << ReadText(dir_ + "/planner.txt");
+  goal_t repeat = goal;
+  repeat.utime += 1000;
+  goal_t other = goal;
+  other.p_WE[0] += 0.5;
+  Send(repeat);
+  Send(other);
+  ASSERT_TRUE(SpinWithRobot([&] { return out_.Last(31, planner_status_t::SUCCEEDED) != nullptr; }, 60.0))
+      << ReadText(dir_ + "/planner.txt");
+  EXPECT_EQ(out_.trajectories.size(), 1u);  // one plan: neither copy replanned
+  EXPECT_EQ(out_.Last(31, planner_status_t::CANCELLED), nullptr);
+  EXPECT_EQ(out_.Last(31, planner_status_t::FAILED), nullptr);
+  const std::string log = ReadText(dir_ + "/planner.txt");
+  EXPECT_NE(log.find("GOAL 31 ignored: a repeat of the goal in hand"), std::string::npos) << log;
+  EXPECT_NE(log.find("GOAL 31 ignored: its id was issued before with a different target"), std::string::npos) << log;
 }
 
 // At start-up a goal can come before the mapper's first snapshot (the mission starts as soon as

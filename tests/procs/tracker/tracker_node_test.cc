@@ -177,6 +177,69 @@ TEST(TrackerNode, StaleStateStopsWithinTheAccelerationLimits) {
   EXPECT_EQ(node.Health(), heartbeat_t::WARN);
 }
 
+drive_status_t Drives(std::int8_t state, const std::string& reason = "") {
+  drive_status_t m{};
+  m.state = state;
+  m.stop_reason = reason;
+  return m;
+}
+
+TEST(TrackerNode, DrivesNotRunningHoldAtExactZeroAndDropTrajectories) {
+  TrackerNode node(Options(), MakeTrackerLimits(Robot()));
+  node.OnDriveStatus(Drives(drive_status_t::RUNNING));
+  node.OnTrajectory(Trajectory(1, kT0), kT0);
+  node.OnTrajectory(Trajectory(2, kT0 + 2'000'000), kT0);  // pending
+  std::int64_t now = kT0;
+  for (; now <= kT0 + 600'000; now += kCycle) {
+    node.OnRobotState(StateMessage(Start(), now));
+    node.Step(now);
+  }
+  ASSERT_GT(node.Step(now).command.v_mps, 0.05);  // moving
+  node.OnDriveStatus(Drives(drive_status_t::STOPPED, "no CAN heartbeat from node 3"));
+  EXPECT_TRUE(node.held());
+  EXPECT_EQ(node.active_id(), 0);
+  EXPECT_EQ(node.pending_id(), 0);
+  node.OnTrajectory(Trajectory(3, now), now);  // arrives while held: dropped too
+  EXPECT_EQ(node.active_id(), 0);
+  EXPECT_EQ(node.counts().holds, 1);
+  EXPECT_EQ(node.counts().trajectories_dropped_held, 3);
+  for (int i = 0; i < 10; ++i, now += kCycle) {
+    node.OnRobotState(StateMessage(Start(), now));
+    const TrackerCycle& c = node.Step(now);
+    EXPECT_EQ(c.status.state, tracker_status_t::HELD);
+    EXPECT_EQ(c.status.trajectory_id, 0);
+    EXPECT_EQ(c.command.v_mps, 0.0);  // exact zeros: what the bridge waits for
+    EXPECT_EQ(c.command.omega_radps, 0.0);
+    for (double qd : c.command.qdot_radps) EXPECT_EQ(qd, 0.0);
+    EXPECT_EQ(c.command.gripper, 0.3);  // the measured gripper, kept
+  }
+  EXPECT_EQ(node.Health(), heartbeat_t::WARN);
+  EXPECT_NE(node.StatusLine().find("no CAN heartbeat from node 3"), std::string::npos) << node.StatusLine();
+  node.OnDriveStatus(Drives(drive_status_t::FAULT, "EMCY 0x8130"));  // still held, counted once
+  node.OnDriveStatus(Drives(drive_status_t::RECOVERING));
+  EXPECT_EQ(node.counts().holds, 1);
+  node.OnDriveStatus(Drives(drive_status_t::RUNNING));
+  EXPECT_FALSE(node.held());
+  node.OnRobotState(StateMessage(Start(), now));
+  const TrackerCycle& idle = node.Step(now);
+  EXPECT_EQ(idle.status.state, tracker_status_t::IDLE);
+  EXPECT_EQ(idle.command.v_mps, 0.0);
+  node.OnTrajectory(Trajectory(4, now), now);  // the planner's new one: followed
+  EXPECT_EQ(node.active_id(), 4);
+  now += kCycle;
+  node.OnRobotState(StateMessage(Start(), now));
+  EXPECT_EQ(node.Step(now).status.state, tracker_status_t::TRACKING);
+}
+
+TEST(TrackerNode, ReplayedDriveStatusNeverHolds) {
+  TrackerNode node(Options(), MakeTrackerLimits(Robot()));
+  node.OnDriveStatus(Drives(drive_status_t::REPLAY));
+  EXPECT_FALSE(node.held());
+  node.OnDriveStatus(Drives(drive_status_t::STARTING));  // a bridge starting: held until RUNNING
+  EXPECT_TRUE(node.held());
+  EXPECT_EQ(node.Step(kT0).status.state, tracker_status_t::HELD);
+}
+
 TEST(TrackerNode, NoStateEverStopsToo) {
   TrackerNode node(Options(), MakeTrackerLimits(Robot()));
   node.OnTrajectory(Trajectory(1, kT0), kT0);

@@ -80,7 +80,7 @@ export class RowTable {
 export function stateClass(name) {
   const s = String(name || '').toUpperCase();
   if (/FAIL|FAULT|ERROR|ABORT|BUS-OFF|BACKOFF|EXITED|STOPPED/.test(s)) return 'bad';
-  if (/STOPPING|WARN|PASSIVE|PLANNING|STARTING|ENABLING|RECOVERING|WAITING|CANCELLED/.test(s)) return 'warn';
+  if (/STOPPING|HELD|WARN|PASSIVE|PLANNING|STARTING|ENABLING|RECOVERING|WAITING|CANCELLED/.test(s)) return 'warn';
   if (/SUCCEEDED|RUNNING|TRACKING|FINISHED|OK|ACTIVE|OPERATION ENABLED|OPERATIONAL/.test(s)) return 'good';
   return '';
 }
