@@ -141,6 +141,7 @@ void MissionNode::Tick(std::int64_t now) {
     if (MovingStep()) {
       if (retry_utime_ != 0 && now >= retry_utime_) SendGoal(now);
       if (finished()) return;
+      RepeatGoal(now);
       if (Seconds(step_start_utime_, now) > StepTimeout()) {
         std::string why = planner_ended_ ? "the trajectory ended" : "the planner has not reported the goal reached";
         if (const auto error = EndEffectorError()) {
@@ -237,13 +238,21 @@ void MissionNode::SendGoal(std::int64_t now) {
   goal.goal_id = goal_id_;
   goal.X_WE = target_X_WE_;
   goal.hint = target_hint_;
-  const goal_t msg = msgs::ToMessage(goal);
-  if (outputs_.goal) outputs_.goal(msg);
+  goal_msg_ = msgs::ToMessage(goal);
+  goal_sent_utime_ = now;
+  if (outputs_.goal) outputs_.goal(goal_msg_);
   status_.goal_id = goal_id_;
   status_.attempts = attempts_;
   const Eigen::Vector3d p = target_X_WE_.translation();
   Publish(now, fmt::format("goal {} sent (attempt {}/{}): end effector to ({:.2f}, {:.2f}, {:.2f}){}", goal_id_,
                            attempts_, options_.max_attempts, p.x(), p.y(), p.z(), target_hint_ ? " with hint" : ""));
+}
+
+void MissionNode::RepeatGoal(std::int64_t now) {
+  if (goal_id_ == 0 || retry_utime_ != 0 || options_.goal_repeat_period_s <= 0.0) return;
+  if (now - goal_sent_utime_ < Micros(options_.goal_repeat_period_s)) return;
+  goal_sent_utime_ = now;
+  if (outputs_.goal) outputs_.goal(goal_msg_);
 }
 
 std::optional<std::pair<double, double>> MissionNode::EndEffectorError() const {

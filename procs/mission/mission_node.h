@@ -8,6 +8,8 @@
 //    again with a new id up to max_attempts; a step that does not arrive within its timeout
 //    fails the mission. home goes to the end-effector pose of the start state (the first
 //    ROBOT_STATE), with that state as the hint.
+//    While it waits, the goal is re-sent unchanged every goal_repeat_period_s (a restarted
+//    planner lost it; the planner ignores repeats).
 //  - gripper: a GRIPPER_COMMAND, then the settle time.
 //  - wait: its duration.
 // MISSION_STATUS goes out on every change and every status_period_s.
@@ -80,6 +82,8 @@ class MissionNode {
   void MaybeStart(std::int64_t now);
   void BeginStep(std::size_t index, std::int64_t now);
   void SendGoal(std::int64_t now);
+  // The goal in hand again, unchanged, every goal_repeat_period_s (none while a retry waits).
+  void RepeatGoal(std::int64_t now);
   void CheckArrival(std::int64_t now);
   // An attempt of a goto / home step failed (`reason`): the goal is sent again after
   // retry_delay_s, or after max_attempts the mission FAILS ("<outcome> after N attempts: ...").
@@ -123,6 +127,8 @@ class MissionNode {
   Eigen::Isometry3d target_X_WE_ = Eigen::Isometry3d::Identity();
   std::optional<WholeBodyState> target_hint_;
   std::int64_t goal_id_ = 0;           // the goal of the current attempt
+  goal_t goal_msg_{};                  // ... as sent (repeated unchanged)
+  std::int64_t goal_sent_utime_ = 0;   // ... last sent or repeated
   int attempts_ = 0;
   std::int64_t retry_utime_ = 0;       // 0: none scheduled
   bool planner_ended_ = false;         // SUCCEEDED "ended" for goal_id_

@@ -26,6 +26,7 @@ void CheckMissionOptions(const MissionOptions& o, const std::string& source) {
   Require(o.tolerance.orientation_rad >= 0.0, o.tolerance.orientation_rad, source, "tolerance.orientation_rad", ">= 0");
   Require(o.gripper_settle_s >= 0.0, o.gripper_settle_s, source, "gripper_settle_s", ">= 0");
   Require(o.arrival_settle_s > 0.0, o.arrival_settle_s, source, "arrival_settle_s", "> 0");
+  Require(o.goal_repeat_period_s >= 0.0, o.goal_repeat_period_s, source, "goal_repeat_period_s", ">= 0");
   Require(o.status_period_s > 0.0, o.status_period_s, source, "status_period_s", "> 0");
   Require(o.start_timeout_s > 0.0, o.start_timeout_s, source, "start_timeout_s", "> 0");
 }
@@ -45,6 +46,7 @@ MissionOptions LoadMissionOptions(const std::string& path) {
   tolerance.Finish();
   top.Read("gripper_settle_s", &o.gripper_settle_s);
   top.Read("arrival_settle_s", &o.arrival_settle_s);
+  top.Read("goal_repeat_period_s", &o.goal_repeat_period_s);
   top.Read("status_period_s", &o.status_period_s);
   top.Read("wait_for_planner", &o.wait_for_planner);
   top.Read("start_timeout_s", &o.start_timeout_s);

@@ -30,6 +30,10 @@ struct MissionOptions {
   double arrival_settle_s = 1.0;
   /// A gripper step waits this long (s) after its command unless it sets settle_s. >= 0.
   double gripper_settle_s = 1.0;
+  /// The goal in hand is published again, the same message (id and content), this often (s)
+  /// while its step waits: a planner restarted meanwhile (kill -9: it lost the goal) or a GOAL
+  /// lost on the bus gets it; the planner ignores repeats of the goal it has. 0: never. >= 0.
+  double goal_repeat_period_s = 1.0;
   /// MISSION_STATUS goes out on every change and at least this often (s): 2 Hz. > 0.
   double status_period_s = 0.5;
   /// The mission starts once a ROBOT_STATE (its start pose) and, with wait_for_planner, a

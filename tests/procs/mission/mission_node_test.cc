@@ -102,7 +102,13 @@ class MissionNodeTest : public testing::Test {
 
   RobotModel model_ = LoadRobotModel(ConfigFile("robot/topay_mm.urdf"), ConfigFile("robot/topay_mm.yaml"));
   Kinematics kinematics_{model_};
-  MissionOptions options_;
+  // The goal repeat is off here (these tests count the goals sent per attempt); its own test
+  // below turns it on.
+  MissionOptions options_ = [] {
+    MissionOptions o;
+    o.goal_repeat_period_s = 0.0;
+    return o;
+  }();
   WholeBodyState start_ = BentArmState(0.0, 0.0, 0.0);
   WholeBodyState a_ = BentArmState(3.0, 1.0, 0.5);
   WholeBodyState b_ = BentArmState(-2.0, 2.0, -1.0);
@@ -167,6 +173,38 @@ TEST_F(MissionNodeTest, PublishesItsStatusAtTwoHertz) {
   const std::size_t before = statuses_.size();
   for (double t = 0.05; t < 5.0; t += 0.05) node_->Tick(At(t));
   EXPECT_NEAR(static_cast<double>(statuses_.size() - before), 10.0, 1.0);
+}
+
+// A planner killed and restarted lost the goal (and a GOAL can be lost on the bus): the goal in
+// hand goes out again unchanged every goal_repeat_period_s while its step waits, never while a
+// retry waits, and no more once the step is done.
+TEST_F(MissionNodeTest, TheGoalInHandIsRepeatedUnchangedWhileItsStepWaits) {
+  options_.goal_repeat_period_s = 1.0;
+  options_.retry_delay_s = 2.0;
+  Make({Goto(a_, "pickup"), Wait(10.0)});
+  Start();
+  ASSERT_EQ(goals_.size(), 1u);
+  node_->Tick(At(0.5));
+  EXPECT_EQ(goals_.size(), 1u);
+  node_->Tick(At(1.0));
+  node_->Tick(At(1.5));
+  node_->Tick(At(2.05));
+  ASSERT_EQ(goals_.size(), 3u);
+  for (const goal_t& g : goals_) {
+    EXPECT_EQ(g.goal_id, kFirstGoalId);
+    EXPECT_EQ(g.utime, goals_[0].utime);  // the same message
+    EXPECT_EQ(g.p_WE[0], goals_[0].p_WE[0]);
+  }
+  Planner(kFirstGoalId, planner_status_t::FAILED, 2.1, "", "no path");
+  for (double t = 2.2; t < 4.0; t += 0.1) node_->Tick(At(t));
+  EXPECT_EQ(goals_.size(), 3u) << "no repeat of a failed goal while its retry waits";
+  node_->Tick(At(4.15));
+  ASSERT_EQ(goals_.size(), 4u);
+  EXPECT_EQ(goals_.back().goal_id, kFirstGoalId + 1);
+  Arrive(kFirstGoalId + 1, a_, 4.9);
+  EXPECT_EQ(statuses_.back().step_index, 1);
+  for (double t = 5.0; t < 8.0; t += 0.1) node_->Tick(At(t));
+  EXPECT_EQ(goals_.size(), 4u) << "the step is done: no more repeats";
 }
 
 TEST_F(MissionNodeTest, AFailedPlanIsRetriedWithANewGoalId) {

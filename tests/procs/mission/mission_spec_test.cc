@@ -172,6 +172,8 @@ TEST(MissionOptionsTest, DefaultsAndAFileWithEveryKey) {
   EXPECT_EQ(shipped.max_attempts, defaults.max_attempts);
   EXPECT_DOUBLE_EQ(shipped.step_timeout_s, defaults.step_timeout_s);
   EXPECT_DOUBLE_EQ(shipped.arrival_settle_s, defaults.arrival_settle_s);
+  EXPECT_DOUBLE_EQ(shipped.goal_repeat_period_s, defaults.goal_repeat_period_s);
+  EXPECT_DOUBLE_EQ(defaults.goal_repeat_period_s, 1.0);
 
   const std::string dir = std::string(TOPAY_BINARY_DIR) + "/test_out/mission_options";
   std::filesystem::create_directories(dir);
@@ -183,6 +185,10 @@ TEST(MissionOptionsTest, DefaultsAndAFileWithEveryKey) {
   EXPECT_THROW(LoadMissionOptions(dir + "/settle.yaml"), ConfigError);
   std::ofstream(dir + "/settle_ok.yaml") << "arrival_settle_s: 2.5\n";
   EXPECT_DOUBLE_EQ(LoadMissionOptions(dir + "/settle_ok.yaml").arrival_settle_s, 2.5);
+  std::ofstream(dir + "/repeat.yaml") << "goal_repeat_period_s: -1\n";
+  EXPECT_THROW(LoadMissionOptions(dir + "/repeat.yaml"), ConfigError);
+  std::ofstream(dir + "/repeat_off.yaml") << "goal_repeat_period_s: 0\n";
+  EXPECT_DOUBLE_EQ(LoadMissionOptions(dir + "/repeat_off.yaml").goal_repeat_period_s, 0.0);
 }
 
 }  // namespace
