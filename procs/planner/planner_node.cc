@@ -343,8 +343,9 @@ void PlannerNode::RequestPlan(PlanTrigger trigger, const std::string& reason, bo
   PlanJob job;
   std::string error;
   const std::int64_t now = clock_.Now();
-  if (held_) {  // planned when the drives run again (kResume)
-    PublishStatus(planner_status_t::PLANNING, "", "waiting: the drives are stopped (tracker HELD)");
+  if (held_ || map_stale_) {  // planned when the drives run again / the map is fresh (kResume)
+    PublishStatus(planner_status_t::PLANNING, "",
+                  held_ ? "waiting: the drives are stopped (tracker HELD)" : "waiting: the map is stale");
     return;
   }
   if (!map_.has_map()) error = "no map yet (no MAP_UPDATE snapshot received)";  // e.g. a goal at start-up
@@ -418,6 +419,7 @@ std::size_t PlannerNode::FinishInbox() {
 }
 
 void PlannerNode::DecideAt(std::int64_t now) {
+  CheckMapFreshness(now);
   MaybeSafeStop(now);
   MaybeFinishGoal(now);
   if (pending_ && !worker_->busy()) {
@@ -603,6 +605,59 @@ double PlannerNode::CollisionDistance(std::int64_t now) const {
   return std::hypot(at.state.x_m - robot.state.x_m, at.state.y_m - robot.state.y_m);
 }
 
+std::optional<ArcYawTrajectory> PlannerNode::MakeStop(std::int64_t begin, std::string* why) const {
+  // Brake from the trajectory the robot is on when the stop begins: the newest one may not have
+  // started yet (a replan waits for its t0), and braking from its start put the stop 0.7 s of
+  // travel away from the robot (0.7 m of drift in the demo).
+  const ActiveTrajectory& on = OnAt(begin) != nullptr ? *OnAt(begin) : *active_;
+  return stop_planner_.Make(*on.trajectory, on.TimeAt(begin), why);
+}
+
+void PlannerNode::PublishStop(ArcYawTrajectory stop, std::int64_t begin, const std::string& detail) {
+  ActiveTrajectory s;
+  s.trajectory_id = ++trajectory_seq_;
+  s.goal_id = active_->goal_id;
+  s.start_utime = begin;
+  s.stopping = true;
+  s.trajectory = std::make_shared<const ArcYawTrajectory>(std::move(stop));
+  MakeActive(std::move(s));
+  ++counts_.stops;
+  PublishActive("stopping");
+  PublishStatus(planner_status_t::STOPPING, "", detail);
+}
+
+void PlannerNode::CheckMapFreshness(std::int64_t now) {
+  const double limit_s = options_.map.stale_stop_s;
+  if (limit_s <= 0.0 || !map_.has_map()) return;
+  const double age_s = 1e-6 * static_cast<double>(now - map_.receiver().utime());
+  if (age_s <= limit_s) {
+    if (!map_stale_) return;
+    map_stale_ = false;
+    spdlog::info("map fresh again: newest scan {:.2f} s old", age_s);
+    RequestPlan(PlanTrigger::kResume, "the map is fresh again");
+    return;
+  }
+  if (map_stale_) return;
+  map_stale_ = true;
+  const std::string detail = fmt::format("the map is stale: newest scan {:.2f} s old (limit {:.2f} s)", age_s, limit_s);
+  spdlog::warn("{}: stopping, no plan until it is fresh", detail);
+  if (worker_->busy()) worker_->Cancel();
+  latest_job_ = 0;  // no result of a plan asked for before is used
+  pending_.reset();
+  retry_at_utime_ = 0;
+  if (active_ && !active_->stopping && !active_->EndedBy(now)) {
+    const std::int64_t begin = now + Micros(options_.stop.latency_s);
+    std::string why;
+    if (std::optional<ArcYawTrajectory> stop = MakeStop(begin, &why)) {
+      ++counts_.stale_map_stops;
+      PublishStop(std::move(*stop), begin, detail + ": stopping");
+      return;
+    }
+    spdlog::error("goal {}: {} and no stopping trajectory: {}", active_->goal_id, detail, why);
+  }
+  if (goal_ && !goal_->done) PublishStatus(planner_status_t::PLANNING, "", "waiting: " + detail);
+}
+
 void PlannerNode::MaybeSafeStop(std::int64_t now) {
   if (!collision_utime_ || !active_ || active_->stopping || active_->EndedBy(now)) return;
   const double until_collision_s = 1e-6 * (*collision_utime_ - now);
@@ -622,12 +677,8 @@ void PlannerNode::MaybeSafeStop(std::int64_t now) {
     return;
   }
   const std::int64_t begin = now + Micros(options_.stop.latency_s);
-  // Brake from the trajectory the robot is on when the stop begins: the newest one may not have
-  // started yet (a replan waits for its t0), and braking from its start put the stop 0.7 s of
-  // travel away from the robot (0.7 m of drift in the demo).
-  const ActiveTrajectory& on = OnAt(begin) != nullptr ? *OnAt(begin) : *active_;
   std::string why;
-  std::optional<ArcYawTrajectory> stop = stop_planner_.Make(*on.trajectory, on.TimeAt(begin), &why);
+  std::optional<ArcYawTrajectory> stop = MakeStop(begin, &why);
   last_stop_duration_s_ = stop ? stop->duration_s() : 0.0;
   last_stop_made_utime_ = now;
   if (!grace_over && until_collision_s > *last_stop_duration_s_ + lead_s) return;
@@ -639,17 +690,8 @@ void PlannerNode::MaybeSafeStop(std::int64_t now) {
     stop_error_logged_ = true;
     return;
   }
-  ActiveTrajectory s;
-  s.trajectory_id = ++trajectory_seq_;
-  s.goal_id = active_->goal_id;
-  s.start_utime = begin;
-  s.stopping = true;
-  s.trajectory = std::make_shared<const ArcYawTrajectory>(std::move(*stop));
-  MakeActive(std::move(s));
-  ++counts_.stops;
-  PublishActive("stopping");
-  PublishStatus(planner_status_t::STOPPING, "",
-                fmt::format("collision {:.2f} s ahead, no new trajectory yet: stopping", until_collision_s));
+  PublishStop(std::move(*stop), begin,
+              fmt::format("collision {:.2f} s ahead, no new trajectory yet: stopping", until_collision_s));
   // A plan in progress started on the trajectory the stop replaces: it would not join.
   RequestPlan(PlanTrigger::kRetry, "replanning from the safe stop", /*preempt=*/true);
 }
@@ -714,10 +756,10 @@ void PlannerNode::UpdateHealth() {
 std::string PlannerNode::Report() const {
   const PlanWorkerCounts w = worker_->counts();
   std::string out = fmt::format(
-      "topay-planner: {} goals ({} refused, {} repeats ignored, {} cancelled), {} trajectories, {} stops, {} plans "
-      "({} failed, {} cancelled, {} late, {} colliding with a newer map)\n",
+      "topay-planner: {} goals ({} refused, {} repeats ignored, {} cancelled), {} trajectories, {} stops ({} on a "
+      "stale map), {} plans ({} failed, {} cancelled, {} late, {} colliding with a newer map)\n",
       counts_.goals, counts_.goals_refused, counts_.goals_repeated, counts_.goals_cancelled, counts_.trajectories,
-      counts_.stops, w.plans, counts_.plans_failed, w.cancelled, counts_.results_dropped_late,
+      counts_.stops, counts_.stale_map_stops, w.plans, counts_.plans_failed, w.cancelled, counts_.results_dropped_late,
       counts_.results_colliding);
   out += "  triggers:";
   for (const auto& [trigger, n] : counts_.triggers) out += fmt::format(" {} {}", ToString(trigger), n);

@@ -7,6 +7,8 @@
 //  (b) the robot has drifted from the trajectory beyond the tolerances,
 //  (c) the goal changed (a new goal cancels the plan in progress; a GOAL with the id of the
 //      last one is not a new goal: a repeat is ignored, a different target under it refused),
+//  (e) the map is fresh again after it went stale (its newest scan older than
+//      map.stale_stop_s: the robot was stopped and no plan went out meanwhile),
 //  (d) the drives run again after the tracker was HELD (the CAN bridge stopped or faulted the
 //      robot and the tracker dropped every trajectory): while held it forgets its trajectories,
 //      cancels the plan in progress and waits; then it plans from rest where the robot stopped,
@@ -57,6 +59,7 @@ struct PlannerNodeCounts {
   std::map<PlanTrigger, std::int64_t> triggers;
   std::int64_t goals = 0, goals_refused = 0, goals_cancelled = 0;
   std::int64_t goals_repeated = 0;  ///< repeats of the last goal (same id and content): ignored
+  std::int64_t stale_map_stops = 0;  ///< stopping trajectories for a stale map (map.stale_stop_s)
   std::int64_t trajectories = 0, stops = 0;
   std::int64_t plans_failed = 0, results_dropped_late = 0, results_colliding = 0;
   std::int64_t maps_rejected = 0, map_checks = 0;
@@ -135,6 +138,13 @@ class PlannerNode {
   // recent collisions.
   std::vector<Eigen::AlignedBox2d> FreshRegions(const TrajectorySample& start) const;
   void MaybeSafeStop(std::int64_t now);
+  // map.stale_stop_s: stops the robot and holds the plans while the map's newest scan is too
+  // old; plans the goal again once it is fresh.
+  void CheckMapFreshness(std::int64_t now);
+  // A stopping trajectory from the one the robot is on at now + stop.latency_s (nullopt with
+  // *why when none can be made), and its publication (STOPPING with `detail`).
+  std::optional<ArcYawTrajectory> MakeStop(std::int64_t begin, std::string* why) const;
+  void PublishStop(ArcYawTrajectory stop, std::int64_t begin, const std::string& detail);
   /// Straight-line distance (m) from the robot's place on active_ now to the predicted collision.
   double CollisionDistance(std::int64_t now) const;
   void MaybeFinishGoal(std::int64_t now);
@@ -164,6 +174,7 @@ class PlannerNode {
   std::optional<msgs::RobotStateEstimate> robot_;
   std::optional<tracker_status_t> tracker_;  // the last TRACKER_STATUS (heartbeat status line)
   bool held_ = false;                        // the last TRACKER_STATUS was HELD
+  bool map_stale_ = false;                   // the map's newest scan is older than map.stale_stop_s
   // The last GOAL's id and content (GoalContent): ids are issued once; a repeat is ignored and
   // a different goal under the same id refused.
   std::optional<std::pair<std::int64_t, std::vector<std::uint8_t>>> last_goal_;

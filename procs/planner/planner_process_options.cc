@@ -26,6 +26,7 @@ void ReadMap(YamlSection s, PlannerMapOptions* o) {
   s.Read("fresh_radius_m", &o->fresh_radius_m);
   s.Read("fresh_collision_radius_m", &o->fresh_collision_radius_m);
   s.Read("validator_margin_m", &o->validator_margin_m);
+  s.Read("stale_stop_s", &o->stale_stop_s);
   s.Finish();
 }
 
@@ -114,6 +115,7 @@ void CheckPlannerProcessOptions(const PlannerProcessOptions& o, const std::strin
   RequirePositive(o.map.fresh_collision_radius_m, source, "map.fresh_collision_radius_m");
   RequireNonNegative(o.map.validator_margin_m, source, "map.validator_margin_m");
   RequireNonNegative(o.map.start_arm_overlap_m, source, "map.start_arm_overlap_m");
+  RequireNonNegative(o.map.stale_stop_s, source, "map.stale_stop_s");
   RequirePositive(o.timing.from_rest_time_limit_s, source, "timing.from_rest_time_limit_s");
   RequirePositive(o.timing.publish_margin_s, source, "timing.publish_margin_s");
   RequirePositive(o.timing.replan_budget_s - o.timing.publish_margin_s, source,

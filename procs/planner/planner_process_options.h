@@ -44,6 +44,13 @@ struct PlannerMapOptions {
   /// with 0.02 m most plans in the graph test were rejected by the validator by a fraction of
   /// a millimetre (as the sensed-map benchmark found for 0.05 m, docs/benchmarks.md). >= 0.
   double validator_margin_m = 0.0;
+  /// The map is stale when its newest scan (MAP_UPDATE utime) is older than this (s): a robot
+  /// moving on a trajectory is stopped (a stopping trajectory along it, as for a predicted
+  /// collision) and no plan goes out until a fresh map comes; then the goal is planned again.
+  /// The robot must not drive into space it no longer sees (scans or map updates lost, the
+  /// mapper down or lagging): with the map frozen for 10 s the fault suite saw contacts. The
+  /// mapper publishes every 10 Hz scan it integrates (at least 2 Hz). 0: never stale. >= 0.
+  double stale_stop_s = 1.5;
 };
 
 /// When a plan starts and how long it may take.

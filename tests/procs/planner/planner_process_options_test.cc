@@ -59,6 +59,7 @@ TEST(PlannerProcessOptionsTest, ValuesAreReadAndBadOnesNamed) {
   expect_error("triggers: {drift_position_m: -1}\n", "drift_position_m");
   expect_error("timing: {max_failed_plans_from_rest: 0}\n", "timing.max_failed_plans_from_rest");
   expect_error("map: {start_arm_overlap_m: -0.01}\n", "map.start_arm_overlap_m");
+  expect_error("map: {stale_stop_s: -1}\n", "map.stale_stop_s");
   expect_error("goals: {reached_position_m: -0.1}\n", "goals.reached_position_m");
   expect_error("goals: {reached_orientation_rad: .nan}\n", "goals.reached_orientation_rad");
   expect_error("stop: {latency: 1}\n", "stop.latency");

@@ -53,7 +53,8 @@ class PlannerProcess : public testing::Test {
     // trigger: the test's robot stays at its start while the planner's trajectories run.
     WriteText(dir_ + "/planner.yaml", "planner_config: " + std::string(TOPAY_SOURCE_DIR) +
                                           "/config/planner/topay.yaml\ntiming: {from_rest_time_limit_s: 20.0}\n"
-                                          "triggers: {drift_position_m: 100, drift_yaw_rad: 100, drift_joint_rad: 100}\n");
+                                          "triggers: {drift_position_m: 100, drift_yaw_rad: 100, drift_joint_rad: 100}\n"
+                                          "map: {stale_stop_s: 0}\n");  // one snapshot plays the mapper
     watcher_ = std::make_unique<HeartbeatWatcher>(kLcmUrl);
     watcher_->lcm().subscribe(std::string(channels::TRAJECTORY), &PlannerListener::OnTrajectory, &out_);
     watcher_->lcm().subscribe(std::string(channels::PLANNER_STATUS), &PlannerListener::OnStatus, &out_);
@@ -260,6 +261,50 @@ TEST_F(PlannerProcess, AGoalIdIsNotReusedForAnotherTarget) {
   EXPECT_NE(log.find("3 goals (1 refused, 1 repeats ignored, 0 cancelled)"), std::string::npos) << log;
 }
 
+// The mapper stops (its MAP_UPDATEs lost): once the map's newest scan is older than
+// map.stale_stop_s the trajectory under way is stopped (STOPPING, a stopping trajectory) and no
+// plan goes out; when fresh updates come back the goal is planned again.
+TEST_F(PlannerProcess, AStaleMapStopsTheRobotUntilItIsFreshAgain) {
+  std::string yaml = ReadText(dir_ + "/planner.yaml");
+  const std::size_t at = yaml.find("stale_stop_s: 0}");
+  ASSERT_NE(at, std::string::npos) << yaml;
+  yaml.replace(at, std::string("stale_stop_s: 0}").size(), "stale_stop_s: 0.5}");
+  WriteText(dir_ + "/planner.yaml", yaml);
+  RestartPlanner();
+  std::int64_t seq = 1;  // RestartPlanner's snapshot is map_seq 1 (stamped long ago: stale at once)
+  bool mapping = true;
+  Clock::time_point last_map = Clock::now();
+  const auto with_map = [&](auto pred) {  // the mapper: an empty delta stamped now every 0.2 s
+    return [&, pred] {
+      if (mapping && SecondsSince(last_map) >= 0.2) {
+        const map_update_t delta = msgs::EncodeMapDelta(planner::testing::RoomGeometry(), {}, procs::NowUtime(), ++seq);
+        watcher_->lcm().publish(std::string(channels::MAP_UPDATE), &delta);
+        last_map = Clock::now();
+      }
+      return pred();
+    };
+  };
+  Send(ReachableGoal(41));
+  ASSERT_TRUE(SpinWithRobot(with_map([&] { return !out_.trajectories.empty(); }), 60.0)) << ReadText(dir_ + "/planner.txt");
+  const std::size_t planned = out_.trajectories.size();
+  mapping = false;  // the map freezes
+  const auto stopping = [&] {
+    const planner_status_t* s = out_.Last(41, planner_status_t::STOPPING);
+    return s != nullptr && s->detail.find("the map is stale") != std::string::npos;
+  };
+  ASSERT_TRUE(SpinWithRobot(stopping, 5.0)) << ReadText(dir_ + "/planner.txt");
+  EXPECT_EQ(out_.trajectories.size(), planned + 1);  // the stopping trajectory
+  SpinWithRobot([] { return false; }, 1.0);
+  EXPECT_EQ(out_.trajectories.size(), planned + 1) << "no plan on a stale map";
+  mapping = true;
+  ASSERT_TRUE(SpinWithRobot(with_map([&] { return out_.trajectories.size() > planned + 1; }), 30.0))
+      << ReadText(dir_ + "/planner.txt");
+  EXPECT_EQ(out_.trajectories.back().goal_id, 41);
+  const std::string log = StopPlannerAndReadLog();
+  EXPECT_NE(log.find("resume: the map is fresh again"), std::string::npos) << log;
+  EXPECT_NE(log.find("(1 on a stale map)"), std::string::npos) << log;
+}
+
 // At start-up a goal can come before the mapper's first snapshot (the mission starts as soon as
 // the planner heartbeats): it waits for the map, saying so, and is planned once the map is there.
 TEST_F(PlannerProcess, AGoalBeforeTheFirstMapWaitsForItAndIsPlanned) {
@@ -381,9 +426,12 @@ TEST_F(PlannerProcess, ABoxOnTheRouteTriggersAReplanThatAvoidsIt) {
 // its fields (going out first if the collision is far enough ahead), and the robot's last
 // trajectory goes around it.
 TEST_F(PlannerProcess, AnObstacleTheFieldsLackIsCaughtBeforeThePlanGoesOutAndAvoided) {
-  WriteText(dir_ + "/planner.yaml", ReadText(dir_ + "/planner.yaml") +
-                                        "map: {fresh_radius_m: 1.0, field_update_period_s: 60.0, "
-                                        "flush_all_from_rest: false}\n");
+  std::string yaml = ReadText(dir_ + "/planner.yaml");  // its map options join stale_stop_s
+  const std::size_t at = yaml.find("map: {stale_stop_s: 0}");
+  ASSERT_NE(at, std::string::npos) << yaml;
+  yaml.replace(at, std::string("map: {stale_stop_s: 0}").size(),
+               "map: {stale_stop_s: 0, fresh_radius_m: 1.0, field_update_period_s: 60.0, flush_all_from_rest: false}");
+  WriteText(dir_ + "/planner.yaml", yaml);
   RestartPlanner();
   Send(ReachableGoal(41));
   ASSERT_TRUE(SpinWithRobot([&] { return !out_.trajectories.empty(); }, 60.0)) << ReadText(dir_ + "/planner.txt");
