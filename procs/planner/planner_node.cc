@@ -217,13 +217,17 @@ void PlannerNode::OnTrackerStatus(const tracker_status_t& msg) {
   RequestPlan(PlanTrigger::kResume, "the drives run again");
 }
 
+void PlannerNode::AbandonPlans() {
+  if (worker_->busy()) worker_->Cancel();
+  latest_job_ = 0;  // no result of a plan asked for before is used
+  pending_.reset();
+  retry_at_utime_ = 0;
+}
+
 void PlannerNode::Hold(const tracker_status_t& msg) {
   spdlog::warn("tracker HELD at {:.3f} s: the drives are stopped and every trajectory was dropped{}",
                1e-6 * static_cast<double>(msg.utime), active_ ? fmt::format(" (was on {})", active_->trajectory_id) : "");
-  if (worker_->busy()) worker_->Cancel();
-  latest_job_ = 0;  // no result of a plan asked for before the hold is used
-  pending_.reset();
-  retry_at_utime_ = 0;
+  AbandonPlans();
   active_.reset();
   replaced_.clear();
   ClearPredictedCollision();
@@ -641,10 +645,7 @@ void PlannerNode::CheckMapFreshness(std::int64_t now) {
   map_stale_ = true;
   const std::string detail = fmt::format("the map is stale: newest scan {:.2f} s old (limit {:.2f} s)", age_s, limit_s);
   spdlog::warn("{}: stopping, no plan until it is fresh", detail);
-  if (worker_->busy()) worker_->Cancel();
-  latest_job_ = 0;  // no result of a plan asked for before is used
-  pending_.reset();
-  retry_at_utime_ = 0;
+  AbandonPlans();
   if (active_ && !active_->stopping && !active_->EndedBy(now)) {
     const std::int64_t begin = now + Micros(options_.stop.latency_s);
     std::string why;

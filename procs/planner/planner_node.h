@@ -156,6 +156,8 @@ class PlannerNode {
   void UpdateHealth();
   // The tracker is HELD (drives not running): the robot is at rest off every trajectory.
   void Hold(const tracker_status_t& msg);
+  // Cancels the plan in progress and forgets the pending and retried ones (a hold, a stale map).
+  void AbandonPlans();
   void MakeActive(ActiveTrajectory trajectory);
   void ClearPredictedCollision();
   // The trajectory the robot is on at `utime`: the newest one started by then (null: none).
