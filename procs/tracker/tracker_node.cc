@@ -152,7 +152,6 @@ void TrackerNode::OnGripper(const gripper_command_t& msg) {
 }
 
 void TrackerNode::OnDriveStatus(const drive_status_t& msg) {
-  ++counts_.drive_statuses;
   if (msg.state == drive_status_t::REPLAY) return;  // a log being decoded: drives nothing
   if (msg.state == drive_status_t::RUNNING) {
     if (held_) spdlog::info("drives running again: tracker released (at rest, waiting for a trajectory)");
@@ -173,7 +172,6 @@ void TrackerNode::OnDriveStatus(const drive_status_t& msg) {
                hold_reason_, dropped, active_id());
   active_.reset();
   pending_.clear();
-  tracker_.Halt();
 }
 
 const TrackerCycle& TrackerNode::Step(std::int64_t now_utime) {

@@ -61,7 +61,6 @@ struct TrackerCounts {
   std::int64_t stops_ended = 0;  ///< trajectories whose end was reached (stop after the settle)
   std::int64_t holds = 0;        ///< times a DRIVE_STATUS not RUNNING held the tracker
   std::int64_t trajectories_dropped_held = 0;  ///< active, pending or arriving ones dropped while held
-  std::int64_t drive_statuses = 0;
 };
 
 /// One cycle's messages.
