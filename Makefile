@@ -110,13 +110,14 @@ FUZZ_BUILD_DIR ?= build-fuzz
 FUZZ_RUNS      ?= 1000000
 FUZZ_SECONDS   ?= 1800
 FUZZ_TARGETS   ?=
+FUZZ_JOBS      ?= 1
 fuzz:
 	@./tools/install-deps.sh --fuzz
 	@cmake -S . -B $(FUZZ_BUILD_DIR) -G Ninja -DCMAKE_C_COMPILER=clang -DCMAKE_CXX_COMPILER=clang++ \
 	  -DCMAKE_BUILD_TYPE=RelWithDebInfo -DTOPAY_FUZZ=ON -DTOPAY_SANITIZE=address,undefined \
 	  -DTOPAY_BUILD_BENCHMARKS=OFF >/dev/null
 	@cmake --build $(FUZZ_BUILD_DIR) -j $(JOBS) --target topay_fuzz_all
-	tools/fuzz/run_fuzzers.sh $(FUZZ_BUILD_DIR) $(FUZZ_RUNS) $(FUZZ_SECONDS) $(FUZZ_TARGETS)
+	FUZZ_JOBS=$(FUZZ_JOBS) tools/fuzz/run_fuzzers.sh $(FUZZ_BUILD_DIR) $(FUZZ_RUNS) $(FUZZ_SECONDS) $(FUZZ_TARGETS)
 
 # The fault-injection suite (tools/topay_faults, docs/reliability.md): the closed-loop mission
 # through CAN, again and again, with FAULT_RUNS episodes of every fault (kill -9 of each process,

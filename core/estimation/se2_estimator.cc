@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+#include "core/common/stamp_difference.h"
 #include "core/estimation/pose_update.h"
 #include "core/estimation/se2_motion.h"
 
@@ -90,7 +91,7 @@ EstimatorInput Se2Estimator::AddPose(std::int64_t t_us, const Eigen::Vector3d& z
 EstimatorInput Se2Estimator::Insert(const Event& event) {
   const std::int64_t newest_t_us = Newest().t_us;
   const auto max_delay_us = static_cast<std::int64_t>(options_.max_delay_s * 1e6);
-  if (event.t_us < base_.t_us || newest_t_us - event.t_us > max_delay_us) return EstimatorInput::kRejectedTooOld;
+  if (event.t_us < base_.t_us || StampDifferenceUs(newest_t_us, event.t_us) > max_delay_us) return EstimatorInput::kRejectedTooOld;
   // Position: after every event at or before its time (equal stamps keep their arrival order).
   int i = events_.size();
   while (i > 0 && events_[i - 1].t_us > event.t_us) --i;
@@ -165,7 +166,7 @@ void Se2Estimator::ApplyPose(Event* event, EstimatorBelief* b) const {
 }
 
 void Se2Estimator::Propagate(std::int64_t t_us, EstimatorBelief* b) const {
-  const double dt_s = static_cast<double>(t_us - b->t_us) * kSecondsPerUs;
+  const double dt_s = static_cast<double>(StampDifferenceUs(t_us, b->t_us)) * kSecondsPerUs;
   if (b->initialised && dt_s > 0.0) {
     PredictPose(OdometryIncrement{b->v_mps, b->omega_radps, dt_s}, options_, &b->X_WB, &b->P_WB);
   }

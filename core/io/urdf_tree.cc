@@ -13,6 +13,7 @@
 #include <urdf_parser/urdf_parser.h>
 
 #include "core/common/error.h"
+#include "core/io/urdf_joint_cycles.h"
 
 namespace topay {
 namespace {
@@ -250,6 +251,19 @@ int MaxElementDepth(const std::string& text) {
   return deepest;
 }
 
+// NUL bytes after a text TinyXML parses (it may skip up to a UTF-8 sequence past the end).
+constexpr std::size_t kTinyXmlPadding = 16;
+
+// Empties every link's list of children when the parse ends (a throw included): a model that
+// holds a cycle of links (rejected by CheckIsTree) would otherwise never be freed.
+struct ChildLinksReleaser {
+  const urdf::ModelInterfaceSharedPtr* model;
+  ~ChildLinksReleaser() {
+    if (*model == nullptr) return;
+    for (auto& [name, link] : (*model)->links_) link->child_links.clear();
+  }
+};
+
 }  // namespace
 
 UrdfTree ParseUrdfTree(const std::string& urdf_text, const std::string& source) {
@@ -262,11 +276,17 @@ UrdfTree ParseUrdfTree(const std::string& urdf_text, const std::string& source) 
                       "XML elements nest deeper than " + std::to_string(kMaxUrdfElementDepth) +
                           " levels: not a URDF");
   }
+  // TinyXML 2.6.2 (under urdfdom and CheckNoJointCycle) can step over the terminating NUL of
+  // malformed text and read past the buffer (found by the robot_model fuzz target, ASan
+  // heap-buffer-overflow in TiXmlBase::ReadName): it reads a copy followed by NUL padding.
+  const std::string padded_text = urdf_text + std::string(kTinyXmlPadding, '\0');
+  CheckNoJointCycle(padded_text, source);
   urdf::ModelInterfaceSharedPtr urdf_model;
+  const ChildLinksReleaser releaser{&urdf_model};
   std::string reasons;
   {
     const UrdfMessageCapture capture;
-    urdf_model = urdf::parseURDF(urdf_text);
+    urdf_model = urdf::parseURDF(padded_text);
     reasons = capture.messages();
   }
   if (!urdf_model || !urdf_model->getRoot()) {

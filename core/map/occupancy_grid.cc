@@ -124,7 +124,21 @@ std::int64_t OccupancyGrid<Dim>::CountOccupied() const {
   return std::count(cells_.begin(), cells_.end(), std::uint8_t{1});
 }
 
-template class OccupancyGrid<2>;
-template class OccupancyGrid<3>;
+// Member by member rather than `template class`: clang 14 (Debian 12's, used by `make fuzz`)
+// instantiates the members constrained to the other dimension too and fails.
+template OccupancyGrid<2>::OccupancyGrid(const GridGeometry2&);
+template OccupancyGrid<3>::OccupancyGrid(const GridGeometry3&);
+template void OccupancyGrid<2>::Rasterise(const OrientedBox&, const char*);
+template void OccupancyGrid<3>::Rasterise(const OrientedBox&, const char*);
+template void OccupancyGrid<3>::AddBox(const OrientedBox&);
+template void OccupancyGrid<2>::AddFootprint(const OrientedBox&);
+template bool OccupancyGrid<2>::AddBoxInBand(const OrientedBox&, const HeightBand&);
+template OccupancyGrid<2> OccupancyGrid<2>::ProjectBand(const OccupancyGrid<3>&, const HeightBand&);
+template bool OccupancyGrid<2>::MarkPoint(const Point&);
+template bool OccupancyGrid<3>::MarkPoint(const Point&);
+template void OccupancyGrid<2>::ClearAll();
+template void OccupancyGrid<3>::ClearAll();
+template std::int64_t OccupancyGrid<2>::CountOccupied() const;
+template std::int64_t OccupancyGrid<3>::CountOccupied() const;
 
 }  // namespace topay

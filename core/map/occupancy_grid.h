@@ -110,7 +110,6 @@ class OccupancyGrid {
   std::int64_t num_points_outside_ = 0;
 };
 
-extern template class OccupancyGrid<2>;
-extern template class OccupancyGrid<3>;
+// The out-of-line members are instantiated for 2 and 3 in occupancy_grid.cc.
 
 }  // namespace topay

@@ -5,6 +5,7 @@
 #include <utility>
 
 #include <fmt/format.h>
+#include <spdlog/spdlog.h>
 
 namespace topay::director {
 namespace {
@@ -43,9 +44,14 @@ void DirectorNode::OnTrajectory(const poly_trajectory_t& msg) {
 }
 
 void DirectorNode::OnRobotState(const robot_state_t& msg) {
-  if (!std::isfinite(msg.pose.x_m) || !std::isfinite(msg.pose.y_m) || !std::isfinite(msg.velocity.v_mps)) return;
-  p_WR_m_ = Eigen::Vector2d(msg.pose.x_m, msg.pose.y_m);
-  speed_mps_ = std::abs(msg.velocity.v_mps);
+  std::string error;
+  const std::optional<msgs::RobotStateEstimate> estimate = state_intake_.Take(msg, &error);
+  if (!estimate) {
+    if (state_intake_.LogRefusal()) spdlog::warn("ROBOT_STATE ignored (#{}): {}", state_intake_.refused(), error);
+    return;
+  }
+  p_WR_m_ = Eigen::Vector2d(estimate->state.x_m, estimate->state.y_m);
+  speed_mps_ = std::abs(estimate->v_mps);
 }
 
 bool DirectorNode::all_done() const {

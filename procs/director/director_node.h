@@ -13,6 +13,7 @@
 #include "core/robot/kinematics.h"
 #include "procs/director/base_path.h"
 #include "procs/director/director_options.h"
+#include "procs/msgs/robot_state_intake.h"
 #include "topay/mission_status_t.hpp"
 #include "topay/poly_trajectory_t.hpp"
 #include "topay/robot_state_t.hpp"
@@ -73,6 +74,7 @@ class DirectorNode {
   std::vector<Pending> pending_;
   std::optional<mission_status_t> mission_;
   std::optional<BasePath> path_;
+  msgs::RobotStateIntake state_intake_{0};  // decode, continuity gate
   std::optional<Eigen::Vector2d> p_WR_m_;
   double speed_mps_ = 0.0;
   int boxes_placed_ = 0;

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <limits>
 
+#include "core/common/stamp_difference.h"
 #include "procs/runtime/process_loop.h"
 #include "topay/heartbeat_t.hpp"
 #include "topay_msgs/channels.h"
@@ -19,7 +20,7 @@ std::int64_t Micros(double seconds) { return static_cast<std::int64_t>(std::llro
 // "12 ms" or "none".
 std::string Age(const std::optional<std::int64_t>& utime, std::int64_t now_utime) {
   if (!utime) return "none";
-  return fmt::format("{:.0f} ms", static_cast<double>(now_utime - *utime) * 1e-3);
+  return fmt::format("{:.0f} ms", static_cast<double>(StampDifferenceUs(now_utime, *utime)) * 1e-3);
 }
 
 }  // namespace
@@ -47,7 +48,7 @@ EstimatorNode::EstimatorNode(const EstimatorProcessOptions& options)
     : options_((CheckProcessOptions(options), options)), filter_(options.filter) {}
 
 bool EstimatorNode::Future(std::int64_t utime, std::int64_t now_utime) const {
-  return utime - now_utime > Micros(options_.max_future_s);
+  return StampDifferenceUs(utime, now_utime) > Micros(options_.max_future_s);
 }
 
 void EstimatorNode::Fault(InputFault fault) {
@@ -97,6 +98,9 @@ void EstimatorNode::OnJoints(const joint_state_t& msg, std::int64_t now_utime) {
   if (const std::optional<InputFault> fault = CheckJoints(msg, options_.num_joints)) return Fault(*fault);
   if (Future(msg.utime, now_utime)) return Fault(InputFault::kJointsFuture);
   if (joints_ && msg.utime <= joints_->utime) return Fault(InputFault::kJointsOutOfOrder);
+  WholeBodyState arm;  // the base stays at the origin: the gate judges q alone
+  arm.q_rad = Eigen::Map<const Eigen::VectorXd>(msg.position_rad.data(), msg.num_joints);
+  if (!Taken(joints_gate_.Check(msg.utime, arm))) return Fault(InputFault::kJointsJump);
   joints_ = msg;
   joints_->effort_Nm.resize(msg.num_joints, std::numeric_limits<double>::quiet_NaN());
 }
@@ -113,11 +117,13 @@ void EstimatorNode::OnGripper(const joint_state_t& msg, std::int64_t now_utime) 
 
 Validity EstimatorNode::Evaluate(std::int64_t now_utime) const {
   if (!filter_.initialised() || !pose_utime_) return Validity::kNoPose;
-  if (now_utime - *pose_utime_ > Micros(options_.pose_timeout_s)) return Validity::kPoseStale;
+  if (StampDifferenceUs(now_utime, *pose_utime_) > Micros(options_.pose_timeout_s)) return Validity::kPoseStale;
   if (!velocity_) return Validity::kNoOdometry;
-  if (now_utime - velocity_->utime > Micros(options_.odometry_timeout_s)) return Validity::kOdometryStale;
+  if (StampDifferenceUs(now_utime, velocity_->utime) > Micros(options_.odometry_timeout_s)) {
+    return Validity::kOdometryStale;
+  }
   if (!joints_) return Validity::kNoJoints;
-  if (now_utime - joints_->utime > Micros(options_.joints_timeout_s)) return Validity::kJointsStale;
+  if (StampDifferenceUs(now_utime, joints_->utime) > Micros(options_.joints_timeout_s)) return Validity::kJointsStale;
   return Validity::kValid;
 }
 
@@ -152,7 +158,8 @@ void EstimatorNode::Fill(std::int64_t now_utime) {
   out_.pose.yaw_rad = estimate.X_WB.z();
   out_.velocity = *velocity_;
   out_.joints = *joints_;
-  const bool gripper_fresh = gripper_utime_ && now_utime - *gripper_utime_ <= Micros(options_.gripper_timeout_s);
+  const bool gripper_fresh =
+      gripper_utime_ && StampDifferenceUs(now_utime, *gripper_utime_) <= Micros(options_.gripper_timeout_s);
   out_.gripper = gripper_fresh ? gripper_ : std::numeric_limits<double>::quiet_NaN();
 }
 

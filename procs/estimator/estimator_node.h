@@ -12,7 +12,9 @@
 // Valid (published) only with a pose taken (no older than pose_timeout_s), a BASE_VELOCITY no
 // older than odometry_timeout_s and a JOINT_STATE no older than joints_timeout_s (ages from the
 // stamps against the cycle's time). Otherwise nothing is published and the tracker stops the
-// robot on its stale-state rule. Bad inputs are counted per kind and logged once per kind.
+// robot on its stale-state rule. Bad inputs are counted per kind and logged once per kind; a
+// JOINT_STATE whose positions jump beyond the joint rate limit is one (StateContinuityGate on q;
+// a consistent new stream is taken after a few).
 
 #include <cstdint>
 #include <optional>
@@ -20,6 +22,7 @@
 #include <string_view>
 
 #include "core/estimation/se2_estimator.h"
+#include "core/estimation/state_continuity_gate.h"
 #include "procs/estimator/estimator_config.h"
 #include "procs/estimator/input_checks.h"
 #include "topay/robot_state_t.hpp"
@@ -77,6 +80,7 @@ class EstimatorNode {
   std::optional<std::int64_t> pose_utime_;  // the newest pose taken into the filter
   std::optional<base_velocity_t> velocity_;
   std::optional<joint_state_t> joints_;
+  StateContinuityGate joints_gate_;  // JOINT_STATE positions within the joint rate limit
   std::optional<std::int64_t> gripper_utime_;
   double gripper_ = 0.0;
   Validity validity_ = Validity::kNoPose;

@@ -19,6 +19,7 @@ const char* InputFaultName(InputFault fault) {
     case InputFault::kJointsNotFinite: return "JOINT_STATE not finite";
     case InputFault::kJointsOutOfOrder: return "JOINT_STATE out of order";
     case InputFault::kJointsFuture: return "JOINT_STATE stamped in the future";
+    case InputFault::kJointsJump: return "JOINT_STATE jump beyond the joint rate limit";
     case InputFault::kGripperMalformed: return "GRIPPER_STATE without a joint 'gripper'";
     case InputFault::kGripperRange: return "GRIPPER_STATE position not in [0, 1]";
     case InputFault::kGripperOutOfOrder: return "GRIPPER_STATE out of order";

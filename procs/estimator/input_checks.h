@@ -26,12 +26,13 @@ enum class InputFault : std::int8_t {
   kJointsNotFinite,     ///< a position or velocity NaN or infinite
   kJointsOutOfOrder,    ///< stamp not after the previous JOINT_STATE's
   kJointsFuture,
+  kJointsJump,          ///< moved farther than the joint rate limit allows (continuity gate)
   kGripperMalformed,    ///< no joint named "gripper", or arrays that do not match
   kGripperRange,        ///< position not finite or not in [0, 1]
   kGripperOutOfOrder,
   kGripperFuture,
 };
-inline constexpr int kNumInputFaults = 17;
+inline constexpr int kNumInputFaults = 18;
 
 /// A short name, e.g. "BASE_POSE not finite".
 const char* InputFaultName(InputFault fault);

@@ -47,10 +47,10 @@ double MapperNode::NowS() const {
 
 void MapperNode::OnRobotState(const robot_state_t& msg) {
   std::string error;
-  const std::optional<msgs::RobotStateEstimate> estimate = msgs::FromMessage(msg, &error);
+  const std::optional<msgs::RobotStateEstimate> estimate = state_intake_.Take(msg, &error);
   if (!estimate || !history_.Add(estimate->utime, estimate->state)) {
     ++stats_.states_rejected;
-    stats_.last_error = "ROBOT_STATE: " + (error.empty() ? std::string("not finite or wrong joint count") : error);
+    stats_.last_error = "ROBOT_STATE: " + (error.empty() ? std::string("wrong joint count") : error);
     return;
   }
 }

@@ -19,6 +19,7 @@
 #include "procs/mapper/robot_state_history.h"
 #include "procs/mapper/scan_mapper.h"
 #include "procs/msgs/map_publish_schedule.h"
+#include "procs/msgs/robot_state_intake.h"
 #include "procs/runtime/process_loop.h"
 #include "topay/point_cloud_t.hpp"
 #include "topay/robot_state_t.hpp"
@@ -48,6 +49,7 @@ class MapperNode {
   ScanMapper* mapper_;
   OctomapWorker* octomap_;
   MapperOptions options_;
+  msgs::RobotStateIntake state_intake_{0};  // decode, continuity gate (the history checks joints)
   RobotStateHistory history_;
   msgs::MapPublishSchedule schedule_;
   CheckedCloud cloud_;

@@ -24,7 +24,7 @@ struct MapperStats {
   std::int64_t clouds_rejected = 0;  ///< ... rejected by CheckCloud (malformed, NaN pose, huge).
   std::int64_t points_non_finite = 0;  ///< NaN/inf points dropped by the filter.
   std::int64_t scans_without_state = 0;  ///< Scans mapped without the self filter (no state).
-  std::int64_t states_rejected = 0;  ///< ROBOT_STATE messages that did not convert.
+  std::int64_t states_rejected = 0;  ///< ROBOT_STATE messages malformed or refused (continuity gate).
   std::int64_t updates = 0, snapshots = 0;  ///< MAP_UPDATEs published, of which full.
   std::string last_error;            ///< The last rejection's reason.
   // Per scan (AddSample: the last 1-2 hours), ms.

@@ -45,7 +45,8 @@ MissionNode::MissionNode(Mission mission, const Kinematics& kinematics, const Mi
       kinematics_(kinematics),
       options_(options),
       outputs_(std::move(outputs)),
-      next_goal_id_(first_goal_id) {
+      next_goal_id_(first_goal_id),
+      robot_intake_(kinematics.num_joints()) {
   status_.mission = mission_.name;
   status_.state = mission_status_t::IDLE;
   status_.num_steps = static_cast<std::int32_t>(mission_.steps.size());
@@ -73,14 +74,9 @@ double MissionNode::StepTimeout() const { return step().timeout_s.value_or(optio
 
 void MissionNode::OnRobotState(const robot_state_t& msg, std::int64_t now) {
   std::string error;
-  std::optional<msgs::RobotStateEstimate> estimate = msgs::FromMessage(msg, &error);
+  std::optional<msgs::RobotStateEstimate> estimate = robot_intake_.Take(msg, &error);
   if (!estimate) {
-    spdlog::warn("ROBOT_STATE ignored: {}", error);
-    return;
-  }
-  if (estimate->state.num_joints() != kinematics_.num_joints()) {
-    spdlog::warn("ROBOT_STATE ignored: {} joints, the robot has {}", estimate->state.num_joints(),
-                 kinematics_.num_joints());
+    if (robot_intake_.LogRefusal()) spdlog::warn("ROBOT_STATE ignored (#{}): {}", robot_intake_.refused(), error);
     return;
   }
   robot_ = std::move(estimate);

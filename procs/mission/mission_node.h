@@ -24,6 +24,7 @@
 #include "procs/mission/mission_options.h"
 #include "procs/mission/mission_spec.h"
 #include "procs/msgs/convert_robot_state.h"
+#include "procs/msgs/robot_state_intake.h"
 #include "topay/goal_t.hpp"
 #include "topay/gripper_command_t.hpp"
 #include "topay/mission_status_t.hpp"
@@ -111,6 +112,7 @@ class MissionNode {
   mission_status_t status_{};
   std::vector<StepRecord> records_;
 
+  msgs::RobotStateIntake robot_intake_;  // decode, joint count, continuity gate
   std::optional<msgs::RobotStateEstimate> robot_;
   std::optional<WholeBodyState> start_state_;
   bool planner_seen_ = false;

@@ -78,6 +78,14 @@ std::optional<ArcYawTrajectory> ToArcYaw(const PolyTrajectory& poly, const Traje
     *error = Named(poly, Text(m, " pieces but ", poly.coefficients.rows(), " coefficient rows"));
     return std::nullopt;
   }
+  for (Eigen::Index j = 0; j < poly.durations_s.size(); ++j) {
+    const double t = poly.durations_s(j);
+    if (!(t >= options.min_piece_duration_s && t <= options.max_piece_duration_s)) {
+      *error = Named(poly, Text("piece ", j, " lasts ", t, " s, not in [", options.min_piece_duration_s, ", ",
+                                options.max_piece_duration_s, "] s"));
+      return std::nullopt;
+    }
+  }
   const double yaw_at_0 = poly.coefficients(0, 1);
   if (!(std::abs(poly.yaw0_rad - yaw_at_0) <= options.yaw0_tolerance_rad)) {
     *error = Named(poly, Text("yaw0_rad ", poly.yaw0_rad, " disagrees with the yaw polynomial at t = 0 (", yaw_at_0, ")"));

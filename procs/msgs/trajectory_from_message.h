@@ -23,6 +23,12 @@ struct TrajectoryRebuildOptions {
   double coefficient_tolerance = 1e-6;
   /// Largest accepted |yaw0_rad - yaw(0)|, rad.
   double yaw0_tolerance_rad = 1e-6;
+  /// Shortest and longest accepted piece, s. Beyond them the MINCO problem is so ill-conditioned
+  /// that a trajectory accepted once no longer re-solves to itself when sent again (found by
+  /// tests/fuzz/trajectory_message_fuzz.cc: a 9e-20 s piece, a 135,001 s one); the planner's
+  /// pieces last 0.1-5 s.
+  double min_piece_duration_s = 1e-3;
+  double max_piece_duration_s = 100.0;
 };
 
 /// The boundary data of the MINCO problem a PolyTrajectory solves: head and tail (D x 3: value,

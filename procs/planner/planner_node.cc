@@ -66,7 +66,8 @@ PlannerNode::PlannerNode(procs::ProcessLoop* loop, PlanWorker* worker, const Kin
       options_(options),
       clock_(options.deterministic.enabled ? ClockSource::kMessages : ClockSource::kWall),
       reach_(ComputeReachHeights(kinematics)),
-      map_(options.map.unknown) {
+      map_(options.map.unknown),
+      robot_intake_(kinematics.num_joints()) {
   const std::string goal(channels::GOAL), state(channels::ROBOT_STATE), map(channels::MAP_UPDATE),
       tracker(channels::TRACKER_STATUS);
   const std::vector<lcm::Subscription*> subscriptions = {
@@ -162,11 +163,12 @@ void PlannerNode::OnGoal(const goal_t& msg) {
 
 void PlannerNode::OnRobotState(const robot_state_t& msg) {
   std::string error;
-  std::optional<msgs::RobotStateEstimate> robot = msgs::FromMessage(msg, &error);
+  std::optional<msgs::RobotStateEstimate> robot = robot_intake_.Take(msg, &error);
   if (!robot) {
-    spdlog::warn("ROBOT_STATE ignored: {}", error);
+    if (robot_intake_.LogRefusal()) spdlog::warn("ROBOT_STATE ignored (#{}): {}", robot_intake_.refused(), error);
     return;
   }
+  if (robot_intake_.last_verdict() == ContinuityVerdict::kReanchored) spdlog::warn("ROBOT_STATE: {}", robot_intake_.gate_reason());
   robot_ = std::move(robot);
   if (!active_ || active_->stopping || active_->EndedBy(robot_->utime) || !goal_ || goal_->done) return;
   if (robot_->state.num_joints() != active_->trajectory->num_joints()) return;

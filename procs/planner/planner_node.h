@@ -34,6 +34,7 @@
 #include "core/robot/kinematics.h"
 #include "procs/msgs/convert_goal.h"
 #include "procs/msgs/convert_robot_state.h"
+#include "procs/msgs/robot_state_intake.h"
 #include "procs/planner/active_trajectory.h"
 #include "procs/planner/goal_screen.h"
 #include "procs/planner/map_intake.h"
@@ -173,6 +174,7 @@ class PlannerNode {
   bool awaiting_plan_ = false;      // deterministic mode: a plan runs, the inbox waits for it
   ReachHeights reach_;
   MapIntake map_;
+  msgs::RobotStateIntake robot_intake_;  // decode, joint count, continuity gate
   std::optional<msgs::RobotStateEstimate> robot_;
   std::optional<tracker_status_t> tracker_;  // the last TRACKER_STATUS (heartbeat status line)
   bool held_ = false;                        // the last TRACKER_STATUS was HELD

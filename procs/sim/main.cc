@@ -23,7 +23,7 @@ using namespace topay;
 namespace {
 
 struct Flags {
-  std::string scene, robot_urdf, robot_yaml, events, replay_log, plant_input;
+  std::string scene, robot_urdf, robot_yaml, events, replay_log, plant_input, checkpoint;
   std::optional<std::uint64_t> seed;
   std::optional<double> rate, duration_s;
   std::optional<std::int64_t> start_utime;
@@ -52,6 +52,9 @@ void AddSimFlags(CLI::App* app, Flags* f) {
                   "control_command (default) | actuators: the CAN mode, ACTUATOR_COMMAND + GRIPPER_COMMAND in, "
                   "SIM_PLANT_STATE + GRIPPER_STATE out, no ROBOT_STATE (the config's `plant_input`)")
       ->check(CLI::IsMember({"control_command", "actuators"}));
+  app->add_option("--checkpoint", f->checkpoint,
+                  "the plant's checkpoint: read at start if it exists (a restarted simulator continues where the "
+                  "robot was), written every status period");
 }
 
 simproc::SimOptions ResolveOptions(const procs::ProcessOptions& process, const Flags& f) {
@@ -68,6 +71,7 @@ simproc::SimOptions ResolveOptions(const procs::ProcessOptions& process, const F
   if (f.start_utime) o.start_utime = *f.start_utime;
   if (f.follow) o.follow = true;
   if (!f.plant_input.empty()) o.plant_input = f.plant_input;
+  o.checkpoint_file = f.checkpoint;
   if (o.follow && o.plant_input == "actuators") throw ConfigError(o.source, "plant_input", "actuators and --follow exclude each other");
   return o;
 }
@@ -124,6 +128,7 @@ int main(int argc, char** argv) {
                : options.plant_input == "actuators"    ? "ACTUATOR_COMMAND + GRIPPER_COMMAND (CAN mode)"
                                                         : "CONTROL_COMMAND");
 
+  if (!sim.resumed_from.empty()) spdlog::warn("{}: resumed from the plant checkpoint {}", process.name, sim.resumed_from);
   procs::ProcessLoop loop(process);
   if (!loop.ok()) {
     spdlog::error("{}", loop.error());
@@ -140,6 +145,7 @@ int main(int argc, char** argv) {
   node_options.follower = options.follower;
   node_options.actuator_input = options.plant_input == "actuators";
   node_options.plant_state_rate_hz = options.plant_state_rate_hz;
+  node_options.checkpoint_file = options.checkpoint_file;
   simproc::SimNode node(&loop, sim.core.get(), node_options);
   const int code = loop.Run();
   node.Finish();

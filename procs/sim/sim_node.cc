@@ -6,6 +6,7 @@
 #include <cmath>
 #include <string>
 
+#include "procs/sim/plant_checkpoint.h"
 #include "procs/sim/sim_messages.h"
 #include "topay/heartbeat_t.hpp"
 #include "topay_msgs/channels.h"
@@ -230,6 +231,7 @@ void SimNode::OnStatusTimer() {
   s.boxes_present = core_->world().num_present();
   last_status_ = s;
   loop_->lcm().publish(std::string(channels::SIM_STATUS), &s);
+  WriteCheckpoint(s.utime);
 
   const bool rejected = s.commands_rejected > 0 || (follower_ && follower_->counts().rejected > 0);
   const std::int8_t health = s.in_contact                         ? heartbeat_t::ERROR
@@ -243,6 +245,13 @@ void SimNode::OnStatusTimer() {
                                                                s.commands_accepted, s.commands_rejected,
                                                                s.command_timeouts),
                                        s.step_lateness_p99_us));
+}
+
+void SimNode::WriteCheckpoint(std::int64_t utime) {
+  if (options_.checkpoint_file.empty()) return;
+  const std::string error =
+      WritePlantCheckpoint(options_.checkpoint_file, CheckpointOf(core_->plant().state(), utime));
+  if (!error.empty() && ++checkpoint_failures_ == 1) spdlog::warn("plant checkpoint: {} (logged once)", error);
 }
 
 void SimNode::Finish() {

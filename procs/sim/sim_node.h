@@ -42,6 +42,8 @@ struct SimNodeOptions {
   /// BASE_POSE as always, no ROBOT_STATE; CONTROL_COMMAND ignored (counted).
   bool actuator_input = false;
   double plant_state_rate_hz = 250.0;
+  /// The plant's checkpoint, written every status period (procs/sim/plant_checkpoint.h); "" = none.
+  std::string checkpoint_file;
 };
 
 class SimNode : public SimListener {
@@ -68,6 +70,8 @@ class SimNode : public SimListener {
   /// Runs the steps due; returns when the next one is due.
   RealTimePacer::Clock::time_point OnPlantTimer();
   void OnStatusTimer();
+  /// The plant's checkpoint (options_.checkpoint_file), if one is kept.
+  void WriteCheckpoint(std::int64_t utime);
   /// One plant step: to the follower's state at the step's time (follow), else Step.
   void StepOnce();
   /// utime of the sim's clock now (before the first step: of the time stepping will start).
@@ -98,6 +102,7 @@ class SimNode : public SimListener {
   std::int64_t plant_state_every_steps_ = 1;      // CAN mode: SIM_PLANT_STATE period in plant steps
   std::int64_t plant_states_published_ = 0;
   std::atomic<std::int64_t> scans_published_{0};
+  std::int64_t checkpoint_failures_ = 0;
   // Status period bookkeeping.
   RealTimePacer::Clock::time_point last_status_wall_{};
   double last_status_sim_s_ = 0.0;

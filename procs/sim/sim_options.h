@@ -44,6 +44,9 @@ struct SimOptions {
   /// "actuators" (the CAN mode: ACTUATOR_COMMAND from topay-motorsim and GRIPPER_COMMAND in;
   /// SIM_PLANT_STATE and GRIPPER_STATE out, no ROBOT_STATE; docs/simulator.md "CAN mode").
   std::string plant_input = "control_command";
+  /// The plant's checkpoint (--checkpoint, not in YAML; procs/sim/plant_checkpoint.h): read at
+  /// start if it exists (the robot starts where it was), written every status period. "" = none.
+  std::string checkpoint_file;
   double plant_state_rate_hz = 250.0;  ///< CAN mode: SIM_PLANT_STATE and GRIPPER_STATE, Hz (sim time; every
                                        ///< round(1 / (rate * step)) plant steps: 250 Hz = every 2nd 2 ms step)
 };

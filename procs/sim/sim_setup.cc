@@ -1,7 +1,10 @@
 #include "procs/sim/sim_setup.h"
 
+#include <fmt/format.h>
+
 #include "core/common/random.h"
 #include "core/io/robot_loader.h"
+#include "procs/sim/plant_checkpoint.h"
 #include "procs/sim/sensor_factory.h"
 #include "sim/events/event_file.h"
 #include "sim/plant/plant.h"
@@ -33,6 +36,14 @@ SimAssembly AssembleSim(const SimOptions& options) {
 
   SimCoreOptions core;
   core.plant = options.plant;
+  if (!options.checkpoint_file.empty()) {
+    if (const std::optional<PlantCheckpoint> checkpoint = ReadPlantCheckpoint(options.checkpoint_file)) {
+      ResumeFrom(*checkpoint, &core.plant);
+      sim::CheckPlantOptions(core.plant, *a.model, options.checkpoint_file);
+      a.resumed_from = fmt::format("{} ({:.3f}, {:.3f}, {:.3f} rad)", options.checkpoint_file, checkpoint->x_m,
+                                   checkpoint->y_m, checkpoint->yaw_rad);
+    }
+  }
   core.state_rate_hz = options.state_rate_hz;
   core.pose_noise = options.pose_noise;
   core.seed = options.seed;

@@ -19,9 +19,12 @@ struct SimAssembly {
   std::unique_ptr<SimCore> core;   // declared last: destroyed first (its sensors use kinematics)
   std::string scene_description;  ///< "tables seed 1, 164 boxes"
   int num_scripted_events = 0;
+  std::string resumed_from;  ///< "" or the checkpoint the plant starts from ("<file> (x, y, yaw)")
 };
 
-/// Builds the simulator. options.robot_urdf / robot_yaml must be set. Throws ConfigError.
+/// Builds the simulator. options.robot_urdf / robot_yaml must be set. With a checkpoint file
+/// that exists, the plant starts from it (the scene's keep-out stays at the configured start).
+/// Throws ConfigError.
 SimAssembly AssembleSim(const SimOptions& options);
 
 }  // namespace topay::simproc

@@ -42,7 +42,7 @@ bool AtRest(const ControlCommand& c, double tolerance) {
 }  // namespace
 
 TrackerNode::TrackerNode(const TrackerOptions& options, const TrackerLimits& limits)
-    : options_(options), num_joints_(limits.num_joints()), tracker_(options.nmpc, limits) {
+    : options_(options), num_joints_(limits.num_joints()), tracker_(options.nmpc, limits), state_intake_(num_joints_) {
   solve_ms_.reserve(1 << 16);
   cycle_.command.num_joints = num_joints_;
   cycle_.command.qdot_radps.assign(num_joints_, 0.0);
@@ -123,18 +123,16 @@ void TrackerNode::Activate(Loaded loaded) {
 
 void TrackerNode::OnRobotState(const robot_state_t& msg) {
   std::string error;
-  std::optional<msgs::RobotStateEstimate> estimate = msgs::FromMessage(msg, &error);
-  if (estimate && estimate->state.q_rad.size() != num_joints_) {
-    error = fmt::format("{} joints, the robot has {}", estimate->state.q_rad.size(), num_joints_);
-    estimate.reset();
-  }
+  std::optional<msgs::RobotStateEstimate> estimate = state_intake_.Take(msg, &error);
   if (!estimate) {
     ++counts_.states_rejected;
-    if (Every(counts_.states_rejected)) spdlog::warn("rejected ROBOT_STATE (#{}): {}", counts_.states_rejected, error);
+    if (state_intake_.LogRefusal()) spdlog::warn("rejected ROBOT_STATE (#{}): {}", counts_.states_rejected, error);
     return;
   }
   ++counts_.states;
-  if (state_ && estimate->utime < state_->utime) return;  // an older one: keep the newest
+  if (state_intake_.last_verdict() == ContinuityVerdict::kReanchored) {
+    spdlog::warn("ROBOT_STATE: {}", state_intake_.gate_reason());
+  }
   if (std::isfinite(estimate->gripper)) measured_gripper_ = estimate->gripper;
   state_ = std::move(estimate);
 }
@@ -284,13 +282,13 @@ std::string TrackerNode::Report() const {
       "  stops: {} stale state, {} trajectory ended; held {} times (drives not running), {} trajectories "
       "dropped held\n"
       "  trajectories: {} received, {} became active, {} rejected, {} ignored (not newer), {} pending superseded\n"
-      "  robot states: {} ({} rejected); gripper commands: {} ({} rejected)\n",
+      "  robot states: {} ({} rejected: {}); gripper commands: {} ({} rejected)\n",
       c.cycles, c.solves, solve_ms_.empty() ? 0.0 : Median(solve_ms_),
       solve_ms_.empty() ? 0.0 : NearestRankQuantile(solve_ms_, 0.99),
       solve_ms_.empty() ? 0.0 : *std::max_element(solve_ms_.begin(), solve_ms_.end()),
       summary.num_over_budget + summary.num_failed, summary.num_over_budget, summary.num_failed, c.stops_stale,
       c.stops_ended, c.holds, c.trajectories_dropped_held, c.trajectories, c.switches, c.trajectories_rejected, c.trajectories_ignored, c.pending_superseded,
-      c.states, c.states_rejected, c.grippers, c.grippers_rejected);
+      c.states, c.states_rejected, state_intake_.Report(), c.grippers, c.grippers_rejected);
 }
 
 void ConnectTrackerNode(procs::ProcessLoop* loop, TrackerNode* node, double period_s) {

@@ -33,6 +33,7 @@
 #include "core/control/tracker_limits.h"
 #include "core/trajectory/arc_yaw_trajectory.h"
 #include "procs/msgs/convert_robot_state.h"
+#include "procs/msgs/robot_state_intake.h"
 #include "procs/tracker/tracker_options.h"
 #include "topay/control_command_t.hpp"
 #include "topay/drive_status_t.hpp"
@@ -54,7 +55,7 @@ struct TrackerCounts {
   std::int64_t trajectories_ignored = 0;  ///< id not newer than the active or the newest pending one
   std::int64_t pending_superseded = 0;    ///< pending ones dropped: a newer one starts first
   std::int64_t switches = 0;              ///< trajectories that became active
-  std::int64_t states = 0, states_rejected = 0;
+  std::int64_t states = 0, states_rejected = 0;  ///< rejected: malformed or refused by the continuity gate
   std::int64_t grippers = 0, grippers_rejected = 0;
   std::int64_t cycles = 0, solves = 0;
   std::int64_t stops_stale = 0;  ///< cycles that entered the stale-state stop
@@ -116,6 +117,7 @@ class TrackerNode {
   std::optional<std::int64_t> origin_utime_;  // utime of the core's t = 0 s (first one seen)
   std::optional<Loaded> active_;
   std::deque<Loaded> pending_;  // by start time, all in the future
+  msgs::RobotStateIntake state_intake_;  // decode, joint count, continuity gate
   std::optional<msgs::RobotStateEstimate> state_;
   std::optional<double> gripper_;       // the latest GRIPPER_COMMAND target
   double measured_gripper_ = 0.0;       // the robot's, until a GRIPPER_COMMAND comes

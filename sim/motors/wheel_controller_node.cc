@@ -22,9 +22,14 @@ namespace {
 constexpr double kTimeEpsilonS = 1e-9;
 
 
-// The wheel angle as an encoder count modulo 2^24 (forward counts up).
+// The wheel angle as an encoder count modulo 2^24 (forward counts up). The angle is first taken
+// modulo the angle of 2^24 counts, so that any finite angle converts; a non-finite one (a broken
+// plant state) counts 0 (found by the motorsim_inputs fuzz target: -inf cast to an integer).
 std::uint32_t Ticks(double angle_rad, int ticks_per_rev) {
-  const auto ticks = static_cast<std::int64_t>(std::floor(angle_rad / (2.0 * std::numbers::pi) * ticks_per_rev));
+  if (!std::isfinite(angle_rad)) return 0;
+  const double wrap_rad = 2.0 * std::numbers::pi * static_cast<double>(base::kTickCountModulus) / ticks_per_rev;
+  const double wrapped_rad = std::fmod(angle_rad, wrap_rad);
+  const auto ticks = static_cast<std::int64_t>(std::floor(wrapped_rad / (2.0 * std::numbers::pi) * ticks_per_rev));
   return static_cast<std::uint32_t>(ticks & static_cast<std::int64_t>(base::kTickCountModulus - 1));
 }
 
@@ -145,8 +150,11 @@ void WheelControllerNode::UpdateOutput(double dt_s) {
 
 void WheelControllerNode::IntegrateWheels(double dt_s, const base::UnicycleVelocity& plant) {
   const base::WheelSpeeds wheels = base::UnicycleToWheelSpeeds(plant, options_.geometry);
-  left_rad_ += wheels.left_rad_per_s * dt_s;
-  right_rad_ += wheels.right_rad_per_s * dt_s;
+  const double left_rad = left_rad_ + wheels.left_rad_per_s * dt_s;
+  const double right_rad = right_rad_ + wheels.right_rad_per_s * dt_s;
+  if (!std::isfinite(left_rad) || !std::isfinite(right_rad)) return;  // a broken plant state: the wheels keep their angles
+  left_rad_ = left_rad;
+  right_rad_ = right_rad;
 }
 
 void WheelControllerNode::Step(double time_s, const std::optional<base::UnicycleVelocity>& plant,

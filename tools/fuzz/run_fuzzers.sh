@@ -6,7 +6,7 @@
 # hang (> 10 s for one input) or memory above 2.5 GB stops that target and fails the run; the
 # input is kept as BUILD_DIR/fuzz/artifacts/<target>-crash-... (add it to
 # tests/fuzz/regressions/<target>/ with the fix). Writes BUILD_DIR/fuzz/report.md: executions,
-# time and result per target.
+# time and result per target. FUZZ_JOBS (default 1) targets run at a time.
 #
 #   tools/fuzz/run_fuzzers.sh BUILD_DIR RUNS MAX_SECONDS [TARGET...]
 set -uo pipefail
@@ -32,26 +32,27 @@ if [ ${#targets[@]} -eq 0 ]; then
   exit 1
 fi
 
-report=$out/report.md
-{
-  echo "| target | executions | seconds | exec/s | corpus | peak RSS MB | result |"
-  echo "|---|---:|---:|---:|---:|---:|---|"
-} > "$report"
+# One row per target in $out/rows/ (a later run of a target replaces its row); the report is
+# all rows, so runs of different targets with different budgets add up to one table.
+mkdir -p "$out/rows"
+jobs=${FUZZ_JOBS:-1}
 
-failed=0
-for name in "${targets[@]}"; do
-  exe=$build_dir/bin/fuzz/${name}_fuzz
+run_one() {
+  local name=$1
+  local exe=$build_dir/bin/fuzz/${name}_fuzz
+  local row=$out/rows/$name.md
   if [ ! -x "$exe" ]; then
     echo "run_fuzzers: $exe is not built" >&2
-    failed=1
-    continue
+    printf '| %s | - | - | - | - | - | FAILED (not built) |\n' "$name" > "$row"
+    return 1
   fi
-  work=$out/corpus/$name
+  local work=$out/corpus/$name
   mkdir -p "$work"
-  dirs=("$work" "$root/tests/fuzz/corpus/$name")
+  local dirs=("$work" "$root/tests/fuzz/corpus/$name")
   [ -d "$root/tests/fuzz/regressions/$name" ] && dirs+=("$root/tests/fuzz/regressions/$name")
-  log=$out/logs/$name.log
+  local log=$out/logs/$name.log
   echo "run_fuzzers: $name (up to $runs runs, $max_seconds s)"
+  local start code seconds execs rss corpus result rate
   start=$(date +%s.%N)
   ASAN_OPTIONS=${ASAN_OPTIONS:-detect_leaks=1:allocator_may_return_null=0} \
   UBSAN_OPTIONS=${UBSAN_OPTIONS:-print_stacktrace=1:halt_on_error=1} \
@@ -66,14 +67,33 @@ for name in "${targets[@]}"; do
     result=ok
   else
     result="FAILED (exit $code; $log)"
-    failed=1
     grep -m3 -E "ERROR: |runtime error|fuzz check failed|SUMMARY" "$log" | sed 's/^/  /'
   fi
   rate=$(awk -v n="${execs:-0}" -v s="$seconds" 'BEGIN { printf "%.0f", (s > 0 ? n / s : 0) }')
   printf '| %s | %s | %.0f | %s | %s | %s | %s |\n' "$name" "${execs:-?}" "$seconds" "$rate" "$corpus" \
-    "${rss:-?}" "$result" >> "$report"
+    "${rss:-?}" "$result" > "$row"
   echo "  $name: ${execs:-?} executions in ${seconds%.*} s: $result"
+  [ "$code" -eq 0 ]
+}
+
+# FUZZ_JOBS targets at a time (each libFuzzer process is single-threaded).
+failed=0
+pids=()
+for name in "${targets[@]}"; do
+  while [ "$(jobs -rp | wc -l)" -ge "$jobs" ]; do wait -n || failed=1; done
+  run_one "$name" &
+  pids+=($!)
 done
+while [ "$(jobs -rp | wc -l)" -gt 0 ]; do wait -n || failed=1; done
+for pid in "${pids[@]}"; do wait "$pid" 2>/dev/null || true; done
+
+report=$out/report.md
+{
+  echo "| target | executions | seconds | exec/s | corpus | peak RSS MB | result |"
+  echo "|---|---:|---:|---:|---:|---:|---|"
+  cat "$out"/rows/*.md
+} > "$report"
+grep -q FAILED "$report" && failed=1
 echo "run_fuzzers: report in $report"
 cat "$report"
 exit $failed

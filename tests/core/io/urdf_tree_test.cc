@@ -86,20 +86,28 @@ TEST(UrdfTreeTest, ALinkWithTwoParentsIsAnError) {
 }
 
 TEST(UrdfTreeTest, ACycleIsAnError) {
-  // b -> c -> b beside the root a: b has the parents a and c.
+  // b -> c -> b beside the root a: b has the parents a and c. Cycles are found in the XML,
+  // before urdfdom builds a tree it would not free (core/io/urdf_joint_cycles.h).
   ExpectNotATree(Robot(Links({"a", "b", "c"}) + Joint("j1", "a", "b") + Joint("j2", "b", "c") +
                        Joint("j3", "c", "b")),
-                 "joint[j3].child", {"'b'", "'j1'"});
+                 "joint[j3].child", {"'j2' -> 'j3'", "cycle"});
   // A cycle that hangs off nothing: a is the only root, b and c form a loop of their own.
   ExpectNotATree(Robot(Links({"a", "b", "c", "d"}) + Joint("j1", "a", "d") +
                        Joint("j2", "b", "c") + Joint("j3", "c", "b")),
-                 "link[b]", {"'a'", "'j2'", "'j3'", "cycle"});
-  // A cycle through every link (no root at all): urdfdom's own error.
+                 "joint[j3].child", {"'j2' -> 'j3'", "cycle"});
+  // A cycle through every link (no root at all).
   ExpectNotATree(Robot(Links({"a", "b"}) + Joint("j1", "a", "b") + Joint("j2", "b", "a")),
-                 "robot", {"root"});
+                 "joint[j2].child", {"'j1' -> 'j2'", "cycle"});
   // A joint whose parent is its child.
   ExpectNotATree(Robot(Links({"a", "b"}) + Joint("j1", "a", "b") + Joint("j2", "b", "b")),
-                 "joint[j2].child", {"'b'", "own parent"});
+                 "joint[j2].child", {"'j2'", "cycle"});
+  // The same as the only parent of b (the robot_model fuzz target's leak): a two-link cycle of
+  // its own, and two roots beside a cycle (urdfdom's "two roots" after building it).
+  ExpectNotATree(Robot(Links({"a", "b", "c"}) + Joint("j1", "a", "c") + Joint("j2", "b", "b")),
+                 "joint[j2].child", {"'j2'", "cycle"});
+  ExpectNotATree(Robot(Links({"a", "b", "c", "d", "e"}) + Joint("j1", "a", "e") + Joint("j2", "c", "d") +
+                       Joint("j3", "d", "c")),
+                 "joint[j3].child", {"'j2' -> 'j3'", "cycle"});
 }
 
 TEST(UrdfTreeTest, SeveralRootsMissingLinksAndDuplicatesAreErrors) {

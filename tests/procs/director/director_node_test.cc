@@ -6,6 +6,8 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
 #include <vector>
 
 #include "core/io/robot_loader.h"
@@ -54,9 +56,16 @@ class DirectorNodeTest : public testing::Test {
     state.pose.x_m = p0.x() + sample.s_m;
     state.pose.y_m = 0.0;
     state.velocity.v_mps = speed_mps;
-    node->OnRobotState(state);
+    // The robot jumps between calls: a short stream (1 ms apart) that the node's continuity
+    // gate takes as a new anchor.
+    for (int k = 0; k < StateContinuityGateOptions{}.reanchor_after; ++k) {
+      state.utime = std::max(At(t_s), last_state_utime_ + 1000);
+      last_state_utime_ = state.utime;
+      node->OnRobotState(state);
+    }
     x_robot_m_ = state.pose.x_m;
   }
+  std::int64_t last_state_utime_ = 0;
   static std::int64_t At(double t_s) { return kT0 + static_cast<std::int64_t>(t_s * 1e6); }
 
   RobotModel model_ = LoadRobotModel(std::string(TOPAY_SOURCE_DIR) + "/config/robot/topay_mm.urdf",

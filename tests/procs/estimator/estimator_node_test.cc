@@ -145,6 +145,7 @@ TEST(EstimatorNode, BadInputIsCountedPerKindAndChangesNothing) {
   malformed.position_rad.pop_back();
   node.OnJoints(malformed, now);
   node.OnJoints(JointMessage(kT0 - kMs, 0.5), now);               // older than the last one
+  node.OnJoints(JointMessage(now, 1.5), now);                     // 1.5 rad in 2 ms: a jump
   node.OnGripper(GripperMessage(now, 2.0), now);
   EXPECT_EQ(Fault(node, InputFault::kPoseNotFinite), 2);
   EXPECT_EQ(Fault(node, InputFault::kPoseFuture), 1);
@@ -155,8 +156,9 @@ TEST(EstimatorNode, BadInputIsCountedPerKindAndChangesNothing) {
   EXPECT_EQ(Fault(node, InputFault::kJointsCount), 1);
   EXPECT_EQ(Fault(node, InputFault::kJointsMalformed), 1);
   EXPECT_EQ(Fault(node, InputFault::kJointsOutOfOrder), 1);
+  EXPECT_EQ(Fault(node, InputFault::kJointsJump), 1);
   EXPECT_EQ(Fault(node, InputFault::kGripperRange), 1);
-  EXPECT_EQ(node.counts().total_faults(), 11);
+  EXPECT_EQ(node.counts().total_faults(), 12);
   const robot_state_t* after = node.Step(kT0 + kMs + 1);
   ASSERT_NE(after, nullptr);
   EXPECT_NEAR(after->pose.x_m, before.pose.x_m, 1e-9);
@@ -164,7 +166,7 @@ TEST(EstimatorNode, BadInputIsCountedPerKindAndChangesNothing) {
   EXPECT_EQ(after->joints.position_rad, before.joints.position_rad);
   EXPECT_TRUE(std::isnan(after->gripper));
   EXPECT_NE(node.Report().find("2 BASE_POSE not finite"), std::string::npos) << node.Report();
-  EXPECT_NE(node.StatusLine(now).find("11 bad inputs"), std::string::npos) << node.StatusLine(now);
+  EXPECT_NE(node.StatusLine(now).find("12 bad inputs"), std::string::npos) << node.StatusLine(now);
 }
 
 // A delayed pose (stamped before the odometry already taken) is applied at its time.

@@ -4,6 +4,8 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
 #include <string>
 #include <vector>
 
@@ -59,13 +61,21 @@ class MissionNodeTest : public testing::Test {
     outputs.status = [this](const mission_status_t& m) { statuses_.push_back(m); };
     node_ = std::make_unique<MissionNode>(mission, kinematics_, options_, outputs, kFirstGoalId);
   }
+  // The robot at `state` at t_s. It moves between calls by jumps, so each call is a short
+  // stream (kStreamLength states 1 ms apart, ending at t_s) that the node's continuity gate
+  // takes as a new anchor.
   void Robot(const WholeBodyState& state, double t_s) {
+    constexpr int kStreamLength = StateContinuityGateOptions{}.reanchor_after;
     msgs::RobotStateEstimate estimate;
-    estimate.utime = At(t_s);
     estimate.state = state;
     estimate.qdot_radps = Eigen::VectorXd::Zero(state.num_joints());
-    node_->OnRobotState(msgs::ToMessage(estimate), At(t_s));
+    for (int k = kStreamLength - 1; k >= 0; --k) {
+      estimate.utime = std::max(At(t_s) - 1000 * k, last_state_utime_ + 1);
+      last_state_utime_ = estimate.utime;
+      node_->OnRobotState(msgs::ToMessage(estimate), At(t_s));
+    }
   }
+  std::int64_t last_state_utime_ = 0;
   void Planner(std::int64_t goal_id, std::int8_t state, double t_s, const std::string& detail = "",
                const std::string& reason = "") {
     planner_status_t m{};

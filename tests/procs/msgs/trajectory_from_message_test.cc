@@ -122,6 +122,21 @@ TEST(TrajectoryFromMessage, RejectsCoefficientsTooLargeToEvaluate) {
   EXPECT_EQ(RelativeCoefficientError(poly, poly.coefficients), std::numeric_limits<double>::infinity());
 }
 
+// Found by tests/fuzz/trajectory_message_fuzz.cc (regressions/trajectory_message/): with a
+// 9e-20 s or a 135,001 s piece an accepted trajectory, sent again, no longer re-solved to itself.
+TEST(TrajectoryFromMessage, RejectsPiecesOutsideTheDurationBounds) {
+  PolyTrajectory poly = MakePoly(Eigen::Vector2d::Zero());
+  poly.durations_s(2) = 9e-20;
+  std::string error;
+  EXPECT_FALSE(ToArcYaw(poly, {}, &error));
+  EXPECT_NE(error.find("trajectory 12 (goal 3): piece 2 lasts 9e-20 s, not in [0.001, 100] s"), std::string::npos)
+      << error;
+  poly = MakePoly(Eigen::Vector2d::Zero());
+  poly.durations_s(1) = 135001.0;
+  EXPECT_FALSE(ToArcYaw(poly, {}, &error));
+  EXPECT_NE(error.find("piece 1 lasts 135001 s"), std::string::npos) << error;
+}
+
 TEST(TrajectoryFromMessage, ToleratesRoundingButNotMore) {
   PolyTrajectory poly = MakePoly(Eigen::Vector2d::Zero());
   poly.coefficients *= 1.0 + 1e-13;  // a scaled MINCO solution is one (the problem is linear)

@@ -132,6 +132,25 @@ TEST(WheelControllerNodeTest, WheelSpeedsAndOdometryFollowThePlant) {
   }
 }
 
+// Found by the motorsim_inputs fuzz target: a plant velocity that overflows the wheel angle
+// (-inf) was cast to an integer tick count (undefined behaviour). Such a step leaves the angles
+// as they were; the encoder counts stay decodable and go on from there.
+TEST(WheelControllerNodeTest, ABrokenPlantVelocityLeavesTheWheelAnglesAsTheyWere) {
+  WheelControllerNode node({}, 0.0);
+  std::vector<can::CanFrame> out;
+  for (int k = 0; k <= 20; ++k) node.Step(k * 0.005, base::UnicycleVelocity{0.4, 0.0}, &out);
+  const auto before = base::DecodeOdometry(OfKind(out, base::BaseFrameKind::kOdometry).back(), kNode, std::nullopt, nullptr);
+  out.clear();
+  node.Step(0.105, base::UnicycleVelocity{-1e308, 0.0}, &out);
+  node.Step(0.110, base::UnicycleVelocity{0.0, 0.0}, &out);
+  const std::vector<can::CanFrame> odometry = OfKind(out, base::BaseFrameKind::kOdometry);
+  ASSERT_FALSE(odometry.empty());
+  const auto after = base::DecodeOdometry(odometry.back(), kNode, std::nullopt, nullptr);
+  ASSERT_TRUE(before && after);
+  EXPECT_EQ(after->left_ticks, before->left_ticks);
+  EXPECT_EQ(after->right_ticks, before->right_ticks);
+}
+
 TEST(WheelControllerNodeTest, MalformedFramesAreRefusedAndCounted) {
   WheelControllerNode node({}, 0.0);
   node.OnFrame(Request(base::ModeRequest::kCanCommand), 0.0);
