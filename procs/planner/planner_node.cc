@@ -168,7 +168,9 @@ void PlannerNode::OnRobotState(const robot_state_t& msg) {
     if (robot_intake_.LogRefusal()) spdlog::warn("ROBOT_STATE ignored (#{}): {}", robot_intake_.refused(), error);
     return;
   }
-  if (robot_intake_.last_verdict() == ContinuityVerdict::kReanchored) spdlog::warn("ROBOT_STATE: {}", robot_intake_.gate_reason());
+  if (robot_intake_.last_verdict() == ContinuityVerdict::kReanchored) {
+    spdlog::warn("ROBOT_STATE: {}", robot_intake_.gate_reason());
+  }
   robot_ = std::move(robot);
   if (!active_ || active_->stopping || active_->EndedBy(robot_->utime) || !goal_ || goal_->done) return;
   if (robot_->state.num_joints() != active_->trajectory->num_joints()) return;

@@ -16,6 +16,21 @@ namespace {
 
 constexpr std::size_t kMaxCheckpointBytes = 1 << 16;
 
+PlantCheckpoint Fields(const JsonFieldReader& reader, const nlohmann::json& j) {
+  reader.RequireObject(j, "");
+  reader.RequireKnownKeys(j, "", {"utime", "x_m", "y_m", "yaw_rad", "q_rad", "gripper"});
+  PlantCheckpoint c;
+  c.utime = static_cast<std::int64_t>(reader.Unsigned(reader.Member(j, "", "utime"), "utime"));
+  c.x_m = reader.Number(reader.Member(j, "", "x_m"), "x_m");
+  c.y_m = reader.Number(reader.Member(j, "", "y_m"), "y_m");
+  c.yaw_rad = reader.Number(reader.Member(j, "", "yaw_rad"), "yaw_rad");
+  const Eigen::VectorXd q = reader.NumberArray(reader.Member(j, "", "q_rad"), "q_rad", -1);
+  c.q_rad.assign(q.data(), q.data() + q.size());
+  c.gripper = reader.Number(reader.Member(j, "", "gripper"), "gripper");
+  if (c.gripper < 0.0 || c.gripper > 1.0) reader.Fail("gripper", "must be in [0, 1]");
+  return c;
+}
+
 }  // namespace
 
 PlantCheckpoint CheckpointOf(const sim::PlantState& truth, std::int64_t utime) {
@@ -39,25 +54,6 @@ std::string FormatPlantCheckpoint(const PlantCheckpoint& c) {
   j["gripper"] = c.gripper;
   return j.dump() + "\n";
 }
-
-namespace {
-
-PlantCheckpoint Fields(const JsonFieldReader& reader, const nlohmann::json& j) {
-  reader.RequireObject(j, "");
-  reader.RequireKnownKeys(j, "", {"utime", "x_m", "y_m", "yaw_rad", "q_rad", "gripper"});
-  PlantCheckpoint c;
-  c.utime = static_cast<std::int64_t>(reader.Unsigned(reader.Member(j, "", "utime"), "utime"));
-  c.x_m = reader.Number(reader.Member(j, "", "x_m"), "x_m");
-  c.y_m = reader.Number(reader.Member(j, "", "y_m"), "y_m");
-  c.yaw_rad = reader.Number(reader.Member(j, "", "yaw_rad"), "yaw_rad");
-  const Eigen::VectorXd q = reader.NumberArray(reader.Member(j, "", "q_rad"), "q_rad", -1);
-  c.q_rad.assign(q.data(), q.data() + q.size());
-  c.gripper = reader.Number(reader.Member(j, "", "gripper"), "gripper");
-  if (c.gripper < 0.0 || c.gripper > 1.0) reader.Fail("gripper", "must be in [0, 1]");
-  return c;
-}
-
-}  // namespace
 
 PlantCheckpoint ParsePlantCheckpoint(const std::string& text, const std::string& source) {
   const JsonFieldReader reader(source);

@@ -42,7 +42,10 @@ bool AtRest(const ControlCommand& c, double tolerance) {
 }  // namespace
 
 TrackerNode::TrackerNode(const TrackerOptions& options, const TrackerLimits& limits)
-    : options_(options), num_joints_(limits.num_joints()), tracker_(options.nmpc, limits), state_intake_(num_joints_) {
+    : options_(options),
+      num_joints_(limits.num_joints()),
+      tracker_(options.nmpc, limits),
+      state_intake_(num_joints_) {
   solve_ms_.reserve(1 << 16);
   cycle_.command.num_joints = num_joints_;
   cycle_.command.qdot_radps.assign(num_joints_, 0.0);
