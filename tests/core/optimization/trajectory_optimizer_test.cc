@@ -200,13 +200,17 @@ TEST_F(TrajectoryOptimizerTest, UnreachableGoalIsNotConvergedWithAReason) {
   TrajectoryProblem problem = Problem(start, start);
   problem.X_WE_goal.translation() = Eigen::Vector3d(4.55, -1.6, 0.6);  // 5 cm from the face
   const WholeBodyPath path = StraightPath(start, MakeState(4.3, -1.0, -0.5, ReadyJoints()));
-  const BackEndSummary summary = optimizer_.Optimize(problem, path);
+  TrajectoryOptimizerOptions options;
+  options.time_limit_s = 60.0;  // it must end by its escalation count, however slow the build
+  const TrajectoryOptimizer optimizer(*world_->kinematics, world_->base_field(),
+                                      world_->arm_field(), options);
+  const BackEndSummary summary = optimizer.Optimize(problem, path);
   std::printf("%s", summary.Report().c_str());
   EXPECT_EQ(summary.status, BackEndStatus::kNotConverged);
   EXPECT_NE(summary.reason.find("arm clearance short by"), std::string::npos) << summary.reason;
   // Infeasible after the ALM: the violated terms' weights were raised as often as allowed.
   // (So it ended by the escalation count, not by its time limit.)
-  EXPECT_EQ(summary.penalty_escalations, optimizer_.options().max_penalty_escalations);
+  EXPECT_EQ(summary.penalty_escalations, optimizer.options().max_penalty_escalations);
 }
 
 TEST_F(TrajectoryOptimizerTest, AlreadyCancelledReturnsAtOnce) {
@@ -371,7 +375,10 @@ TEST(TrajectoryOptimizerRandomTest, EndEffectorConvergesOnRandomFreeSpaceTasks) 
   const char* env = std::getenv("TOPAY_OPTIMIZER_TEST_TASKS");
   const int num_tasks = env ? std::atoi(env) : 100;
   const auto world = MakeWorld({});
-  const TrajectoryOptimizer optimizer(*world->kinematics, world->base_field(), world->arm_field());
+  TrajectoryOptimizerOptions options;
+  options.time_limit_s = 60.0;  // convergence is tested, not speed (2 s binds under sanitizers)
+  const TrajectoryOptimizer optimizer(*world->kinematics, world->base_field(), world->arm_field(),
+                                      options);
   const SceneClearanceChecker checker(*world->kinematics, world->scene);
   Rng rng(2024);
   const auto random_arm = [&](WholeBodyState* state) {

@@ -17,6 +17,7 @@
 #include "core/robot/kinematics.h"
 #include "core/trajectory/arc_yaw_sampling.h"
 #include "tests/common/make_box.h"
+#include "tests/common/sanitizer_build.h"
 
 namespace topay {
 namespace {
@@ -47,9 +48,10 @@ class WholeBodyPlannerTest : public ::testing::Test {
     BaseLimits limits;
     limits.omega_max_radps = 1.25;  // the paper's simulation benchmark
     options.base_limits = limits;
-    options.time_limit_s = 20.0;  // generous: the tests run in parallel on loaded cores
-    options.optimizer.time_limit_s = 10.0;
-    options.front_end.acquisition_budget_s = 5.0;
+    // Generous: the tests run in parallel on loaded cores (and slower in sanitizer builds).
+    options.time_limit_s = 20.0 * testing::kBuildSlowdown;
+    options.optimizer.time_limit_s = 10.0 * testing::kBuildSlowdown;
+    options.front_end.acquisition_budget_s = 5.0 * testing::kBuildSlowdown;
     return options;
   }
 

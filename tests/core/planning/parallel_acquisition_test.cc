@@ -8,6 +8,7 @@
 #include <limits>
 
 #include "tests/common/make_box.h"
+#include "tests/common/sanitizer_build.h"
 #include "tests/core/planning/rrt_test_world.h"
 
 namespace topay {
@@ -64,7 +65,8 @@ TEST(ParallelAcquisitionTest, WindowStartsAtTheFirstSolutionOfAnyJob) {
   ASSERT_FALSE(options.rrt.stop_at_first_solution);
   std::atomic<int> caller_calls{0};
   options.rrt.on_first_solution = [&caller_calls](double) { ++caller_calls; };
-  options.improvement_window_s = 0.03;
+  // Long enough for the other job to find its first solution too (slower in sanitizer builds).
+  options.improvement_window_s = 0.03 * testing::kBuildSlowdown;
   options.budget_s = std::numeric_limits<double>::infinity();
   options.num_workers = 2;
   const Clock::time_point t0 = Clock::now();

@@ -1,0 +1,38 @@
+#pragma once
+// What a test needs to know about the sanitizer builds (make test-asan, make test-tsan;
+// docs/reliability.md): their allocators replace glibc's, and everything runs slower, so a
+// wall-clock budget that a test sets for work whose outcome (not speed) it checks is scaled.
+
+namespace topay::testing {
+
+#if defined(__SANITIZE_ADDRESS__)
+inline constexpr bool kAddressSanitizerBuild = true;
+#elif defined(__has_feature)
+#if __has_feature(address_sanitizer)
+inline constexpr bool kAddressSanitizerBuild = true;
+#else
+inline constexpr bool kAddressSanitizerBuild = false;
+#endif
+#else
+inline constexpr bool kAddressSanitizerBuild = false;
+#endif
+
+#if defined(__SANITIZE_THREAD__)
+inline constexpr bool kThreadSanitizerBuild = true;
+#elif defined(__has_feature)
+#if __has_feature(thread_sanitizer)
+inline constexpr bool kThreadSanitizerBuild = true;
+#else
+inline constexpr bool kThreadSanitizerBuild = false;
+#endif
+#else
+inline constexpr bool kThreadSanitizerBuild = false;
+#endif
+
+/// How many times longer the same work takes than in the normal build (the planner's tests
+/// measured ~3-4x under ASan + UBSan; TSan is documented at 5-15x). Speed itself is measured
+/// in benchmarks, never in these builds.
+inline constexpr double kBuildSlowdown =
+    kThreadSanitizerBuild ? 10.0 : (kAddressSanitizerBuild ? 4.0 : 1.0);
+
+}  // namespace topay::testing
