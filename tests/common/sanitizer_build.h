@@ -5,29 +5,26 @@
 
 namespace topay::testing {
 
-#if defined(__SANITIZE_ADDRESS__)
-inline constexpr bool kAddressSanitizerBuild = true;
-#elif defined(__has_feature)
-#if __has_feature(address_sanitizer)
-inline constexpr bool kAddressSanitizerBuild = true;
+// g++ 12 names its sanitizers with __SANITIZE_*__ macros, clang with __has_feature.
+#if defined(__has_feature)
+#define TOPAY_TEST_HAS_FEATURE(feature) __has_feature(feature)
 #else
-inline constexpr bool kAddressSanitizerBuild = false;
+#define TOPAY_TEST_HAS_FEATURE(feature) 0
 #endif
+
+#if defined(__SANITIZE_ADDRESS__) || TOPAY_TEST_HAS_FEATURE(address_sanitizer)
+inline constexpr bool kAddressSanitizerBuild = true;
 #else
 inline constexpr bool kAddressSanitizerBuild = false;
 #endif
 
-#if defined(__SANITIZE_THREAD__)
-inline constexpr bool kThreadSanitizerBuild = true;
-#elif defined(__has_feature)
-#if __has_feature(thread_sanitizer)
+#if defined(__SANITIZE_THREAD__) || TOPAY_TEST_HAS_FEATURE(thread_sanitizer)
 inline constexpr bool kThreadSanitizerBuild = true;
 #else
 inline constexpr bool kThreadSanitizerBuild = false;
 #endif
-#else
-inline constexpr bool kThreadSanitizerBuild = false;
-#endif
+
+#undef TOPAY_TEST_HAS_FEATURE
 
 /// How many times longer the same work takes than in the normal build (the planner's tests
 /// measured ~3-4x under ASan + UBSan; TSan is documented at 5-15x). Speed itself is measured
