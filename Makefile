@@ -123,11 +123,14 @@ fuzz:
 # through CAN, again and again, with FAULT_RUNS episodes of every fault (kill -9 of each process,
 # CAN, LCM, hostile goals and payloads) injected during it; the table in out/faults/results.md.
 # Exits non-zero if any episode broke a rule (contact, no stop, late stop, crash, no recovery).
-# FAULTS picks some (comma-separated; `build/bin/topay-faults --list`). About 2 h for 20 runs.
-FAULT_RUNS ?= 20
-FAULTS     ?=
+# FAULTS picks some (comma-separated; `build/bin/topay-faults --list`). About 2 h for 20 runs;
+# an interrupted campaign (Ctrl-C keeps what it has) goes on with `make faults FAULTS_RESUME=1`.
+FAULT_RUNS    ?= 20
+FAULTS        ?=
+FAULTS_RESUME ?=
 faults: build
-	$(BUILD_DIR)/bin/topay-faults --runs $(FAULT_RUNS) --out out/faults $(if $(FAULTS),--faults $(FAULTS),)
+	$(BUILD_DIR)/bin/topay-faults --runs $(FAULT_RUNS) --out out/faults $(if $(FAULTS),--faults $(FAULTS),) \
+	  $(if $(FAULTS_RESUME),--resume,)
 
 # The fault-injection smoke (one mission: kill -9 of the tracker, a NaN goal, hostile payloads;
 # about 25 s; not in `make test`: docs/reliability.md).

@@ -121,13 +121,15 @@ CampaignResult RunFaultCampaign(const FaultCampaignOptions& options, std::ostrea
   GraphMonitor monitor(graph.lcm_url);
   FaultQueue queue(options.faults, options.runs);
   CampaignResult result;
+  result.episodes = options.earlier;
+  for (const EpisodeResult& e : options.earlier) queue.Count(e);
   const int max_missions = options.max_missions > 0
                                ? options.max_missions
                                : 2 * static_cast<int>(options.faults.size()) * options.runs;
   for (int k = 0; k < max_missions && !queue.Done() && !result.interrupted; ++k) {
     CampaignMission mission;
-    mission.index = k + 1;
-    mission.seed = options.seeds[static_cast<std::size_t>(k) % options.seeds.size()];
+    mission.index = options.first_mission + k;
+    mission.seed = options.seeds[static_cast<std::size_t>(mission.index - 1) % options.seeds.size()];
     mission.run_dir = fs::absolute(fs::path(options.out_dir) / fmt::format("mission-{}", mission.index)).string();
     fs::remove_all(mission.run_dir);
     fs::create_directories(mission.run_dir);
@@ -143,7 +145,7 @@ CampaignResult RunFaultCampaign(const FaultCampaignOptions& options, std::ostrea
     injector.lcm_port = LcmPort(graph.lcm_url);
     injector.work_dir = mission.run_dir;
     injector.graph_ancestor = getpid();
-    injector.seed = mission.seed * 1000 + static_cast<std::uint64_t>(k);
+    injector.seed = mission.seed * 1000 + static_cast<std::uint64_t>(mission.index - 1);
     ReadRoom(mission.run_dir + "/room.json", &injector);
     monitor.Reset();
     MissionEpisodes episodes(options, &queue, &monitor, mission.seed, injector, &result, progress);

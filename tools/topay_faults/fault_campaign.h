@@ -26,6 +26,8 @@ struct FaultCampaignOptions {
   double mission_timeout_s = 900.0;     ///< a graph still running after this long is stopped
   int episodes_per_mission = 8;         ///< then a fault that ends the mission (kill -9 of it), if one is due
   int max_missions = 0;                 ///< stop after this many missions (0: 2 x faults x runs)
+  std::vector<EpisodeResult> earlier;   ///< episodes of an earlier run (--resume): counted, not run again
+  int first_mission = 1;                ///< the first mission folder's number (after an earlier run's)
   FaultEpisodeOptions episode;
 };
 
@@ -39,12 +41,13 @@ struct CampaignMission {
 };
 
 struct CampaignResult {
-  std::vector<EpisodeResult> episodes;
+  std::vector<EpisodeResult> episodes;  ///< the earlier ones first, then this run's
   std::vector<CampaignMission> missions;
   bool interrupted = false;
 };
 
-/// Runs the campaign (call inside a private network namespace: the graph's bus is joined here).
+/// Runs the campaign (call inside a private network namespace: the graph's bus is joined here)
+/// until every fault has `runs` episodes, counting `earlier` ones.
 /// Progress lines go to `progress`; `stop_requested` is polled (true: the graph is stopped and
 /// the campaign ends with what it has). Throws std::runtime_error if the graph file cannot be read.
 CampaignResult RunFaultCampaign(const FaultCampaignOptions& options, std::ostream& progress,

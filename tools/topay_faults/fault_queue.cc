@@ -32,6 +32,11 @@ bool FaultQueue::Record(const EpisodeResult& result) {
   return true;
 }
 
+void FaultQueue::Count(const EpisodeResult& earlier) {
+  const auto it = remaining_.find(earlier.fault);
+  if (it != remaining_.end() && it->second > 0) --it->second;
+}
+
 bool FaultQueue::Done() const {
   for (const auto& [name, left] : remaining_) {
     if (left > 0) return false;

@@ -24,6 +24,9 @@ class FaultQueue {
   /// Books an episode's result: true if it is kept (injected, or given up after 3 refused
   /// injections); an episode that never came to its injection is owed again.
   bool Record(const EpisodeResult& result);
+  /// Books an episode kept by an earlier run of the campaign (`--resume`): one run fewer owed
+  /// for its fault (nothing for a fault not chosen now).
+  void Count(const EpisodeResult& earlier);
   bool Done() const;
   int Remaining(const std::string& fault) const;
 

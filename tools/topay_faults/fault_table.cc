@@ -77,11 +77,4 @@ std::string EpisodeTable(const std::vector<EpisodeResult>& episodes) {
   return table;
 }
 
-nlohmann::json ToJson(const EpisodeResult& e) {
-  return {{"fault", e.fault},         {"seed", e.seed},           {"injected", e.injected},
-          {"refused", e.refused},     {"notes", e.notes},         {"safe_ms", e.safe_ms},
-          {"safe_evidence", e.safe_evidence}, {"recovered", e.recovered}, {"recover_s", e.recover_s},
-          {"reaction", e.reaction},   {"other_restarts", e.other_restarts}, {"contacts", e.contacts}};
-}
-
 }  // namespace topay::tools

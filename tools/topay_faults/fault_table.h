@@ -2,12 +2,10 @@
 // The fault-injection report: per fault, how many episodes were injected, the safe reaction
 // seen most, the time to the safe state (median and max over the episodes that stopped), how
 // many recovered and how fast, restarts of other processes and ground-truth contacts; and the
-// episodes one by one. Markdown (docs/reliability.md) and JSON.
+// episodes one by one, in Markdown (docs/reliability.md; the JSON file: fault_results_file.h).
 
 #include <string>
 #include <vector>
-
-#include <nlohmann/json.hpp>
 
 #include "fault_catalog.h"
 #include "fault_episode.h"
@@ -19,7 +17,5 @@ std::string FaultSummaryTable(const std::vector<FaultSpec>& faults, const std::v
 
 /// Every episode: fault, seed, safe time, recovery, reaction.
 std::string EpisodeTable(const std::vector<EpisodeResult>& episodes);
-
-nlohmann::json ToJson(const EpisodeResult& episode);
 
 }  // namespace topay::tools

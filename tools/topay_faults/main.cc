@@ -6,6 +6,7 @@
 // deaths, ground-truth contacts.
 //   build/bin/topay-faults --runs 20 --out out/faults            # = make faults
 //   build/bin/topay-faults --faults kill-tracker,can-bus-off --runs 1
+//   build/bin/topay-faults --runs 20 --out out/faults --resume   # after an interruption (Ctrl-C)
 // <out>/results.md: the summary table and every episode; results.json; <out>/mission-<k>/: each
 // mission's room, graph.lcmlog and process logs.
 
@@ -16,6 +17,7 @@
 #include <fmt/format.h>
 
 #include "fault_campaign.h"
+#include "fault_results_file.h"
 #include "fault_table.h"
 #include "fault_verdict.h"
 #include "procs/runtime/net_namespace.h"
@@ -45,12 +47,9 @@ std::vector<std::string> SplitList(const std::string& text) {
 }
 
 bool WriteResults(const std::string& out_dir, const std::string& report, const CampaignResult& result) {
-  nlohmann::json episodes = nlohmann::json::array();
-  for (const EpisodeResult& e : result.episodes) episodes.push_back(ToJson(e));
-  std::ofstream md(out_dir + "/results.md"), json(out_dir + "/results.json");
+  std::ofstream md(out_dir + "/results.md");
   md << report;
-  json << nlohmann::json{{"episodes", episodes}}.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) << "\n";  // texts off the bus
-  return md.good() && json.good();
+  return md.good() && WriteEpisodes(out_dir + "/results.json", result.episodes);
 }
 
 }  // namespace
@@ -61,7 +60,7 @@ int main(int argc, char** argv) {
   options.bin_dir = fs::canonical("/proc/self/exe").parent_path().string();
   options.graph_file = ConfigDir(TOPAY_CONFIG_DIR) + "/graphs/demo.yaml";
   std::string faults, seeds = "1,5,7,8";
-  bool list = false;
+  bool list = false, resume = false;
   app.add_option("--faults", faults, "comma-separated faults (default: every one; --list shows them)");
   app.add_option("--runs", options.runs, "episodes per fault")->check(CLI::PositiveNumber)->capture_default_str();
   app.add_option("--seeds", seeds, "mission room seeds, cycled")->capture_default_str();
@@ -73,6 +72,9 @@ int main(int argc, char** argv) {
                  "episodes before a mission-ending fault is injected")->check(CLI::PositiveNumber)->capture_default_str();
   app.add_option("--max-missions", options.max_missions, "stop after this many missions (0: 2 x faults x runs)")
       ->check(CLI::NonNegativeNumber)->capture_default_str();
+  app.add_flag("--resume", resume,
+               "continue the campaign in --out: its results.json's episodes count, only the runs still owed are made, "
+               "new missions are numbered after the folders there");
   app.add_flag("--list", list, "list the faults and exit");
   app.footer("Exit codes: 0 every episode kept the rules, 1 file or configuration error, 2 usage error, 3 a rule was "
              "broken (results.md lists each), 4 interrupted, 5 no private network namespace (nothing run).");
@@ -96,6 +98,17 @@ int main(int argc, char** argv) {
     return kExitNoNamespace;
   }
   options.graph_file = fs::absolute(options.graph_file).string();
+  if (resume) {
+    try {
+      options.earlier = ReadEpisodes(options.out_dir + "/results.json");
+    } catch (const std::exception& e) {
+      std::cerr << "topay-faults: --resume: " << e.what() << "\n";
+      return kExitFileError;
+    }
+    options.first_mission = NextMissionIndex(options.out_dir);
+    std::cout << fmt::format("resuming: {} episodes from {}/results.json, missions from {}\n", options.earlier.size(),
+                             options.out_dir, options.first_mission);
+  }
   fs::create_directories(options.out_dir);
   BlockStopSignals();
   CampaignResult result;

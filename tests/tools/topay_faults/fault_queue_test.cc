@@ -61,5 +61,22 @@ TEST(FaultQueue, AnEpisodeThatNeverBeganIsOwedAgain) {
   EXPECT_EQ(queue.Next(0, 8)->name, "a");
 }
 
+TEST(FaultQueue, EpisodesOfAnEarlierRunCountTowardTheirFaultsRuns) {
+  FaultQueue queue({Fault("a"), Fault("b")}, 2);
+  queue.Count(Episode("a", true));
+  queue.Count(Episode("a", false, true));  // given up earlier: counted as kept
+  queue.Count(Episode("a", true));         // more than owed: nothing below zero
+  queue.Count(Episode("other", true));     // not chosen now
+  EXPECT_EQ(queue.Remaining("a"), 0);
+  EXPECT_EQ(queue.Remaining("b"), 2);
+  std::vector<std::string> order;
+  for (const FaultSpec* f = queue.Next(0, 8); f != nullptr; f = queue.Next(0, 8)) {
+    order.push_back(f->name);
+    queue.Record(Episode(f->name, true));
+  }
+  EXPECT_EQ(order, (std::vector<std::string>{"b", "b"}));
+  EXPECT_TRUE(queue.Done());
+}
+
 }  // namespace
 }  // namespace topay::tools
