@@ -20,6 +20,7 @@ build: deps
 
 # RelWithDebInfo (-O2 -g, assertions on): what the tests run.
 build-test: deps
+	@tools/check-disk-space.sh $(TEST_BUILD_DIR) 16
 	@cmake -S . -B $(TEST_BUILD_DIR) -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo \
 	  -DTOPAY_BUILD_BENCHMARKS=OFF >/dev/null
 	@cmake --build $(TEST_BUILD_DIR) -j $(JOBS)
