@@ -18,6 +18,11 @@
 namespace topay::planner {
 namespace {
 
+// After the tracker's release a plan waits this long at most for the robot to come to rest (it
+// brakes from at most 1 m/s within about 1 s); then a robot still moving is planned from a
+// moving start as before.
+constexpr double kRestAfterHoldWaitS = 3.0;
+
 std::int64_t Micros(double seconds) { return static_cast<std::int64_t>(std::llround(seconds * 1e6)); }
 
 bool AtRest(const TrajectorySample& s, double rest_speed) {
@@ -217,8 +222,9 @@ void PlannerNode::OnTrackerStatus(const tracker_status_t& msg) {
   if (held == held_) return;
   held_ = held;
   if (held) return Hold(msg);
-  spdlog::info("tracker released: the drives run again");
-  RequestPlan(PlanTrigger::kResume, "the drives run again");
+  spdlog::info("tracker released: the robot may move again");
+  rest_after_hold_until_utime_ = clock_.Now() + Micros(kRestAfterHoldWaitS);
+  RequestPlan(PlanTrigger::kResume, "the tracker released the robot");
 }
 
 void PlannerNode::AbandonPlans() {
@@ -229,14 +235,15 @@ void PlannerNode::AbandonPlans() {
 }
 
 void PlannerNode::Hold(const tracker_status_t& msg) {
-  spdlog::warn("tracker HELD at {:.3f} s: the drives are stopped and every trajectory was dropped{}",
+  spdlog::warn("tracker HELD at {:.3f} s: the robot is held at rest (drives stopped, or a stale robot state) and "
+               "every trajectory was dropped{}",
                1e-6 * static_cast<double>(msg.utime), active_ ? fmt::format(" (was on {})", active_->trajectory_id) : "");
   AbandonPlans();
   active_.reset();
   replaced_.clear();
   ClearPredictedCollision();
   if (goal_ && !goal_->done) {
-    PublishStatus(planner_status_t::PLANNING, "", "waiting: the drives are stopped (tracker HELD)");
+    PublishStatus(planner_status_t::PLANNING, "", "waiting: the robot is held at rest (tracker HELD)");
   }
 }
 
@@ -319,6 +326,14 @@ bool PlannerNode::FillStart(PlanTrigger trigger, std::int64_t now, PlanJob* job,
     return false;
   }
   job->start = StartFromEstimate(*robot_);
+  if (!AtRest(job->start, t.rest_speed) && now < rest_after_hold_until_utime_) {
+    // Released after a hold: the tracker commands zero and the robot is still braking. A moving
+    // start extrapolated at its measured rates ran 0.35 m ahead of where it stopped, and the
+    // drift replans that followed took the base into a box (fault campaign 2026-12-05): wait
+    // (retried every timing.retry_period_s) and plan from rest.
+    *error = "the robot is coming to rest after the tracker's hold";
+    return false;
+  }
   if (!AtRest(job->start, t.rest_speed)) {
     // Moving off any trajectory of ours (a restart, one that ended): start at the measured
     // state extrapolated to t0 with its measured rates.
@@ -351,9 +366,9 @@ void PlannerNode::RequestPlan(PlanTrigger trigger, const std::string& reason, bo
   PlanJob job;
   std::string error;
   const std::int64_t now = clock_.Now();
-  if (held_ || map_stale_) {  // planned when the drives run again / the map is fresh (kResume)
+  if (held_ || map_stale_) {  // planned when the tracker is released / the map is fresh (kResume)
     PublishStatus(planner_status_t::PLANNING, "",
-                  held_ ? "waiting: the drives are stopped (tracker HELD)" : "waiting: the map is stale");
+                  held_ ? "waiting: the robot is held at rest (tracker HELD)" : "waiting: the map is stale");
     return;
   }
   if (!map_.has_map()) error = "no map yet (no MAP_UPDATE snapshot received)";  // e.g. a goal at start-up

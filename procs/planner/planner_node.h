@@ -9,9 +9,9 @@
 //      last one is not a new goal: a repeat is ignored, a different target under it refused),
 //  (e) the map is fresh again after it went stale (its newest scan older than
 //      map.stale_stop_s: the robot was stopped and no plan went out meanwhile),
-//  (d) the drives run again after the tracker was HELD (the CAN bridge stopped or faulted the
-//      robot and the tracker dropped every trajectory): while held it forgets its trajectories,
-//      cancels the plan in progress and waits; then it plans from rest where the robot stopped,
+//  (d) the tracker is released after it was HELD (the CAN bridge stopped or faulted the robot,
+//      or it came to rest on a stale robot state, and the tracker dropped every trajectory):
+//      while held it forgets its trajectories, cancels the plan in progress and waits; then it plans from rest where the robot stopped,
 // and, while the robot moves, a replan starts on the current trajectory at t0 = now + the
 // replanning budget and joins it there C2-continuously. If the trajectory ahead collides and
 // no new one comes before the robot must start braking, it publishes a stopping trajectory
@@ -178,6 +178,8 @@ class PlannerNode {
   std::optional<msgs::RobotStateEstimate> robot_;
   std::optional<tracker_status_t> tracker_;  // the last TRACKER_STATUS (heartbeat status line)
   bool held_ = false;                        // the last TRACKER_STATUS was HELD
+  // Until then, after the tracker's release, a plan waits for the robot at rest (see FillStart).
+  std::int64_t rest_after_hold_until_utime_ = 0;
   bool map_stale_ = false;                   // the map's newest scan is older than map.stale_stop_s
   // The last GOAL's id and content (GoalContent): ids are issued once; a repeat is ignored and
   // a different goal under the same id refused.

@@ -64,11 +64,11 @@ void TrackerNode::OnTrajectory(const poly_trajectory_t& msg, std::int64_t now_ut
       spdlog::warn("rejected TRAJECTORY {} (#{}): {}", msg.trajectory_id, counts_.trajectories_rejected, why);
     }
   };
-  if (held_) {
+  if (held()) {
     ++counts_.trajectories_dropped_held;
     if (Every(counts_.trajectories_dropped_held)) {
-      spdlog::warn("dropped TRAJECTORY {} (#{}): the drives are not running ({})", msg.trajectory_id,
-                   counts_.trajectories_dropped_held, hold_reason_);
+      spdlog::warn("dropped TRAJECTORY {} (#{}): {}", msg.trajectory_id, counts_.trajectories_dropped_held,
+                   held_ ? "the drives are not running (" + hold_reason_ + ")" : std::string("the robot state is stale"));
     }
     return;
   }
@@ -167,17 +167,28 @@ void TrackerNode::OnDriveStatus(const drive_status_t& msg) {
   if (held_) return;
   held_ = true;
   ++counts_.holds;
+  DropTrajectories(fmt::format("drives not running ({})", hold_reason_).c_str());
+}
+
+void TrackerNode::DropTrajectories(const char* why) {
   const std::int64_t dropped = (active_ ? 1 : 0) + static_cast<std::int64_t>(pending_.size());
   counts_.trajectories_dropped_held += dropped;
-  spdlog::warn("drives not running ({}): holding the robot at zero, {} trajectories dropped (active {})",
-               hold_reason_, dropped, active_id());
+  spdlog::warn("{}: holding the robot at zero, {} trajectories dropped (active {})", why, dropped, active_id());
   active_.reset();
   pending_.clear();
 }
 
+bool TrackerNode::StateFresh(std::int64_t now_utime) const {
+  return state_ && static_cast<double>(now_utime - state_->utime) * 1e-6 <= options_.nmpc.stale_state_s;
+}
+
 const TrackerCycle& TrackerNode::Step(std::int64_t now_utime) {
   ++counts_.cycles;
-  if (held_) {
+  if (stale_held_ && StateFresh(now_utime)) {
+    stale_held_ = false;
+    spdlog::info("robot state fresh again: tracker released (at rest, waiting for a trajectory)");
+  }
+  if (held()) {
     FillHeld(now_utime);
     tracker_.Halt();  // the drives are at rest: no command to ramp down from on release
     return cycle_;
@@ -204,6 +215,11 @@ const TrackerCycle& TrackerNode::Step(std::int64_t now_utime) {
   if (out.mode != last_mode_ && out.mode == TrackerMode::kStopStaleState && active_) {
     ++counts_.stops_stale;
     spdlog::warn("robot state {}: stopping", state_ ? "stale" : "missing");
+  }
+  if (out.mode == TrackerMode::kStopStaleState && active_ && state_ && AtRest(out.command, options_.rest_command)) {
+    ++counts_.stale_holds;
+    stale_held_ = true;
+    DropTrajectories("at rest on a stale robot state");
   }
   if (last_mode_ == TrackerMode::kStopStaleState && out.mode == TrackerMode::kTrack) {
     spdlog::info("robot state fresh again: tracking trajectory {}", out.trajectory_id);
@@ -265,11 +281,14 @@ void TrackerNode::FillHeld(std::int64_t now_utime) {
 }
 
 std::int8_t TrackerNode::Health() const {
-  return held_ || (last_mode_ == TrackerMode::kStopStaleState && active_) ? heartbeat_t::WARN : heartbeat_t::OK;
+  return held() || (last_mode_ == TrackerMode::kStopStaleState && active_) ? heartbeat_t::WARN : heartbeat_t::OK;
 }
 
 std::string TrackerNode::StatusLine() const {
-  if (held_) return fmt::format("held: {}, {} trajectories dropped", hold_reason_, counts_.trajectories_dropped_held);
+  if (held()) {
+    return fmt::format("held: {}, {} trajectories dropped", held_ ? hold_reason_ : "robot state stale",
+                       counts_.trajectories_dropped_held);
+  }
   return fmt::format("{} trajectory {} (pending {}), {} solves, {} fallbacks, {} rejected", TrackerModeName(last_mode_),
                      active_id(), pending_id(), counts_.solves,
                      tracker_.solver().summary().num_over_budget + tracker_.solver().summary().num_failed,
@@ -282,15 +301,15 @@ std::string TrackerNode::Report() const {
   return fmt::format(
       "topay-tracker: {} cycles, {} solves (median {:.3f} ms, p99 {:.3f} ms, max {:.3f} ms), fallbacks {} "
       "({} over budget, {} failed)\n"
-      "  stops: {} stale state, {} trajectory ended; held {} times (drives not running), {} trajectories "
-      "dropped held\n"
+      "  stops: {} stale state, {} trajectory ended; held {} times (drives not running), {} times (at rest on a "
+      "stale state), {} trajectories dropped held\n"
       "  trajectories: {} received, {} became active, {} rejected, {} ignored (not newer), {} pending superseded\n"
       "  robot states: {} ({} rejected: {}); gripper commands: {} ({} rejected)\n",
       c.cycles, c.solves, solve_ms_.empty() ? 0.0 : Median(solve_ms_),
       solve_ms_.empty() ? 0.0 : NearestRankQuantile(solve_ms_, 0.99),
       solve_ms_.empty() ? 0.0 : *std::max_element(solve_ms_.begin(), solve_ms_.end()),
       summary.num_over_budget + summary.num_failed, summary.num_over_budget, summary.num_failed, c.stops_stale,
-      c.stops_ended, c.holds, c.trajectories_dropped_held, c.trajectories, c.switches, c.trajectories_rejected, c.trajectories_ignored, c.pending_superseded,
+      c.stops_ended, c.holds, c.stale_holds, c.trajectories_dropped_held, c.trajectories, c.switches, c.trajectories_rejected, c.trajectories_ignored, c.pending_superseded,
       c.states, c.states_rejected, state_intake_.Report(), c.grippers, c.grippers_rejected);
 }
 

@@ -20,7 +20,14 @@
 // commands exact zeros (the bridge's condition for running again) and drops every TRAJECTORY
 // that comes meanwhile; its status is HELD. When the bridge is RUNNING again the tracker is IDLE
 // at rest, and the planner, which saw HELD, plans anew from where the robot stopped. Without a
-// bridge (no DRIVE_STATUS, e.g. the kinematic simulator) it is never held. docs/tracker.md.
+// bridge (no DRIVE_STATUS, e.g. the kinematic simulator) it is never held.
+//
+// Stopped on a stale state: once the stop on a state gone stale has brought the command to
+// rest, the trajectory is dropped and the tracker is HELD the same way until a fresh state
+// comes; it is then IDLE at rest and the planner plans anew from there. Resuming the old
+// trajectory instead chased a reference that had run on (by the length of the gap) from a state
+// that may have jumped meanwhile (localisation back after 8 s lost: 1.7 m), through whatever was
+// in between (fault campaign 2026-12-05: the base 0.16 m into a box). docs/tracker.md.
 
 #include <cstdint>
 #include <deque>
@@ -62,6 +69,7 @@ struct TrackerCounts {
   std::int64_t stops_ended = 0;  ///< trajectories whose end was reached (stop after the settle)
   std::int64_t holds = 0;        ///< times a DRIVE_STATUS not RUNNING held the tracker
   std::int64_t trajectories_dropped_held = 0;  ///< active, pending or arriving ones dropped while held
+  std::int64_t stale_holds = 0;  ///< times the robot came to rest on a stale state (trajectory dropped, held)
 };
 
 /// One cycle's messages.
@@ -89,8 +97,9 @@ class TrackerNode {
   /// The active trajectory's id (0: none) and the next pending one's (0: none).
   std::int64_t active_id() const { return active_ ? active_->id : 0; }
   std::int64_t pending_id() const { return pending_.empty() ? 0 : pending_.front().id; }
-  /// True while the drives are not running (the last DRIVE_STATUS was not RUNNING).
-  bool held() const { return held_; }
+  /// True while the drives are not running (the last DRIVE_STATUS was not RUNNING) or the
+  /// robot, stopped on a stale state, waits for a fresh one.
+  bool held() const { return held_ || stale_held_; }
   /// heartbeat_t::WARN while held or stopping on a stale or missing robot state with a
   /// trajectory, else OK; and the heartbeat's status line (mode, ids, solves, fallbacks, rejected messages).
   std::int8_t Health() const;
@@ -110,6 +119,8 @@ class TrackerNode {
   void Activate(Loaded loaded);
   void Fill(const TrackerOutput& out, std::int64_t now_utime);
   void FillHeld(std::int64_t now_utime);
+  void DropTrajectories(const char* why);
+  bool StateFresh(std::int64_t now_utime) const;
 
   TrackerOptions options_;
   int num_joints_;
@@ -124,6 +135,7 @@ class TrackerNode {
   TrackerMode last_mode_ = TrackerMode::kStopNoReference;
   bool held_ = false;
   std::string hold_reason_;  // the bridge's state and stop reason while held
+  bool stale_held_ = false;  // at rest after a stale-state stop, until a fresh state
   std::vector<double> solve_ms_;
   TrackerCycle cycle_;
   TrackerCounts counts_;

@@ -105,6 +105,7 @@ class PlannerProcess : public testing::Test {
         msgs::RobotStateEstimate robot;
         robot.utime = procs::NowUtime();
         robot.state = start_;
+        robot.v_mps = v_mps_;
         robot.qdot_radps = Eigen::VectorXd::Zero(7);
         const robot_state_t msg = msgs::ToMessage(robot);
         watcher_->lcm().publish(std::string(channels::ROBOT_STATE), &msg);
@@ -173,6 +174,7 @@ class PlannerProcess : public testing::Test {
                                      TOPAY_SOURCE_DIR "/config/robot/topay_mm.yaml");
   Kinematics kinematics_{model_};
   WholeBodyState start_ = BentArmState(-2.5, -2.5, 0.0);
+  double v_mps_ = 0.0;  // the published robot state's forward speed
   std::vector<OrientedBox> boxes_;
   std::string dir_;
   pid_t planner_ = -1;
@@ -200,8 +202,8 @@ TEST_F(PlannerProcess, AGoalGetsATrajectoryWithItsIdStartingAtTheRobot) {
 
 // The CAN bridge stops the drives (a lost heartbeat, bus-off) and the tracker, HELD, drops every
 // trajectory: the planner forgets them and waits, saying so; a goal meanwhile waits too; when
-// the tracker is released it plans the goal from rest where the robot stopped (not from where
-// the dropped trajectory would have led).
+// the tracker is released it waits for the robot at rest and plans the goal from rest where the
+// robot stopped (not from where the dropped trajectory, or its braking, would have led).
 TEST_F(PlannerProcess, AHeldTrackerMakesItWaitAndPlanFromRestWhereTheRobotStopped) {
   Send(ReachableGoal(21));
   ASSERT_TRUE(SpinWithRobot([&] { return !out_.trajectories.empty(); }, 60.0)) << ReadText(dir_ + "/planner.txt");
@@ -217,7 +219,7 @@ TEST_F(PlannerProcess, AHeldTrackerMakesItWaitAndPlanFromRestWhereTheRobotStoppe
   start_.yaw_rad += 0.2;
   const auto waiting = [&] {
     const planner_status_t* s = out_.Last(22, planner_status_t::PLANNING);
-    return s != nullptr && s->detail.find("waiting: the drives are stopped (tracker HELD)") != std::string::npos;
+    return s != nullptr && s->detail.find("waiting: the robot is held at rest (tracker HELD)") != std::string::npos;
   };
   Send(ReachableGoal(22));
   ASSERT_TRUE(SpinWithRobot(waiting, 10.0)) << ReadText(dir_ + "/planner.txt");
@@ -225,7 +227,17 @@ TEST_F(PlannerProcess, AHeldTrackerMakesItWaitAndPlanFromRestWhereTheRobotStoppe
   SpinWithRobot([&] { tracker(tracker_status_t::HELD); return false; }, 1.0);  // still held: no plan
   EXPECT_EQ(out_.trajectories.size(), before);
   EXPECT_EQ(out_.Last(22, planner_status_t::FAILED), nullptr);
-  tracker(tracker_status_t::IDLE);  // released: the drives run again
+  v_mps_ = 0.2;  // still braking when released: the plan waits for the robot at rest
+  SpinWithRobot([] { return false; }, 0.3);
+  tracker(tracker_status_t::IDLE);  // released
+  const auto braking = [&] {
+    const planner_status_t* s = out_.Last(22, planner_status_t::PLANNING);
+    return s != nullptr && s->detail.find("coming to rest after the tracker's hold") != std::string::npos;
+  };
+  ASSERT_TRUE(SpinWithRobot(braking, 10.0)) << ReadText(dir_ + "/planner.txt");
+  SpinWithRobot([] { return false; }, 1.0);
+  EXPECT_EQ(out_.trajectories.size(), before);
+  v_mps_ = 0.0;  // at rest
   ASSERT_TRUE(SpinWithRobot([&] { return out_.trajectories.size() > before; }, 60.0)) << ReadText(dir_ + "/planner.txt");
   const poly_trajectory_t& t = out_.trajectories.back();
   EXPECT_EQ(t.goal_id, 22);
@@ -236,7 +248,10 @@ TEST_F(PlannerProcess, AHeldTrackerMakesItWaitAndPlanFromRestWhereTheRobotStoppe
   EXPECT_NEAR(poly->p0_W_m.x(), start_.x_m, 1e-3);  // from rest at the robot
   EXPECT_NEAR(poly->p0_W_m.y(), start_.y_m, 1e-3);
   EXPECT_NEAR(poly->yaw0_rad, start_.yaw_rad, 1e-3);
-  EXPECT_NE(StopPlannerAndReadLog().find("resume: the drives run again"), std::string::npos);
+  const std::string log = StopPlannerAndReadLog();
+  EXPECT_NE(log.find("tracker released"), std::string::npos) << log;
+  EXPECT_NE(log.find("cannot plan yet: the robot is coming to rest after the tracker's hold"), std::string::npos) << log;
+  EXPECT_EQ(log.find("moving start"), std::string::npos) << log;
 }
 
 // Goal ids are issued once: a repeat of the goal in hand changes nothing, and another target

@@ -158,10 +158,16 @@ TEST(TrackerNode, StaleStateStopsWithinTheAccelerationLimits) {
   ASSERT_GT(v, 0.05);
   const std::int64_t last_state = now - kCycle;
   bool stopping = false;
+  int held_cycles = 0;
   for (int i = 0; i < 100; ++i, now += kCycle) {  // no more states
     const TrackerCycle& c = node.Step(now);
     const double age_s = static_cast<double>(now - last_state) * 1e-6;
-    if (age_s > 0.1 + 1e-9) {
+    if (c.status.state == tracker_status_t::HELD) {  // at rest: the trajectory dropped
+      EXPECT_TRUE(stopping);
+      EXPECT_EQ(c.command.v_mps, 0.0);
+      EXPECT_EQ(c.status.trajectory_id, 0);
+      ++held_cycles;
+    } else if (age_s > 0.1 + 1e-9) {
       EXPECT_EQ(c.status.state, tracker_status_t::STOPPING) << age_s;
       EXPECT_LE(std::abs(c.command.v_mps), std::abs(v) + 1e-12);
       EXPECT_GE(std::abs(c.command.v_mps), std::abs(v) - limits.base.a_max_mps2 * 0.02 - 1e-9);
@@ -172,9 +178,49 @@ TEST(TrackerNode, StaleStateStopsWithinTheAccelerationLimits) {
     v = c.command.v_mps;
   }
   EXPECT_TRUE(stopping);
+  EXPECT_GT(held_cycles, 50);
   EXPECT_EQ(v, 0.0);
   EXPECT_EQ(node.counts().stops_stale, 1);
+  EXPECT_EQ(node.counts().stale_holds, 1);
+  EXPECT_EQ(node.active_id(), 0);
+  EXPECT_TRUE(node.held());
   EXPECT_EQ(node.Health(), heartbeat_t::WARN);
+  EXPECT_NE(node.StatusLine().find("held: robot state stale"), std::string::npos) << node.StatusLine();
+}
+
+TEST(TrackerNode, AfterAStaleStopAFreshStateNeverResumesTheOldTrajectory) {
+  TrackerNode node(Options(), MakeTrackerLimits(Robot()));
+  node.OnTrajectory(Trajectory(1, kT0), kT0);
+  std::int64_t now = kT0;
+  for (; now <= kT0 + 800'000; now += kCycle) {
+    node.OnRobotState(StateMessage(Start(), now));
+    node.Step(now);
+  }
+  for (int i = 0; i < 100; ++i, now += kCycle) node.Step(now);  // 2 s without a state: stopped, held
+  ASSERT_TRUE(node.held());
+  node.OnTrajectory(Trajectory(2, now), now);  // planned before the planner saw HELD: dropped
+  EXPECT_EQ(node.active_id(), 0);
+  WholeBodyState moved = Start();  // the state comes back 1.7 m away (localisation re-anchored)
+  moved.x_m = 1.7;
+  int released = 0;
+  for (int i = 0; i < 20; ++i, now += kCycle) {  // held until the intake takes the jump (5 states)
+    node.OnRobotState(StateMessage(moved, now));
+    const TrackerCycle& c = node.Step(now);
+    EXPECT_EQ(c.command.v_mps, 0.0);
+    EXPECT_EQ(c.command.omega_radps, 0.0);
+    if (node.held()) {
+      EXPECT_EQ(released, 0);
+      EXPECT_EQ(c.status.state, tracker_status_t::HELD);
+      continue;
+    }
+    EXPECT_EQ(c.status.state, tracker_status_t::IDLE);  // released at rest: no trajectory to chase
+    ++released;
+  }
+  EXPECT_GE(released, 10);
+  node.OnTrajectory(Trajectory(3, now, moved), now);  // planned from where the robot is: followed
+  EXPECT_EQ(node.active_id(), 3);
+  node.OnRobotState(StateMessage(moved, now + kCycle));
+  EXPECT_EQ(node.Step(now + kCycle).status.state, tracker_status_t::TRACKING);
 }
 
 drive_status_t Drives(std::int8_t state, const std::string& reason = "") {
