@@ -167,10 +167,10 @@ void TrackerNode::OnDriveStatus(const drive_status_t& msg) {
   if (held_) return;
   held_ = true;
   ++counts_.holds;
-  DropTrajectories(fmt::format("drives not running ({})", hold_reason_).c_str());
+  DropTrajectories(fmt::format("drives not running ({})", hold_reason_));
 }
 
-void TrackerNode::DropTrajectories(const char* why) {
+void TrackerNode::DropTrajectories(std::string_view why) {
   const std::int64_t dropped = (active_ ? 1 : 0) + static_cast<std::int64_t>(pending_.size());
   counts_.trajectories_dropped_held += dropped;
   spdlog::warn("{}: holding the robot at zero, {} trajectories dropped (active {})", why, dropped, active_id());

@@ -20,7 +20,7 @@
 // commands exact zeros (the bridge's condition for running again) and drops every TRAJECTORY
 // that comes meanwhile; its status is HELD. When the bridge is RUNNING again the tracker is IDLE
 // at rest, and the planner, which saw HELD, plans anew from where the robot stopped. Without a
-// bridge (no DRIVE_STATUS, e.g. the kinematic simulator) it is never held.
+// bridge (no DRIVE_STATUS, e.g. the kinematic simulator) the drives never hold it.
 //
 // Stopped on a stale state: once the stop on a state gone stale has brought the command to
 // rest, the trajectory is dropped and the tracker is HELD the same way until a fresh state
@@ -34,6 +34,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "core/control/nmpc_tracker.h"
@@ -119,7 +120,7 @@ class TrackerNode {
   void Activate(Loaded loaded);
   void Fill(const TrackerOutput& out, std::int64_t now_utime);
   void FillHeld(std::int64_t now_utime);
-  void DropTrajectories(const char* why);
+  void DropTrajectories(std::string_view why);  // logs why, counts and drops active and pending ones
   bool StateFresh(std::int64_t now_utime) const;
 
   TrackerOptions options_;
