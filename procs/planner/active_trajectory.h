@@ -6,12 +6,14 @@
 #include <cstdint>
 #include <deque>
 #include <memory>
+#include <optional>
 
 #include <Eigen/Geometry>
 
 #include "core/trajectory/arc_yaw_trajectory.h"
 #include "core/trajectory/trajectory_sample.h"
 #include "procs/msgs/convert_robot_state.h"
+#include "procs/planner/standing_robot.h"
 
 namespace topay::planner {
 
@@ -21,6 +23,9 @@ struct ActiveTrajectory {
   std::int64_t start_utime = 0;  ///< t = 0, us since the Unix epoch
   std::shared_ptr<const ArcYawTrajectory> trajectory;
   bool stopping = false;         ///< a stopping trajectory (safe stop), not a plan to the goal
+  /// A plan from rest (or a stop braking from one): the robot where it started, whose own
+  /// voxels the map checks leave out as its validation did (StandingRobot).
+  std::optional<StandingRobot> standing;
 
   /// Time along the trajectory (s) at `utime`, not clamped.
   double TimeAt(std::int64_t utime) const { return 1e-6 * static_cast<double>(utime - start_utime); }

@@ -113,6 +113,16 @@ std::vector<OrientedBox> MapIntake::BlockedBoxesNear(const Eigen::AlignedBox3d& 
   return BlockedVoxelBoxes(g, receiver_.states(), unknown_, VoxelsOverlapping(g, region_W_m));
 }
 
+std::vector<OrientedBox> MapIntake::BlockedBoxesNear(const Eigen::AlignedBox3d& region_W_m,
+                                                    const Kinematics& kinematics,
+                                                    const StandingRobot& standing) const {
+  if (!receiver_.has_map()) return {};
+  const GridGeometry3& g = receiver_.geometry();
+  std::vector<std::uint8_t> states(receiver_.states().begin(), receiver_.states().end());
+  ClearStandingRobot(g, kinematics, standing, unknown_, &states);
+  return BlockedVoxelBoxes(g, states, unknown_, VoxelsOverlapping(g, region_W_m));
+}
+
 bool MapIntake::NearBlocked(const Eigen::Vector3d& p_W, double clearance_m) const {
   if (!receiver_.has_map()) return false;
   const GridGeometry3& g = receiver_.geometry();

@@ -17,6 +17,7 @@
 #include "core/map/voxel_map_fields.h"
 #include "core/robot/robot_model.h"
 #include "procs/msgs/map_receiver.h"
+#include "procs/planner/standing_robot.h"
 #include "topay/map_update_t.hpp"
 
 namespace topay::planner {
@@ -48,6 +49,11 @@ class MapIntake {
   /// The voxels the planner counts as obstacles (VoxelBlocksPlanner) that overlap
   /// `region_W_m`, merged into world boxes. Empty before the first map.
   std::vector<OrientedBox> BlockedBoxesNear(const Eigen::AlignedBox3d& region_W_m) const;
+  /// As above, but without the voxels `standing` leaves out (ClearStandingRobot): the map as
+  /// a plan from rest at standing.state was validated on. Copies the grid's states (one byte a
+  /// voxel).
+  std::vector<OrientedBox> BlockedBoxesNear(const Eigen::AlignedBox3d& region_W_m, const Kinematics& kinematics,
+                                            const StandingRobot& standing) const;
   /// True if p_W lies in a blocked voxel or within `clearance_m` of one.
   bool NearBlocked(const Eigen::Vector3d& p_W, double clearance_m) const;
 

@@ -195,11 +195,7 @@ PlanJobOutcome PlanWorker::Execute(const PlanJob& job, std::stop_token job_stop)
     Scene scene;
     if (job.from_rest) {  // the robot stands there: its own footprint is free
       std::vector<std::uint8_t> states(world_.states().begin(), world_.states().end());
-      ClearBaseFootprint(geometry, {job.start.state.x_m, job.start.state.y_m}, kinematics_.model().base_cylinder,
-                         unknown_, &states);
-      if (job.clear_arm_overlap_m > 0.0) {
-        ClearArmOverlaps(geometry, kinematics_, job.start.state, job.clear_arm_overlap_m, unknown_, &states);
-      }
+      ClearStandingRobot(geometry, kinematics_, job.Standing(), unknown_, &states);
       scene.boxes = BlockedVoxelBoxes(geometry, states, unknown_);
     } else {
       scene.boxes = BlockedVoxelBoxes(geometry, world_.states(), unknown_);

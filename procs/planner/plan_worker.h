@@ -33,6 +33,7 @@
 #include "core/trajectory/trajectory_sample.h"
 #include "procs/planner/map_intake.h"
 #include "procs/planner/planner_world.h"
+#include "procs/planner/standing_robot.h"
 
 namespace topay::planner {
 
@@ -63,6 +64,9 @@ struct PlanJob {
   /// are left out of the exact check (ClearArmOverlaps; the base's all are).
   double clear_arm_overlap_m = 0.0;
   std::int64_t map_seq = 0;            ///< the newest map update the LCM thread had (the record)
+
+  /// The robot at the start, as a plan from rest is validated without its own voxels.
+  StandingRobot Standing() const { return {start.state, clear_arm_overlap_m}; }
 };
 
 /// A finished (or cancelled) job.

@@ -42,6 +42,12 @@ TrajectorySample StartFromEstimate(const msgs::RobotStateEstimate& robot) {
 }
 
 // The goal's content (all but its utime) as bytes: a goal id is issued once.
+// A plan from rest is validated without the robot's own voxels at its start (PlanWorker).
+std::optional<StandingRobot> StandingOf(const PlanJob& job) {
+  if (!job.from_rest) return std::nullopt;
+  return job.Standing();
+}
+
 std::vector<std::uint8_t> GoalContent(goal_t msg) {
   msg.utime = 0;
   std::vector<std::uint8_t> bytes(static_cast<std::size_t>(msg.getEncodedSize()));
@@ -217,11 +223,23 @@ void PlannerNode::OnMap(const map_update_t& msg) {
 }
 
 void PlannerNode::OnTrackerStatus(const tracker_status_t& msg) {
+  const std::optional<tracker_status_t> before = tracker_;
   tracker_ = msg;
   const bool held = msg.state == tracker_status_t::HELD;
   if (held == held_) return;
   held_ = held;
-  if (held) return Hold(msg);
+  if (held) {
+    // Its trajectory ended on the planner's clock, but the robot, still closing on the end, was
+    // stopped short of it (a bus-off 35 ms after the end left the end effector 3 cm off, and the
+    // mission waited 120 s for a FINISHED that never came): the goal is open again, planned from
+    // rest once released (or reached at rest where the robot stopped).
+    if (goal_ && goal_->ended && (!before || before->state != tracker_status_t::FINISHED)) {
+      spdlog::warn("goal {}: held before the tracker finished its trajectory: planned again once released",
+                   goal_->goal.goal_id);
+      goal_->done = goal_->ended = false;
+    }
+    return Hold(msg);
+  }
   spdlog::info("tracker released: the robot may move again");
   rest_after_hold_until_utime_ = clock_.Now() + Micros(kRestAfterHoldWaitS);
   RequestPlan(PlanTrigger::kResume, "the tracker released the robot");
@@ -247,12 +265,13 @@ void PlannerNode::Hold(const tracker_status_t& msg) {
   }
 }
 
-std::optional<PredictedCollision> PlannerNode::CheckAhead(const ArcYawTrajectory& trajectory,
-                                                           double t_from_s) const {
+std::optional<PredictedCollision> PlannerNode::CheckAhead(const ArcYawTrajectory& trajectory, double t_from_s,
+                                                           const std::optional<StandingRobot>& standing) const {
   const double height_m = GridBounds(map_.receiver().geometry()).max().z();
+  const Eigen::AlignedBox3d region =
+      SweptRegion(trajectory, t_from_s, trajectory.duration_s(), options_.triggers.check_reach_m, height_m);
   Scene scene;
-  scene.boxes = map_.BlockedBoxesNear(SweptRegion(trajectory, t_from_s, trajectory.duration_s(),
-                                                  options_.triggers.check_reach_m, height_m));
+  scene.boxes = standing ? map_.BlockedBoxesNear(region, kinematics_, *standing) : map_.BlockedBoxesNear(region);
   if (scene.boxes.empty()) return std::nullopt;
   const SceneClearanceChecker checker(kinematics_, scene);
   return FirstPredictedCollision(trajectory, t_from_s, trajectory.duration_s(), checker,
@@ -262,7 +281,8 @@ std::optional<PredictedCollision> PlannerNode::CheckAhead(const ArcYawTrajectory
 void PlannerNode::CheckActiveAgainstMap(std::int64_t now) {
   if (!active_ || active_->EndedBy(now) || !map_.has_map()) return;
   const Stopwatch watch;
-  const std::optional<PredictedCollision> hit = CheckAhead(*active_->trajectory, active_->TimeAt(now));
+  const std::optional<PredictedCollision> hit =
+      CheckAhead(*active_->trajectory, active_->TimeAt(now), active_->standing);
   const double ms = watch.ElapsedMs();
   ++counts_.map_checks;
   counts_.map_check_ms_sum += ms;
@@ -487,7 +507,8 @@ void PlannerNode::HandleOutcome(PlanJobOutcome outcome) {
   }
   // The fields it planned on may lag the map away from its start, and the map may have
   // changed while it planned: check it against the newest.
-  const std::optional<PredictedCollision> hit = CheckAhead(*outcome.result.trajectory, 0.0);
+  // A plan from rest was validated without the robot's own voxels at its start: so is it here.
+  const std::optional<PredictedCollision> hit = CheckAhead(*outcome.result.trajectory, 0.0, StandingOf(outcome.job));
   if (!hit) {
     PublishTrajectory(outcome, now);
     return;
@@ -566,10 +587,11 @@ void PlannerNode::ScheduleRetry(std::int64_t now, const std::string& detail, con
 
 void PlannerNode::PublishTrajectory(const PlanJobOutcome& outcome, std::int64_t now) {
   ActiveTrajectory active;
-  active.trajectory_id = ++trajectory_seq_;
+  active.trajectory_id = NextTrajectoryId();
   active.goal_id = outcome.job.goal_id;
   active.start_utime = outcome.job.t0_utime != 0 ? outcome.job.t0_utime : now;  // 0: from rest, now
   active.trajectory = std::make_shared<const ArcYawTrajectory>(*outcome.result.trajectory);
+  active.standing = StandingOf(outcome.job);
   MakeActive(std::move(active));
   goal_->planned_once = true;
   goal_->failed_from_rest = 0;
@@ -618,6 +640,11 @@ void PlannerNode::MakeActive(ActiveTrajectory trajectory) {
   active_ = std::move(trajectory);
 }
 
+std::int64_t PlannerNode::NextTrajectoryId() {
+  trajectory_seq_ = std::max(trajectory_seq_ + 1, clock_.Now());
+  return trajectory_seq_;
+}
+
 const ActiveTrajectory* PlannerNode::OnAt(std::int64_t utime) const {
   return TrajectoryOnAt(active_ ? &*active_ : nullptr, replaced_, utime);
 }
@@ -638,11 +665,13 @@ std::optional<ArcYawTrajectory> PlannerNode::MakeStop(std::int64_t begin, std::s
 
 void PlannerNode::PublishStop(ArcYawTrajectory stop, std::int64_t begin, const std::string& detail) {
   ActiveTrajectory s;
-  s.trajectory_id = ++trajectory_seq_;
+  s.trajectory_id = NextTrajectoryId();
   s.goal_id = active_->goal_id;
   s.start_utime = begin;
   s.stopping = true;
   s.trajectory = std::make_shared<const ArcYawTrajectory>(std::move(stop));
+  const ActiveTrajectory* on = OnAt(begin);  // the one it brakes from (MakeStop)
+  s.standing = (on != nullptr ? on : &*active_)->standing;
   MakeActive(std::move(s));
   ++counts_.stops;
   PublishActive("stopping");
@@ -733,7 +762,7 @@ bool PlannerNode::ReachedAtRest(const WholeBodyState& state) {
 void PlannerNode::MaybeFinishGoal(std::int64_t now) {
   if (!goal_ || goal_->done || !active_ || active_->stopping || !active_->EndedBy(now)) return;
   if (active_->goal_id != goal_->goal.goal_id || worker_->busy() || pending_) return;
-  goal_->done = true;  // its trajectory ran to the end: nothing more to replan
+  goal_->done = goal_->ended = true;  // its trajectory ran to the end: nothing more to replan
   PublishStatus(planner_status_t::SUCCEEDED, "", fmt::format("trajectory {} ended", active_->trajectory_id));
 }
 

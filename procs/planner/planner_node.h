@@ -104,6 +104,7 @@ class PlannerNode {
     msgs::PlanGoal goal;
     bool planned_once = false;  // a trajectory went out for it
     bool done = false;          // failed, or its trajectory ended
+    bool ended = false;         // done because its trajectory ended (MaybeFinishGoal)
     int replans = 0;
     int failed_attempts = 0;    // plans that failed before its first trajectory went out
     int failed_from_rest = 0;   // plans from rest that failed in a row after it
@@ -131,7 +132,10 @@ class PlannerNode {
   void PublishActive(const char* what);
   // PLANNER_PATHS: the plan's candidate base paths (trajectory_id 0: the plan failed).
   void PublishPaths(const WholeBodyPlanResult& result, std::int64_t goal_id, std::int64_t trajectory_id);
-  std::optional<PredictedCollision> CheckAhead(const ArcYawTrajectory& trajectory, double t_from_s) const;
+  // The first collision of `trajectory` from t_from_s on the newest map (without the voxels
+  // of `standing`: a plan from rest).
+  std::optional<PredictedCollision> CheckAhead(const ArcYawTrajectory& trajectory, double t_from_s,
+                                               const std::optional<StandingRobot>& standing) const;
   void CheckActiveAgainstMap(std::int64_t now);
   // Keeps the base position at t_s on `trajectory` (a predicted collision) for FreshRegions.
   void RememberCollision(const ArcYawTrajectory& trajectory, double t_s);
@@ -146,6 +150,11 @@ class PlannerNode {
   // *why when none can be made), and its publication (STOPPING with `detail`).
   std::optional<ArcYawTrajectory> MakeStop(std::int64_t begin, std::string* why) const;
   void PublishStop(ArcYawTrajectory stop, std::int64_t begin, const std::string& detail);
+  // A new trajectory id: the clock's microseconds, or one more than the last id when that is
+  // later. Unique and increasing across restarts of the planner: the tracker takes only a
+  // trajectory newer than the one it has, and a restarted planner counting from 1 again had
+  // every trajectory ignored while the tracker kept the dead planner's last one (finding 13).
+  std::int64_t NextTrajectoryId();
   /// Straight-line distance (m) from the robot's place on active_ now to the predicted collision.
   double CollisionDistance(std::int64_t now) const;
   void MaybeFinishGoal(std::int64_t now);
@@ -198,7 +207,7 @@ class PlannerNode {
   std::optional<std::pair<PlanTrigger, std::string>> pending_;  // asked for while busy
   std::int64_t retry_at_utime_ = 0;               // 0: no retry scheduled
   std::int64_t job_seq_ = 0, latest_job_ = 0;
-  std::int64_t trajectory_seq_ = 0;
+  std::int64_t trajectory_seq_ = 0;  // the last trajectory id issued (NextTrajectoryId)
   planner_status_t status_{};
   std::int64_t last_status_utime_ = 0;
   PlannerNodeCounts counts_;

@@ -254,6 +254,71 @@ TEST_F(PlannerProcess, AHeldTrackerMakesItWaitAndPlanFromRestWhereTheRobotStoppe
   EXPECT_EQ(log.find("moving start"), std::string::npos) << log;
 }
 
+// The goal's trajectory ends on the planner's clock while the tracker is still closing on its end,
+// and then the drives stop (a bus-off): the goal is open again and, once the tracker is released,
+// planned from rest where the robot stopped. Before, the goal stayed SUCCEEDED and the mission
+// waited 120 s for the tracker's FINISHED.
+TEST_F(PlannerProcess, AGoalHeldBeforeTheTrackerFinishedItIsPlannedAgainOnRelease) {
+  Send(ReachableGoal(23));
+  const auto tracker = [&](std::int8_t state) {
+    tracker_status_t t{};
+    t.utime = procs::NowUtime();
+    t.state = state;
+    t.goal_id = 23;
+    t.trajectory_id = out_.trajectories.empty() ? 0 : out_.trajectories.back().trajectory_id;
+    watcher_->lcm().publish(std::string(channels::TRACKER_STATUS), &t);
+  };
+  const auto ended = [&] {
+    const planner_status_t* s = out_.Last(23, planner_status_t::SUCCEEDED);
+    return s != nullptr && s->detail.find("ended") != std::string::npos;
+  };
+  ASSERT_TRUE(SpinWithRobot([&] { tracker(tracker_status_t::TRACKING); return ended(); }, 90.0))
+      << ReadText(dir_ + "/planner.txt");
+  const std::size_t before = out_.trajectories.size();
+  tracker(tracker_status_t::HELD);
+  const auto waiting = [&] {
+    const planner_status_t* s = out_.Last(23, planner_status_t::PLANNING);
+    return s != nullptr && s->detail.find("tracker HELD") != std::string::npos;
+  };
+  ASSERT_TRUE(SpinWithRobot(waiting, 10.0)) << ReadText(dir_ + "/planner.txt");
+  tracker(tracker_status_t::IDLE);  // released, the robot at rest short of the goal
+  ASSERT_TRUE(SpinWithRobot([&] { return out_.trajectories.size() > before; }, 60.0)) << ReadText(dir_ + "/planner.txt");
+  EXPECT_EQ(out_.trajectories.back().goal_id, 23);
+  std::string error;
+  const auto poly = msgs::FromMessage(out_.trajectories.back(), &error);
+  ASSERT_TRUE(poly.has_value()) << error;
+  EXPECT_NEAR(poly->p0_W_m.x(), start_.x_m, 1e-3);  // from rest where the robot stopped
+  EXPECT_NEAR(poly->p0_W_m.y(), start_.y_m, 1e-3);
+}
+
+// A goal the tracker had finished stays done when the tracker is held later (no motion after it).
+TEST_F(PlannerProcess, AGoalTheTrackerFinishedStaysDoneThroughAHold) {
+  Send(ReachableGoal(24));
+  const auto tracker = [&](std::int8_t state) {
+    tracker_status_t t{};
+    t.utime = procs::NowUtime();
+    t.state = state;
+    watcher_->lcm().publish(std::string(channels::TRACKER_STATUS), &t);
+  };
+  const auto ended = [&] {
+    const planner_status_t* s = out_.Last(24, planner_status_t::SUCCEEDED);
+    return s != nullptr && s->detail.find("ended") != std::string::npos;
+  };
+  ASSERT_TRUE(SpinWithRobot(ended, 90.0)) << ReadText(dir_ + "/planner.txt");
+  SpinWithRobot([&] { tracker(tracker_status_t::FINISHED); return false; }, 0.3);
+  const std::size_t before = out_.trajectories.size();
+  tracker(tracker_status_t::HELD);
+  SpinWithRobot([] { return false; }, 0.5);
+  tracker(tracker_status_t::IDLE);
+  SpinWithRobot([] { return false; }, 5.0);
+  EXPECT_EQ(out_.trajectories.size(), before);
+  for (const planner_status_t& s : out_.statuses) {
+    if (s.goal_id == 24) {
+      EXPECT_EQ(s.detail.find("tracker HELD"), std::string::npos) << s.detail;
+    }
+  }
+}
+
 // Goal ids are issued once: a repeat of the goal in hand changes nothing, and another target
 // under its id (a corrupted copy, a foreign sender) neither cancels it nor moves the robot.
 TEST_F(PlannerProcess, AGoalIdIsNotReusedForAnotherTarget) {
@@ -472,6 +537,66 @@ TEST_F(PlannerProcess, AnObstacleTheFieldsLackIsCaughtBeforeThePlanGoesOutAndAvo
   bool caught = false;
   for (const planner_status_t& s : out_.statuses) caught |= s.detail.find("collides with the newer map") != std::string::npos;
   EXPECT_TRUE(caught) << "the first plan for goal 42 was not caught colliding\n" << ReadText(dir_ + "/planner.txt");
+}
+
+// kill -9 of the planner: the restarted planner's trajectory ids continue above the dead one's
+// (the tracker takes only a newer id; a restarted planner counting from 1 again had every
+// trajectory ignored while the tracker kept the dead planner's last one, which drove the robot,
+// moved back by a simulator restart, into a box: finding 13).
+TEST_F(PlannerProcess, ARestartedPlannersTrajectoryIdsAreAboveTheDeadOnes) {
+  Send(ReachableGoal(61));
+  ASSERT_TRUE(SpinWithRobot([&] { return out_.Last(61, planner_status_t::SUCCEEDED) != nullptr; }, 60.0))
+      << ReadText(dir_ + "/planner.txt");
+  const std::int64_t before = out_.trajectories.back().trajectory_id;
+  RestartPlanner();
+  Send(ReachableGoal(62));
+  ASSERT_TRUE(SpinWithRobot([&] { return out_.Last(62, planner_status_t::SUCCEEDED) != nullptr; }, 60.0))
+      << ReadText(dir_ + "/planner.txt");
+  EXPECT_EQ(out_.trajectories.back().goal_id, 62);
+  EXPECT_GT(out_.trajectories.back().trajectory_id, before);
+  EXPECT_EQ(out_.Last(62, planner_status_t::SUCCEEDED)->trajectory_id, out_.trajectories.back().trajectory_id);
+}
+
+// The robot stopped with its arm a few millimetres into voxels the map sensed since (a cap of
+// voxels on top of its outermost arm sphere, no sphere deeper than 2 cm in any): a plan from rest
+// is validated without the robot's own shallow overlaps (map.start_arm_overlap_m 0.03 m), and so
+// is its check against the newest map, so it goes out. Before, every such plan was refused as
+// "colliding with the newer map at 0.00 s", plan after plan (a PlannerGraph test stuck 60 s).
+TEST_F(PlannerProcess, APlanFromRestWithTheArmJustInsideNewlySensedVoxelsGoesOut) {
+  KinematicsCache cache = kinematics_.MakeCache();
+  kinematics_.Update(start_, &cache);
+  const std::size_t outer = cache.p_WS.size() - 1;
+  const Eigen::Vector3d p_WS = cache.p_WS[outer];
+  const double r = model_.spheres[outer].radius_m;
+  const GridGeometry3 g = planner::testing::RoomGeometry();
+  const double half = 0.5 * g.resolution_m;
+  const auto depth = [&](std::size_t s, const Eigen::Vector3d& c) {  // how far sphere s reaches into the voxel at c
+    return model_.spheres[s].radius_m - ((cache.p_WS[s] - c).cwiseAbs().array() - half).max(0.0).matrix().norm();
+  };
+  std::vector<VoxelChange> cap;
+  const CellBox cells = VoxelsOverlapping(g, {p_WS - Eigen::Vector3d::Constant(r), p_WS + Eigen::Vector3d::Constant(r)});
+  for (int iz = cells.begin.z(); iz < cells.end.z(); ++iz)
+    for (int iy = cells.begin.y(); iy < cells.end.y(); ++iy)
+      for (int ix = cells.begin.x(); ix < cells.end.x(); ++ix) {
+        const Eigen::Vector3d c = g.CellCenter(ix, iy, iz);
+        if (c.z() < p_WS.z() + 0.5 * r || depth(outer, c) < 0.003) continue;
+        bool shallow = true;
+        for (std::size_t s = 0; s < cache.p_WS.size(); ++s) shallow &= depth(s, c) < 0.02;
+        if (shallow) cap.push_back({{ix, iy, iz}, VoxelState::kOccupied});
+      }
+  ASSERT_FALSE(cap.empty());
+  SpinWithRobot([] { return false; }, 0.5);
+  const map_update_t delta = msgs::EncodeMapDelta(g, cap, procs::NowUtime(), 2);
+  watcher_->lcm().publish(std::string(channels::MAP_UPDATE), &delta);
+  SpinWithRobot([] { return false; }, 0.3);
+  Send(ReachableGoal(51));
+  ASSERT_TRUE(SpinWithRobot([&] { return out_.Last(51, planner_status_t::SUCCEEDED) != nullptr; }, 60.0))
+      << cap.size() << " voxels on the arm\n" << ReadText(dir_ + "/planner.txt");
+  ASSERT_FALSE(out_.trajectories.empty());
+  EXPECT_EQ(out_.trajectories.back().goal_id, 51);
+  for (const planner_status_t& s : out_.statuses) {
+    EXPECT_EQ(s.detail.find("collides with the newer map"), std::string::npos) << s.detail;
+  }
 }
 
 TEST_F(PlannerProcess, AGoalFloodLeavesTheLoopResponsiveAndTheLastGoalPlanned) {
