@@ -65,6 +65,10 @@ bool MissionNode::MovingStep() const {
 }
 
 bool MissionNode::TrackerFinished() const {
+  // "goal reached at rest" naming no trajectory (a hold had dropped them all): the tracker at
+  // rest with nothing to track is done. Before, the mission waited for a FINISHED that never
+  // came until its step timed out (the fault campaign's can-heartbeat-loss, docs/reliability.md).
+  if (reached_at_rest_ && ended_trajectory_id_ == 0 && tracker_state_ == tracker_status_t::IDLE) return true;
   return tracker_finished_id_ != 0 && (ended_trajectory_id_ == 0 || tracker_finished_id_ == ended_trajectory_id_);
 }
 
@@ -102,6 +106,7 @@ void MissionNode::OnPlannerStatus(const planner_status_t& msg, std::int64_t now)
       (msg.detail.find("ended") != std::string::npos || msg.detail.find("goal reached") != std::string::npos)) {
     planner_ended_ = true;
     ended_trajectory_id_ = msg.trajectory_id;
+    reached_at_rest_ = msg.detail.find("goal reached") != std::string::npos;
   } else if ((msg.state == planner_status_t::FAILED || msg.state == planner_status_t::CANCELLED) &&
              retry_utime_ == 0) {
     AttemptFailed(msg.state == planner_status_t::FAILED
@@ -115,8 +120,9 @@ void MissionNode::OnPlannerStatus(const planner_status_t& msg, std::int64_t now)
 
 void MissionNode::OnTrackerStatus(const tracker_status_t& msg, std::int64_t now) {
   tracker_seen_ = true;
-  if (!MovingStep() || msg.goal_id != goal_id_) return;
-  tracker_finished_id_ = msg.state == tracker_status_t::FINISHED ? msg.trajectory_id : 0;
+  tracker_state_ = msg.state;
+  if (!MovingStep()) return;
+  if (msg.goal_id == goal_id_) tracker_finished_id_ = msg.state == tracker_status_t::FINISHED ? msg.trajectory_id : 0;
   CheckArrival(now);
 }
 
@@ -225,6 +231,7 @@ void MissionNode::SendGoal(std::int64_t now) {
   attempt_replans_ = 0;
   planner_ended_ = false;
   ended_trajectory_id_ = 0;
+  reached_at_rest_ = false;
   outside_since_utime_ = 0;
   tracker_finished_id_ = 0;
   last_planner_state_ = -1;

@@ -135,8 +135,10 @@ class MissionNode {
   std::int64_t retry_utime_ = 0;       // 0: none scheduled
   bool planner_ended_ = false;         // SUCCEEDED "ended" for goal_id_
   std::int64_t ended_trajectory_id_ = 0;     // the trajectory the planner reported ended
+  bool reached_at_rest_ = false;       // ... or "goal reached at rest" (no trajectory to finish)
   std::int64_t outside_since_utime_ = 0;     // ended, but the end effector outside the tolerance since
   std::int64_t tracker_finished_id_ = 0;     // the trajectory of goal_id_ the tracker FINISHED (0: none)
+  std::int8_t tracker_state_ = -1;           // the tracker's last state, whatever its goal (-1: none yet)
   std::int8_t last_planner_state_ = -1;  // for goal_id_, to log its changes
   std::string last_planner_detail_;
   std::string last_failure_;

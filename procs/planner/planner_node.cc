@@ -41,13 +41,13 @@ TrajectorySample StartFromEstimate(const msgs::RobotStateEstimate& robot) {
   return s;
 }
 
-// The goal's content (all but its utime) as bytes: a goal id is issued once.
 // A plan from rest is validated without the robot's own voxels at its start (PlanWorker).
 std::optional<StandingRobot> StandingOf(const PlanJob& job) {
   if (!job.from_rest) return std::nullopt;
   return job.Standing();
 }
 
+// The goal's content (all but its utime) as bytes: a goal id is issued once.
 std::vector<std::uint8_t> GoalContent(goal_t msg) {
   msg.utime = 0;
   std::vector<std::uint8_t> bytes(static_cast<std::size_t>(msg.getEncodedSize()));

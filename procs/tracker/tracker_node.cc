@@ -68,7 +68,9 @@ void TrackerNode::OnTrajectory(const poly_trajectory_t& msg, std::int64_t now_ut
     ++counts_.trajectories_dropped_held;
     if (Every(counts_.trajectories_dropped_held)) {
       spdlog::warn("dropped TRAJECTORY {} (#{}): {}", msg.trajectory_id, counts_.trajectories_dropped_held,
-                   held_ ? "the drives are not running (" + hold_reason_ + ")" : std::string("the robot state is stale"));
+                   held_         ? "the drives are not running (" + hold_reason_ + ")"
+                   : stale_held_ ? std::string("the robot state is stale")
+                                 : std::string("tracking was lost, braking"));
     }
     return;
   }
@@ -188,6 +190,7 @@ const TrackerCycle& TrackerNode::Step(std::int64_t now_utime) {
     stale_held_ = false;
     spdlog::info("robot state fresh again: tracker released (at rest, waiting for a trajectory)");
   }
+  if (lost_ && !held_ && !stale_held_) return StepLost(now_utime);
   if (held()) {
     FillHeld(now_utime);
     tracker_.Halt();  // the drives are at rest: no command to ramp down from on release
@@ -198,12 +201,7 @@ const TrackerCycle& TrackerNode::Step(std::int64_t now_utime) {
     Activate(std::move(pending_.front()));
     pending_.pop_front();
   }
-  TrackerInput input;
-  input.now_s = Seconds(now_utime);
-  if (state_) {
-    input.state = &state_->state;
-    input.state_time_s = Seconds(state_->utime);
-  }
+  TrackerInput input = StateInput(now_utime);
   if (active_) input.reference = &active_->reference;
   const TrackerOutput& out = tracker_.Step(input);
   if (out.mode == TrackerMode::kTrack) {
@@ -232,6 +230,35 @@ const TrackerCycle& TrackerNode::Step(std::int64_t now_utime) {
     spdlog::info("trajectory {} finished", cycle_.status.trajectory_id);
   }
   last_mode_ = out.mode;
+  if (out.mode == TrackerMode::kTrack && active_ && options_.lost_position_m > 0.0 &&
+      out.position_error_m > options_.lost_position_m) {
+    ++counts_.losses;
+    lost_ = true;
+    DropTrajectories(fmt::format("tracking lost: the base {:.2f} m from the reference (limit {:.2f} m); braking",
+                                 out.position_error_m, options_.lost_position_m));
+  }
+  return cycle_;
+}
+
+TrackerInput TrackerNode::StateInput(std::int64_t now_utime) {
+  TrackerInput input;
+  input.now_s = Seconds(now_utime);
+  if (state_) {
+    input.state = &state_->state;
+    input.state_time_s = Seconds(state_->utime);
+  }
+  return input;
+}
+
+const TrackerCycle& TrackerNode::StepLost(std::int64_t now_utime) {
+  const TrackerOutput& out = tracker_.Step(StateInput(now_utime));  // no reference: stop within the limits
+  Fill(out, now_utime);
+  cycle_.status.state = tracker_status_t::HELD;
+  last_mode_ = out.mode;
+  if (AtRest(out.command, options_.rest_command)) {
+    lost_ = false;
+    spdlog::info("at rest after tracking was lost: tracker released (waiting for a trajectory)");
+  }
   return cycle_;
 }
 
@@ -286,7 +313,8 @@ std::int8_t TrackerNode::Health() const {
 
 std::string TrackerNode::StatusLine() const {
   if (held()) {
-    return fmt::format("held: {}, {} trajectories dropped", held_ ? hold_reason_ : "robot state stale",
+    return fmt::format("held: {}, {} trajectories dropped",
+                       held_ ? hold_reason_ : stale_held_ ? "robot state stale" : "tracking lost, braking",
                        counts_.trajectories_dropped_held);
   }
   return fmt::format("{} trajectory {} (pending {}), {} solves, {} fallbacks, {} rejected", TrackerModeName(last_mode_),
@@ -301,15 +329,15 @@ std::string TrackerNode::Report() const {
   return fmt::format(
       "topay-tracker: {} cycles, {} solves (median {:.3f} ms, p99 {:.3f} ms, max {:.3f} ms), fallbacks {} "
       "({} over budget, {} failed)\n"
-      "  stops: {} stale state, {} trajectory ended; held {} times (drives not running), {} times (at rest on a "
-      "stale state), {} trajectories dropped held\n"
+      "  stops: {} stale state, {} trajectory ended, {} tracking lost; held {} times (drives not running), {} times "
+      "(at rest on a stale state), {} trajectories dropped held\n"
       "  trajectories: {} received, {} became active, {} rejected, {} ignored (not newer), {} pending superseded\n"
       "  robot states: {} ({} rejected: {}); gripper commands: {} ({} rejected)\n",
       c.cycles, c.solves, solve_ms_.empty() ? 0.0 : Median(solve_ms_),
       solve_ms_.empty() ? 0.0 : NearestRankQuantile(solve_ms_, 0.99),
       solve_ms_.empty() ? 0.0 : *std::max_element(solve_ms_.begin(), solve_ms_.end()),
       summary.num_over_budget + summary.num_failed, summary.num_over_budget, summary.num_failed, c.stops_stale,
-      c.stops_ended, c.holds, c.stale_holds, c.trajectories_dropped_held, c.trajectories, c.switches, c.trajectories_rejected, c.trajectories_ignored, c.pending_superseded,
+      c.stops_ended, c.losses, c.holds, c.stale_holds, c.trajectories_dropped_held, c.trajectories, c.switches, c.trajectories_rejected, c.trajectories_ignored, c.pending_superseded,
       c.states, c.states_rejected, state_intake_.Report(), c.grippers, c.grippers_rejected);
 }
 

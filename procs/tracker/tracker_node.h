@@ -28,6 +28,10 @@
 // trajectory instead chased a reference that had run on (by the length of the gap) from a state
 // that may have jumped meanwhile (localisation back after 8 s lost: 1.7 m), through whatever was
 // in between (fault campaign 2026-12-05: the base 0.16 m into a box). docs/tracker.md.
+//
+// Tracking lost: a base position error above options.lost_position_m while tracking drops the
+// trajectory; the robot brakes within the limits (status HELD, trajectories dropped) and is
+// released at rest, where the planner plans anew.
 
 #include <cstdint>
 #include <deque>
@@ -71,6 +75,7 @@ struct TrackerCounts {
   std::int64_t holds = 0;        ///< times a DRIVE_STATUS not RUNNING held the tracker
   std::int64_t trajectories_dropped_held = 0;  ///< active, pending or arriving ones dropped while held
   std::int64_t stale_holds = 0;  ///< times the robot came to rest on a stale state (trajectory dropped, held)
+  std::int64_t losses = 0;       ///< times tracking was lost (options.lost_position_m): dropped, braked, held
 };
 
 /// One cycle's messages.
@@ -98,9 +103,10 @@ class TrackerNode {
   /// The active trajectory's id (0: none) and the next pending one's (0: none).
   std::int64_t active_id() const { return active_ ? active_->id : 0; }
   std::int64_t pending_id() const { return pending_.empty() ? 0 : pending_.front().id; }
-  /// True while the drives are not running (the last DRIVE_STATUS was not RUNNING) or the
-  /// robot, stopped on a stale state, waits for a fresh one.
-  bool held() const { return held_ || stale_held_; }
+  /// True while the drives are not running (the last DRIVE_STATUS was not RUNNING), the
+  /// robot, stopped on a stale state, waits for a fresh one, or it brakes after tracking was
+  /// lost.
+  bool held() const { return held_ || stale_held_ || lost_; }
   /// heartbeat_t::WARN while held or stopping on a stale or missing robot state with a
   /// trajectory, else OK; and the heartbeat's status line (mode, ids, solves, fallbacks, rejected messages).
   std::int8_t Health() const;
@@ -122,6 +128,9 @@ class TrackerNode {
   void FillHeld(std::int64_t now_utime);
   void DropTrajectories(std::string_view why);  // logs why, counts and drops active and pending ones
   bool StateFresh(std::int64_t now_utime) const;
+  // Tracking lost: the NMPC's stop (no reference) within the limits, status HELD, released at rest.
+  const TrackerCycle& StepLost(std::int64_t now_utime);
+  TrackerInput StateInput(std::int64_t now_utime);
 
   TrackerOptions options_;
   int num_joints_;
@@ -137,6 +146,7 @@ class TrackerNode {
   bool held_ = false;
   std::string hold_reason_;  // the bridge's state and stop reason while held
   bool stale_held_ = false;  // at rest after a stale-state stop, until a fresh state
+  bool lost_ = false;        // braking after tracking was lost, until at rest
   std::vector<double> solve_ms_;
   TrackerCycle cycle_;
   TrackerCounts counts_;

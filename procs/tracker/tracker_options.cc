@@ -69,6 +69,10 @@ TrackerOptions LoadTrackerOptions(const std::string& path) {
   if (!(o.rest_command > 0.0) || !std::isfinite(o.rest_command)) {
     throw ConfigError(path, "rest_command", "must be finite and > 0");
   }
+  top.Read("lost_position_m", &o.lost_position_m);
+  if (!(o.lost_position_m >= 0.0) || !std::isfinite(o.lost_position_m)) {
+    throw ConfigError(path, "lost_position_m", "must be finite and >= 0");
+  }
   top.Finish();
   return o;
 }

@@ -23,6 +23,15 @@ struct TrackerOptions {
   /// Below this base speed (m/s), yaw rate (rad/s) and every joint rate (rad/s) a stopped
   /// command counts as at rest (FINISHED rather than STOPPING after the end). > 0.
   double rest_command = 1e-3;
+  /// Tracking lost: while tracking, a base position error (m, the measured state against the
+  /// reference at its time) above this drops the trajectory; the robot is braked within the
+  /// limits and the status is HELD until it is at rest (the planner, seeing HELD, plans anew
+  /// from rest where it stopped). A robot far from its reference must not be driven straight
+  /// at it through whatever is in between (fault campaign 2026-12-05, finding 19: after a
+  /// simulator restart the NMPC chased a reference 0.5 m away into a box). Above the tracking
+  /// error of normal driving (at most 0.23 m in the CAN-mode fault campaigns) and the planner's
+  /// drift replan (0.3 m). 0: never. >= 0.
+  double lost_position_m = 0.35;
 };
 
 /// Loads options from YAML (every key optional; relative robot paths from the file's folder).

@@ -374,6 +374,37 @@ TEST_F(MissionNodeTest, APlannerGoalReachedAtRestCountsAsArrival) {
   EXPECT_EQ(node_->state(), mission_status_t::SUCCEEDED);
 }
 
+// The drives stopped just before the robot reached its goal: the tracker was HELD (its
+// trajectories dropped, its status naming no goal), then released at rest (IDLE), and the
+// planner found the goal reached at rest, naming no trajectory: that is the arrival (before, the
+// mission waited for a FINISHED that never came until its step timed out).
+TEST_F(MissionNodeTest, AGoalReachedAtRestAfterATrackerHoldCountsAsArrival) {
+  Make({Goto(a_, "pickup")});
+  Start();
+  Tracker(kFirstGoalId, tracker_status_t::TRACKING, 1.0, 3);
+  Planner(kFirstGoalId, planner_status_t::SUCCEEDED, 1.0, "trajectory 3 out");
+  Robot(a_, 4.0);
+  Tracker(0, tracker_status_t::HELD, 4.1, 0);
+  Planner(kFirstGoalId, planner_status_t::PLANNING, 4.1, "waiting: the robot is held at rest (tracker HELD)");
+  Planner(kFirstGoalId, planner_status_t::SUCCEEDED, 4.8, "goal reached at rest: end effector 0.013 m / 0.025 rad");
+  EXPECT_FALSE(node_->finished()) << "the tracker is still held";
+  Tracker(0, tracker_status_t::IDLE, 4.9, 0);  // released, at rest
+  EXPECT_EQ(node_->state(), mission_status_t::SUCCEEDED);
+}
+
+// A trajectory the planner reported ended still needs the tracker's FINISHED: an IDLE tracker
+// (e.g. between trajectories) is not enough there.
+TEST_F(MissionNodeTest, AnEndedTrajectoryIsNotArrivedByAnIdleTracker) {
+  Make({Goto(a_, "pickup")});
+  Start();
+  Tracker(kFirstGoalId, tracker_status_t::TRACKING, 1.0, 1);
+  Arrive(kFirstGoalId, a_, 5.0);
+  Tracker(0, tracker_status_t::IDLE, 5.1, 0);
+  EXPECT_FALSE(node_->finished());
+  Tracker(kFirstGoalId, tracker_status_t::FINISHED, 5.2, 1);
+  EXPECT_EQ(node_->state(), mission_status_t::SUCCEEDED);
+}
+
 TEST_F(MissionNodeTest, AbortEndsTheMissionAsAborted) {
   Make({Goto(a_, "pickup")});
   Start();

@@ -132,6 +132,15 @@ class PlannerProcess : public testing::Test {
     return msgs::ToMessage(goal);
   }
   void Send(const goal_t& goal) { watcher_->lcm().publish(std::string(channels::GOAL), &goal); }
+  // Plays the tracker: a TRACKER_STATUS in `state` (for goal_id's trajectory_id; 0: none).
+  void Tracker(std::int8_t state, std::int64_t goal_id = 0, std::int64_t trajectory_id = 0) {
+    tracker_status_t t{};
+    t.utime = procs::NowUtime();
+    t.state = state;
+    t.goal_id = goal_id;
+    t.trajectory_id = trajectory_id;
+    watcher_->lcm().publish(std::string(channels::TRACKER_STATUS), &t);
+  }
   // The base positions at n + 1 times evenly over [0, t_end]: x, y integrated numerically from
   // p0 along s and yaw.
   static std::vector<Eigen::Vector2d> BasePath(const msgs::PolyTrajectory& t, double t_end, int n) {
@@ -208,12 +217,7 @@ TEST_F(PlannerProcess, AHeldTrackerMakesItWaitAndPlanFromRestWhereTheRobotStoppe
   Send(ReachableGoal(21));
   ASSERT_TRUE(SpinWithRobot([&] { return !out_.trajectories.empty(); }, 60.0)) << ReadText(dir_ + "/planner.txt");
   const std::int64_t first_id = out_.trajectories.back().trajectory_id;
-  const auto tracker = [&](std::int8_t state) {
-    tracker_status_t t{};
-    t.utime = procs::NowUtime();
-    t.state = state;
-    watcher_->lcm().publish(std::string(channels::TRACKER_STATUS), &t);
-  };
+  const auto tracker = [&](std::int8_t state) { Tracker(state); };
   tracker(tracker_status_t::HELD);
   start_.x_m += 0.3;  // where the robot was stopped
   start_.yaw_rad += 0.2;
@@ -261,12 +265,7 @@ TEST_F(PlannerProcess, AHeldTrackerMakesItWaitAndPlanFromRestWhereTheRobotStoppe
 TEST_F(PlannerProcess, AGoalHeldBeforeTheTrackerFinishedItIsPlannedAgainOnRelease) {
   Send(ReachableGoal(23));
   const auto tracker = [&](std::int8_t state) {
-    tracker_status_t t{};
-    t.utime = procs::NowUtime();
-    t.state = state;
-    t.goal_id = 23;
-    t.trajectory_id = out_.trajectories.empty() ? 0 : out_.trajectories.back().trajectory_id;
-    watcher_->lcm().publish(std::string(channels::TRACKER_STATUS), &t);
+    Tracker(state, 23, out_.trajectories.empty() ? 0 : out_.trajectories.back().trajectory_id);
   };
   const auto ended = [&] {
     const planner_status_t* s = out_.Last(23, planner_status_t::SUCCEEDED);
@@ -294,12 +293,7 @@ TEST_F(PlannerProcess, AGoalHeldBeforeTheTrackerFinishedItIsPlannedAgainOnReleas
 // A goal the tracker had finished stays done when the tracker is held later (no motion after it).
 TEST_F(PlannerProcess, AGoalTheTrackerFinishedStaysDoneThroughAHold) {
   Send(ReachableGoal(24));
-  const auto tracker = [&](std::int8_t state) {
-    tracker_status_t t{};
-    t.utime = procs::NowUtime();
-    t.state = state;
-    watcher_->lcm().publish(std::string(channels::TRACKER_STATUS), &t);
-  };
+  const auto tracker = [&](std::int8_t state) { Tracker(state); };
   const auto ended = [&] {
     const planner_status_t* s = out_.Last(24, planner_status_t::SUCCEEDED);
     return s != nullptr && s->detail.find("ended") != std::string::npos;

@@ -223,6 +223,78 @@ TEST(TrackerNode, AfterAStaleStopAFreshStateNeverResumesTheOldTrajectory) {
   EXPECT_EQ(node.Step(now + kCycle).status.state, tracker_status_t::TRACKING);
 }
 
+// Tracking lost: the robot state jumps 0.6 m from the reference (a simulator restarted at its
+// checkpoint, a state re-anchored): the trajectory is dropped, the command brakes within the
+// acceleration limits under status HELD (trajectories meanwhile dropped), and at rest the tracker
+// is released, IDLE, and follows a new trajectory. Before, the NMPC drove straight at the
+// reference (fault campaign: the base into a box).
+TEST(TrackerNode, TrackingLostBrakesWithinTheLimitsHeldThenReleasesAtRest) {
+  const TrackerLimits limits = MakeTrackerLimits(Robot());
+  TrackerNode node(Options(), limits);
+  node.OnTrajectory(Trajectory(1, kT0), kT0);
+  std::int64_t now = kT0;
+  double v = 0.0;
+  for (; now <= kT0 + 800'000; now += kCycle) {
+    node.OnRobotState(StateMessage(Start(), now));  // the robot stays behind: the error grows
+    const TrackerCycle& c = node.Step(now);
+    if (c.status.state != tracker_status_t::TRACKING) break;
+    v = c.command.v_mps;
+  }
+  ASSERT_EQ(node.counts().losses, 0) << "the robot 0.8 s behind is not yet lost";
+  ASSERT_GT(v, 0.05);
+  WholeBodyState off = Start();
+  off.x_m = -0.6;  // the state jumps 0.6 m back
+  bool held = false, released = false;
+  for (int i = 0; i < 200 && !released; ++i, now += kCycle) {
+    node.OnRobotState(StateMessage(off, now));
+    const TrackerCycle& c = node.Step(now);
+    if (c.status.state == tracker_status_t::HELD) {
+      held = true;
+      EXPECT_EQ(c.status.trajectory_id, 0);
+      EXPECT_LE(std::abs(c.command.v_mps), std::abs(v) + 1e-12);  // braking, within the limits
+      EXPECT_GE(std::abs(c.command.v_mps), std::abs(v) - limits.base.a_max_mps2 * 0.02 - 1e-9);
+      if (node.held()) {  // still braking: a trajectory meanwhile is dropped
+        node.OnTrajectory(Trajectory(2 + i, now), now);
+        EXPECT_EQ(node.active_id(), 0);
+      }
+    } else if (held) {
+      EXPECT_EQ(c.status.state, tracker_status_t::IDLE);
+      EXPECT_EQ(c.command.v_mps, 0.0);
+      released = true;
+    }
+    v = c.command.v_mps;
+  }
+  EXPECT_TRUE(held);
+  EXPECT_TRUE(released);
+  EXPECT_EQ(node.counts().losses, 1);
+  EXPECT_FALSE(node.held());
+  node.OnTrajectory(Trajectory(1000, now, off), now);  // planned from where the robot stopped
+  EXPECT_EQ(node.active_id(), 1000);
+  node.OnRobotState(StateMessage(off, now + kCycle));
+  EXPECT_EQ(node.Step(now + kCycle).status.state, tracker_status_t::TRACKING);
+}
+
+// lost_position_m 0: the tracker never gives up on a reference (the option's off switch).
+TEST(TrackerNode, TrackingLossCanBeSwitchedOff) {
+  TrackerOptions options = Options();
+  options.lost_position_m = 0.0;
+  TrackerNode node(options, MakeTrackerLimits(Robot()));
+  node.OnTrajectory(Trajectory(1, kT0), kT0);
+  WholeBodyState off = Start();
+  off.x_m = -0.6;
+  std::int64_t now = kT0;
+  for (int i = 0; i < 5; ++i, now += kCycle) {  // the intake takes the jump after 5 states
+    node.OnRobotState(StateMessage(Start(), now));
+    node.Step(now);
+  }
+  for (int i = 0; i < 20; ++i, now += kCycle) {
+    node.OnRobotState(StateMessage(off, now));
+    node.Step(now);
+  }
+  EXPECT_EQ(node.counts().losses, 0);
+  EXPECT_EQ(node.active_id(), 1);
+}
+
 drive_status_t Drives(std::int8_t state, const std::string& reason = "") {
   drive_status_t m{};
   m.state = state;
