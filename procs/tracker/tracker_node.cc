@@ -169,13 +169,13 @@ void TrackerNode::OnDriveStatus(const drive_status_t& msg) {
   if (held_) return;
   held_ = true;
   ++counts_.holds;
-  DropTrajectories(fmt::format("drives not running ({})", hold_reason_));
+  DropTrajectories(fmt::format("drives not running ({}): holding the robot at zero", hold_reason_));
 }
 
 void TrackerNode::DropTrajectories(std::string_view why) {
   const std::int64_t dropped = (active_ ? 1 : 0) + static_cast<std::int64_t>(pending_.size());
   counts_.trajectories_dropped_held += dropped;
-  spdlog::warn("{}: holding the robot at zero, {} trajectories dropped (active {})", why, dropped, active_id());
+  spdlog::warn("{}, {} trajectories dropped (active {})", why, dropped, active_id());
   active_.reset();
   pending_.clear();
 }
@@ -217,7 +217,7 @@ const TrackerCycle& TrackerNode::Step(std::int64_t now_utime) {
   if (out.mode == TrackerMode::kStopStaleState && active_ && state_ && AtRest(out.command, options_.rest_command)) {
     ++counts_.stale_holds;
     stale_held_ = true;
-    DropTrajectories("at rest on a stale robot state");
+    DropTrajectories("at rest on a stale robot state: holding the robot at zero");
   }
   if (last_mode_ == TrackerMode::kStopStaleState && out.mode == TrackerMode::kTrack) {
     spdlog::info("robot state fresh again: tracking trajectory {}", out.trajectory_id);
@@ -234,7 +234,8 @@ const TrackerCycle& TrackerNode::Step(std::int64_t now_utime) {
       out.position_error_m > options_.lost_position_m) {
     ++counts_.losses;
     lost_ = true;
-    DropTrajectories(fmt::format("tracking lost: the base {:.2f} m from the reference (limit {:.2f} m); braking",
+    DropTrajectories(fmt::format("tracking lost: the base {:.2f} m from the reference (limit {:.2f} m): braking "
+                                 "to a stop",
                                  out.position_error_m, options_.lost_position_m));
   }
   return cycle_;
