@@ -118,6 +118,11 @@ std::vector<OrientedBox> MapIntake::BlockedBoxesNear(const Eigen::AlignedBox3d& 
                                                     const StandingRobot& standing) const {
   if (!receiver_.has_map()) return {};
   const GridGeometry3& g = receiver_.geometry();
+  // Far from where it stood (most of a trajectory's checks) the robot's voxels are not in the
+  // region: no copy of the grid.
+  if (!region_W_m.intersects(StandingRobotBounds(kinematics, standing, g.resolution_m))) {
+    return BlockedBoxesNear(region_W_m);
+  }
   std::vector<std::uint8_t> states(receiver_.states().begin(), receiver_.states().end());
   ClearStandingRobot(g, kinematics, standing, unknown_, &states);
   return BlockedVoxelBoxes(g, states, unknown_, VoxelsOverlapping(g, region_W_m));

@@ -51,7 +51,7 @@ class MapIntake {
   std::vector<OrientedBox> BlockedBoxesNear(const Eigen::AlignedBox3d& region_W_m) const;
   /// As above, but without the voxels `standing` leaves out (ClearStandingRobot): the map as
   /// a plan from rest at standing.state was validated on. Copies the grid's states (one byte a
-  /// voxel).
+  /// voxel) when the region meets the standing robot (StandingRobotBounds).
   std::vector<OrientedBox> BlockedBoxesNear(const Eigen::AlignedBox3d& region_W_m, const Kinematics& kinematics,
                                             const StandingRobot& standing) const;
   /// True if p_W lies in a blocked voxel or within `clearance_m` of one.

@@ -12,6 +12,8 @@
 #include <cstdint>
 #include <vector>
 
+#include <Eigen/Geometry>
+
 #include "core/map/grid_geometry.h"
 #include "core/map/voxel_map_fields.h"
 #include "core/robot/kinematics.h"
@@ -29,5 +31,10 @@ struct StandingRobot {
 /// Returns the voxels cleared.
 int ClearStandingRobot(const GridGeometry3& geometry, const Kinematics& kinematics, const StandingRobot& standing,
                        UnknownVoxelPolicy unknown, std::vector<std::uint8_t>* states);
+
+/// A world box holding every voxel ClearStandingRobot may clear: the base cylinder and the arm's
+/// collision spheres of the standing robot, grown by one voxel (`resolution_m`).
+Eigen::AlignedBox3d StandingRobotBounds(const Kinematics& kinematics, const StandingRobot& standing,
+                                        double resolution_m);
 
 }  // namespace topay::planner

@@ -45,6 +45,17 @@ TEST_F(StandingRobotTest, ClearsTheBaseFootprintAndTheArmsShallowOverlaps) {
   EXPECT_EQ(ClearStandingRobot(geometry_, kinematics_, standing_, UnknownVoxelPolicy::kFree, &states), base + arm);
   EXPECT_EQ(states, expected);
 
+  // Every cleared voxel lies within StandingRobotBounds (the intake skips the copy outside it).
+  const Eigen::AlignedBox3d bounds = StandingRobotBounds(kinematics_, standing_, geometry_.resolution_m);
+  for (int iz = 0; iz < geometry_.dims.z(); ++iz)
+    for (int iy = 0; iy < geometry_.dims.y(); ++iy)
+      for (int ix = 0; ix < geometry_.dims.x(); ++ix) {
+        const std::int64_t i = geometry_.Index(ix, iy, iz);
+        if (states[i] != states_[i]) {
+          EXPECT_TRUE(bounds.contains(geometry_.CellCenter(ix, iy, iz)));
+        }
+      }
+
   std::vector<std::uint8_t> base_only = states_;
   EXPECT_EQ(ClearStandingRobot(geometry_, kinematics_, {standing_.state, 0.0}, UnknownVoxelPolicy::kFree, &base_only),
             base);
