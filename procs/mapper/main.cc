@@ -3,12 +3,14 @@
 // filtered with PCL (range, floor, the robot's own body at the scan's time, voxel grid,
 // outliers) and inserted into a dense occupancy grid with free-space ray casting; an OctoMap
 // is kept beside it at a lower rate (--save writes it as a .bt at exit; --prior starts from
-// one). Exit codes: 0, 1 config or file error, 2 usage error.
+// one). --checkpoint keeps a journal of the map, so that a mapper restarted after a crash starts
+// from the map it had. Exit codes: 0, 1 config or file error, 2 usage error.
 
 #include <CLI/CLI.hpp>
 #include <spdlog/spdlog.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <memory>
@@ -16,6 +18,8 @@
 
 #include "core/common/error.h"
 #include "core/io/robot_loader.h"
+#include "procs/mapper/map_journal.h"
+#include "procs/mapper/map_seed.h"
 #include "procs/mapper/mapper_node.h"
 #include "procs/mapper/mapper_options.h"
 #include "procs/mapper/octree_dense_states.h"
@@ -27,7 +31,7 @@ using namespace topay::mapper;
 namespace {
 
 struct Flags {
-  std::string save, prior, robot_urdf, robot_yaml;
+  std::string save, prior, checkpoint, robot_urdf, robot_yaml;
 };
 
 MapperOptions ResolveOptions(const procs::ProcessOptions& process, const Flags& f) {
@@ -38,27 +42,29 @@ MapperOptions ResolveOptions(const procs::ProcessOptions& process, const Flags& 
   if (!f.robot_yaml.empty()) o.robot_yaml = f.robot_yaml;
   if (!f.save.empty()) o.save_path = f.save;
   if (!f.prior.empty()) o.prior_path = f.prior;
+  if (!f.checkpoint.empty()) o.checkpoint_path = f.checkpoint;
   return o;
 }
 
-// The prior map's voxels into the dense map (occupied and free at the clamping bounds, as an
-// OctoMap .bt stores them: maximum likelihood only). Returns the number of voxels seeded.
-std::int64_t SeedFromPrior(const octomap::OcTree& tree, OccupancyMap* map) {
-  const std::vector<VoxelState> states = DenseStatesFromOcTree(tree, map->geometry());
+// The map a restarted mapper had, from its journal (--checkpoint): true if there was one.
+// Throws ConfigError naming the journal if it cannot be read or holds another grid.
+bool StartFromJournal(const MapperOptions& options, OccupancyMap* map) {
+  if (options.checkpoint_path.empty()) return false;
+  const std::optional<JournaledMap> journaled = ReadMapJournal(options.checkpoint_path, options.publish.codec);
+  if (!journaled) return false;
   const GridGeometry3& g = map->geometry();
-  std::int64_t seeded = 0;
-  for (int iz = 0; iz < g.dims.z(); ++iz) {
-    for (int iy = 0; iy < g.dims.y(); ++iy) {
-      for (int ix = 0; ix < g.dims.x(); ++ix) {
-        const VoxelState s = states[g.Index(ix, iy, iz)];
-        if (s == VoxelState::kUnknown) continue;
-        map->SetVoxel({ix, iy, iz}, s == VoxelState::kOccupied ? map->options().log_odds_max : map->options().log_odds_min,
-                      nullptr);
-        ++seeded;
-      }
-    }
+  const GridGeometry3& j = journaled->geometry;
+  if (j.dims != g.dims || std::abs(j.resolution_m - g.resolution_m) > 1e-9 || !j.origin_W_m.isApprox(g.origin_W_m, 1e-9)) {
+    throw ConfigError(options.checkpoint_path, "", "the map journal holds another grid than the mapper's (config changed?)");
   }
-  return seeded;
+  std::vector<VoxelState> states(journaled->states.size());
+  std::transform(journaled->states.begin(), journaled->states.end(), states.begin(),
+                 [](std::uint8_t b) { return static_cast<VoxelState>(b); });
+  const std::int64_t seeded = SeedKnownVoxels(states, map);
+  spdlog::warn("restarted: the map of the journal {} ({} updates, {} voxels known){}", options.checkpoint_path,
+               journaled->records, seeded,
+               journaled->stopped_early.empty() ? "" : "; its tail was dropped: " + journaled->stopped_early);
+  return true;
 }
 
 }  // namespace
@@ -70,6 +76,8 @@ int main(int argc, char** argv) {
   Flags flags;
   app.add_option("--save", flags.save, "write the OctoMap (.bt, octovis opens it) here at exit (SIGINT/SIGTERM)");
   app.add_option("--prior", flags.prior, "start from this OctoMap .bt");
+  app.add_option("--checkpoint", flags.checkpoint,
+                 "the map journal: every MAP_UPDATE goes into it; a restart starts from its map if it exists");
   app.add_option("--robot", flags.robot_urdf, "robot URDF (default: the config's, else the shipped TopAY robot)");
   app.add_option("--robot-yaml", flags.robot_yaml, "robot YAML (collision model)");
   if (const std::optional<int> code = procs::ParseFlags(&app, argc, argv)) return *code;
@@ -79,15 +87,22 @@ int main(int argc, char** argv) {
   std::unique_ptr<Kinematics> kinematics;
   std::unique_ptr<ScanMapper> mapper;
   std::optional<OctomapMirror> mirror;
+  bool from_journal = false;
   try {
     options = ResolveOptions(process, flags);
     model = std::make_unique<RobotModel>(LoadRobotModel(options.robot_urdf, options.robot_yaml));
     kinematics = std::make_unique<Kinematics>(*model);
     mapper = std::make_unique<ScanMapper>(options.filter, options.map, *kinematics);
     const OctomapMirrorOptions mirror_options = MirrorOptionsOf(options);
-    if (!options.prior_path.empty()) {
+    // A journal (a restart) holds the newest map, the prior's voxels included; the OctoMap
+    // then starts empty, and --save writes the dense map's states.
+    from_journal = StartFromJournal(options, &mapper->mutable_map());
+    if (from_journal) {
+      if (options.octomap.enabled) mirror.emplace(mirror_options);
+    } else if (!options.prior_path.empty()) {
       mirror.emplace(OctomapMirror::LoadPrior(options.prior_path, mirror_options));
-      const std::int64_t seeded = SeedFromPrior(mirror->tree(), &mapper->mutable_map());
+      const std::vector<VoxelState> states = DenseStatesFromOcTree(mirror->tree(), mapper->map().geometry());
+      const std::int64_t seeded = SeedKnownVoxels(states, &mapper->mutable_map());
       spdlog::info("prior {}: {} voxels known", options.prior_path, seeded);
     } else if (options.octomap.enabled) {
       mirror.emplace(mirror_options);
@@ -95,7 +110,7 @@ int main(int argc, char** argv) {
   } catch (const ConfigError& e) {
     spdlog::error("{}", e.what());
     return procs::kExitConfigError;
-  } catch (const std::exception& e) {  // robot files, the prior's .bt
+  } catch (const std::exception& e) {  // robot files, the prior's .bt, the journal
     spdlog::error("{}", e.what());
     return procs::kExitConfigError;
   }
@@ -110,14 +125,16 @@ int main(int argc, char** argv) {
   spdlog::info("{}: map {} x {} x {} voxels of {} m, OctoMap {}, robot {}", process.name, g.dims.x(), g.dims.y(), g.dims.z(),
                g.resolution_m, octomap ? fmt::format("every {} scans", options.octomap.every_n_scans) : "off",
                model->name);
-  MapperNode node(&loop, mapper.get(), octomap.get(), options);
+  std::optional<MapJournal> journal;
+  if (!options.checkpoint_path.empty()) journal.emplace(options.checkpoint_path);
+  MapperNode node(&loop, mapper.get(), octomap.get(), options, journal ? &*journal : nullptr);
   node.Publish(procs::NowUtime(), /*force_snapshot=*/true);  // the prior (or nothing) at once
   const int code = loop.Run();
   std::printf("%s", node.stats().Report().c_str());
   std::fflush(stdout);
   if (!options.save_path.empty()) {
     try {
-      if (octomap) {
+      if (octomap && !from_journal) {
         octomap->SaveWhenIdle(options.save_path);
       } else {
         const std::span<const std::uint8_t> bytes = mapper->map().states();

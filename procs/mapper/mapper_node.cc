@@ -22,10 +22,11 @@ double MsSince(std::chrono::steady_clock::time_point start) {
 }  // namespace
 
 MapperNode::MapperNode(procs::ProcessLoop* loop, ScanMapper* mapper, OctomapWorker* octomap,
-                       const MapperOptions& options)
+                       const MapperOptions& options, MapJournal* journal)
     : loop_(loop),
       mapper_(mapper),
       octomap_(octomap),
+      journal_(journal),
       options_(options),
       history_(options.robot_state),
       schedule_({.snapshot_period_s = options.publish.snapshot_period_s}) {
@@ -87,6 +88,7 @@ void MapperNode::Publish(std::int64_t utime, bool force_snapshot) {
   const double encode_ms = MsSince(start);
   pending_.clear();
   loop_->lcm().publish(std::string(channels::MAP_UPDATE), &msg);
+  Journal(msg, now_s);
   last_publish_s_ = now_s;
   ++stats_.updates;
   const double bytes = static_cast<double>(msg.getEncodedSize());
@@ -97,6 +99,18 @@ void MapperNode::Publish(std::int64_t utime, bool force_snapshot) {
   } else {
     AddSample(&stats_.delta_bytes, bytes);
     AddSample(&stats_.encode_ms, encode_ms);
+  }
+}
+
+void MapperNode::Journal(const map_update_t& msg, double now_s) {
+  if (journal_ == nullptr) return;
+  try {
+    journal_->Record(msg);
+  } catch (const std::exception& e) {  // the map still goes out; a restart would lose it
+    ++stats_.journal_errors;
+    last_journal_error_ = e.what();
+    if (now_s - last_journal_error_s_ >= kWarnHoldS) spdlog::error("{}", e.what());
+    last_journal_error_s_ = now_s;
   }
 }
 
@@ -113,11 +127,13 @@ void MapperNode::OnHealthTimer() {
   const bool rejecting = now_s - last_rejection_s_ < kWarnHoldS;
   const bool no_state = now_s - last_without_state_s_ < kWarnHoldS;
   const bool stale = now_s - last_cloud_s_ > kStaleScansS;
+  const bool journal_failing = now_s - last_journal_error_s_ < kWarnHoldS;
   std::string status = stats_.StatusLine(mapper_->map().CountStates());
   if (rejecting) status += "; rejecting clouds: " + stats_.last_error;
   if (no_state) status += "; no ROBOT_STATE at scan time: own points not removed";
   if (stale) status += "; no POINT_CLOUD";
-  loop_->SetHealth(rejecting || no_state || stale ? heartbeat_t::WARN : heartbeat_t::OK, status);
+  if (journal_failing) status += "; map journal not written: " + last_journal_error_;
+  loop_->SetHealth(rejecting || no_state || stale || journal_failing ? heartbeat_t::WARN : heartbeat_t::OK, status);
 }
 
 }  // namespace topay::mapper

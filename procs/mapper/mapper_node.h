@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "procs/mapper/cloud_input.h"
+#include "procs/mapper/map_journal.h"
 #include "procs/mapper/mapper_options.h"
 #include "procs/mapper/mapper_stats.h"
 #include "procs/mapper/octomap_worker.h"
@@ -28,10 +29,11 @@ namespace topay::mapper {
 
 class MapperNode {
  public:
-  /// Subscribes and adds the timers to *loop (before loop->Run()). The loop, the mapper and
-  /// the OctoMap worker (null: none) outlive the node.
+  /// Subscribes and adds the timers to *loop (before loop->Run()). The loop, the mapper, the
+  /// OctoMap worker and the map journal (null: none) outlive the node; every update published
+  /// goes into the journal.
   MapperNode(procs::ProcessLoop* loop, ScanMapper* mapper, OctomapWorker* octomap,
-             const MapperOptions& options);
+             const MapperOptions& options, MapJournal* journal = nullptr);
 
   void OnCloud(const point_cloud_t& msg);
   void OnRobotState(const robot_state_t& msg);
@@ -43,11 +45,15 @@ class MapperNode {
 
  private:
   void OnHealthTimer();
+  void Journal(const map_update_t& msg, double now_s);
   double NowS() const;
 
   procs::ProcessLoop* loop_;
   ScanMapper* mapper_;
   OctomapWorker* octomap_;
+  MapJournal* journal_;
+  double last_journal_error_s_ = -1e9;
+  std::string last_journal_error_;
   MapperOptions options_;
   msgs::RobotStateIntake state_intake_{0};  // decode, continuity gate (the history checks joints)
   RobotStateHistory history_;

@@ -71,6 +71,7 @@ MapperOptions LoadMapperOptions(const std::string& path) {
   ReadPublish(top.Section("publish"), &o.publish);
   top.Read("save", &o.save_path);
   top.Read("prior", &o.prior_path);
+  top.Read("checkpoint", &o.checkpoint_path);
   o.prior_path = ResolveBeside(o.prior_path, path);
   top.Finish();
   CheckMapperOptions(o);

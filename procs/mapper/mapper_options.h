@@ -44,6 +44,10 @@ struct MapperOptions {
   MapPublishOptions publish;  ///< YAML `publish`
   std::string save_path;   ///< write the OctoMap here at exit (SIGINT/SIGTERM); empty: no
   std::string prior_path;  ///< start from this OctoMap .bt; empty: all unknown
+  /// The map journal (map_journal.h): every MAP_UPDATE published goes into it, and a mapper
+  /// that starts with one there (restarted after a crash) starts from its map, not from the
+  /// prior or an empty map. Empty: none.
+  std::string checkpoint_path;
 };
 
 /// Loads the YAML at `path`. Throws ConfigError naming the file and key for a missing file,

@@ -26,6 +26,7 @@ struct MapperStats {
   std::int64_t scans_without_state = 0;  ///< Scans mapped without the self filter (no state).
   std::int64_t states_rejected = 0;  ///< ROBOT_STATE messages malformed or refused (continuity gate).
   std::int64_t updates = 0, snapshots = 0;  ///< MAP_UPDATEs published, of which full.
+  std::int64_t journal_errors = 0;  ///< Updates the map journal could not write.
   std::string last_error;            ///< The last rejection's reason.
   // Per scan (AddSample: the last 1-2 hours), ms.
   std::vector<double> range_ms, ground_ms, self_ms, voxel_ms, outlier_ms, filter_ms;

@@ -53,6 +53,7 @@ int main(int argc, char** argv) {
     planner_options = LoadPlannerOptions(options.planner_config);
     AdaptPlannerOptions(options, &planner_options);
     model = std::make_unique<RobotModel>(LoadRobotModel(options.robot_urdf, options.robot_yaml));
+    ApplyPlanLimits(options, model.get(), &planner_options);
     kinematics = std::make_unique<Kinematics>(*model);
   } catch (const std::exception& e) {  // ConfigError and the robot files' errors
     spdlog::error("{}", e.what());
@@ -67,9 +68,9 @@ int main(int argc, char** argv) {
   PlanWorker worker(*kinematics, planner_options, options.map.unknown, FieldUpdatePeriod(options),
                     options.map.slice_m);
   PlannerNode node(&loop, &worker, *kinematics, stop_planner, options);
-  spdlog::info("{}: robot {}, planner {}, unknown voxels {}, replanning budget {:.2f} s{}", process.name,
-               model->name, options.planner_config, ToString(options.map.unknown),
-               options.timing.replan_budget_s,
+  spdlog::info("{}: robot {}, planner {}, unknown voxels {}, replanning budget {:.2f} s, {:.0f} % of the "
+               "acceleration limits{}", process.name, model->name, options.planner_config, ToString(options.map.unknown),
+               options.timing.replan_budget_s, 100.0 * options.limits.acceleration_share,
                options.deterministic.enabled ? "; DETERMINISTIC mode (message time, synchronous plans: replay "
                                                "and tests, not the robot)" : "");
   const int code = loop.Run();

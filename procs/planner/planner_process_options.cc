@@ -68,6 +68,11 @@ void ReadGoals(YamlSection s, GoalCheckOptions* o) {
   s.Finish();
 }
 
+void ReadLimits(YamlSection s, PlanLimitOptions* o) {
+  s.Read("acceleration_share", &o->acceleration_share);
+  s.Finish();
+}
+
 void ReadDeterministic(YamlSection s, DeterministicModeOptions* o) {
   s.Read("enabled", &o->enabled);
   s.Read("prm_samples", &o->prm_samples);
@@ -110,6 +115,9 @@ const char* ToString(UnknownVoxelPolicy policy) {
 
 void CheckPlannerProcessOptions(const PlannerProcessOptions& o, const std::string& source) {
   RequirePositive(o.map.field_update_period_s, source, "map.field_update_period_s");
+  if (!(o.limits.acceleration_share > 0.0 && o.limits.acceleration_share <= 1.0)) {
+    throw ConfigError(source, "limits.acceleration_share", "must be in (0, 1]");
+  }
   RequirePositive(o.map.slice_m, source, "map.slice_m");
   RequirePositive(o.map.fresh_radius_m, source, "map.fresh_radius_m");
   RequirePositive(o.map.fresh_collision_radius_m, source, "map.fresh_collision_radius_m");
@@ -160,6 +168,16 @@ void AdaptPlannerOptions(const PlannerProcessOptions& o, WholeBodyPlannerOptions
   MakeDeterministic(planner, budgets);
 }
 
+void ApplyPlanLimits(const PlannerProcessOptions& o, RobotModel* model, WholeBodyPlannerOptions* planner) {
+  const double share = o.limits.acceleration_share;
+  if (!planner->base_limits) planner->base_limits = model->base_limits;
+  for (BaseLimits* base : {&*planner->base_limits, &model->base_limits}) {
+    base->a_max_mps2 *= share;
+    base->beta_max_radps2 *= share;
+  }
+  model->joint_limits.qdd_max_radps2 *= share;
+}
+
 double FieldUpdatePeriod(const PlannerProcessOptions& o) {
   constexpr double kOnlyWhenAPlanAsks_s = 1e6;  // 11.6 days: in practice never by itself
   return o.deterministic.enabled ? kOnlyWhenAPlanAsks_s : o.map.field_update_period_s;
@@ -178,6 +196,7 @@ PlannerProcessOptions LoadPlannerProcessOptions(const std::string& path) {
   ReadTriggers(top.Section("triggers"), &o.triggers);
   ReadStop(top.Section("stop"), &o.stop);
   ReadGoals(top.Section("goals"), &o.goals);
+  ReadLimits(top.Section("limits"), &o.limits);
   ReadDeterministic(top.Section("deterministic"), &o.deterministic);
   top.Read("status_period_s", &o.status_period_s);
   top.Finish();

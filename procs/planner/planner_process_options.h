@@ -9,6 +9,7 @@
 
 #include "core/map/voxel_map_fields.h"
 #include "core/planner/whole_body_planner_options.h"
+#include "core/robot/robot_model.h"
 #include "core/validate/trajectory_collision_scan.h"
 
 namespace topay::planner {
@@ -159,6 +160,16 @@ struct DeterministicModeOptions {
   double time_limit_s = 30.0;
 };
 
+/// The limits plans keep to, against the robot's (config/robot/: what the tracker may command
+/// and the CAN bridge enforces).
+struct PlanLimitOptions {
+  /// Plans (and stops) use this share of the robot's base and joint acceleration limits (base
+  /// a_max and beta_max, each joint's qdd_max), so that a tracker behind its reference can
+  /// still brake harder than planned: at the full limits a robot lagging at the start of a
+  /// braking phase overshoots the trajectory's end (docs/reliability.md, finding 16). In (0, 1].
+  double acceleration_share = 0.85;
+};
+
 struct PlannerProcessOptions {
   std::string source;       ///< The file these came from ("" = defaults).
   std::string robot_urdf;   ///< "" = the shipped robot (config/robot/topay_mm.urdf).
@@ -169,6 +180,7 @@ struct PlannerProcessOptions {
   ReplanTriggerOptions triggers;
   SafeStopOptions stop;
   GoalCheckOptions goals;
+  PlanLimitOptions limits;
   DeterministicModeOptions deterministic;
   /// PLANNER_STATUS is sent on every change and at least this often (s). > 0.
   double status_period_s = 1.0;
@@ -186,6 +198,11 @@ void CheckPlannerProcessOptions(const PlannerProcessOptions& options, const std:
 /// validator's obstacle margin; in deterministic mode, MakeDeterministic with the section's
 /// budgets and its time limit.
 void AdaptPlannerOptions(const PlannerProcessOptions& options, WholeBodyPlannerOptions* planner);
+
+/// The robot's limits as plans keep to them: limits.acceleration_share of the base and joint
+/// acceleration limits, in `model` (what the planner's kinematics and stops read) and in
+/// planner->base_limits (set to the model's first if absent).
+void ApplyPlanLimits(const PlannerProcessOptions& options, RobotModel* model, WholeBodyPlannerOptions* planner);
 
 /// How often the field thread updates the fields by itself (s): map.field_update_period_s; in
 /// deterministic mode never (only when a plan asks, so that the batches follow the messages

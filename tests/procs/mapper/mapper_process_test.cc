@@ -3,7 +3,8 @@
 // occupied in the map, the space between robot and boxes is free, the robot's own points never
 // enter the map; a box removed from the world is cleared and one added appears; MAP_UPDATE
 // comes at >= 2 Hz as a snapshot then deltas, in kilobytes; --save writes an OctoMap that
-// --prior starts from. Bad clouds are counted, skipped and leave the mapper running.
+// --prior starts from; a mapper killed mid-run starts again from its journal (--checkpoint).
+// Bad clouds are counted, skipped and leave the mapper running.
 
 #include <gtest/gtest.h>
 
@@ -12,6 +13,7 @@
 #include <functional>
 #include <limits>
 
+#include "core/map/occupancy_map.h"
 #include "graph_test_support.h"
 #include "procs/msgs/map_receiver.h"
 #include "topay/map_update_t.hpp"
@@ -36,6 +38,17 @@ constexpr const char* kRoom = R"({"boxes": [
   {"center": [0.0, 2.5, 0.4], "size": [1.0, 1.0, 0.8], "yaw": 0},
   {"center": [-2.5, 0.0, 0.75], "size": [0.6, 0.6, 1.5], "yaw": 0},
   {"center": [0.0, 4.2, 0.8], "size": [4.0, 0.4, 1.6], "yaw": 0}]})";
+
+VoxelStateCounts CountsOf(const msgs::MapReceiver& receiver) {
+  VoxelStateCounts counts;
+  for (const std::uint8_t b : receiver.states()) {
+    const auto state = static_cast<VoxelState>(b);
+    counts.occupied += state == VoxelState::kOccupied;
+    counts.free += state == VoxelState::kFree;
+    counts.unknown += state == VoxelState::kUnknown;
+  }
+  return counts;
+}
 
 struct MapListener {
   msgs::MapReceiver receiver;
@@ -211,6 +224,42 @@ TEST_F(MapperProcess, ARemovedBoxIsClearedAndAnAddedOneAppears) {
   EXPECT_GE(map_.FaceYOccupied(-1.5, 1.3, 1.7, 0.05, 0.95), 0.95);
 }
 
+// Finding 21 of docs/reliability.md: a mapper killed mid-run and started again by the launcher
+// (same --checkpoint) publishes the map it had, not an empty one (a planner taking unknown
+// voxels as free would plan through what is now out of the LiDAR's view).
+TEST_F(MapperProcess, AMapperKilledMidRunStartsAgainFromItsJournal) {
+  const std::string journal = dir_ + "/map_journal.bin";
+  StartMapper({"--checkpoint", journal});
+  StartSim();
+  watcher_->Spin(3.0);
+  ASSERT_TRUE(map_.receiver.has_map()) << ReadText(dir_ + "/mapper.txt");
+  ASSERT_GE(map_.FaceXOccupied(2.8, -1.4, 1.4, 0.05, 1.15), 0.95);
+  // The crate goes from the world after the last snapshot: the journal's deltas carry it.
+  SendEvent(sim_event_t::DISAPPEAR, 1, Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero());
+  watcher_->Spin(1.5);
+  ASSERT_LE(map_.FaceYOccupied(2.0, -0.45, 0.45, 0.15, 0.75), 0.05);
+  const VoxelStateCounts before = CountsOf(map_.receiver);
+  // No scans after the kill (the sim stops first), so the restarted mapper can only know the
+  // map from its journal.
+  kill(sim_, SIGKILL);
+  WaitFor(sim_, 5.0);
+  sim_ = -1;
+  watcher_->Spin(0.3);
+  const VoxelStateCounts last = CountsOf(map_.receiver);
+  kill(mapper_, SIGKILL);
+  WaitFor(mapper_, 5.0);
+  map_.receiver = msgs::MapReceiver();
+  StartMapper({"--checkpoint", journal});
+  ASSERT_TRUE(watcher_->SpinUntil([&] { return map_.receiver.has_map(); }, 10.0)) << ReadText(dir_ + "/mapper.txt");
+  const VoxelStateCounts after = CountsOf(map_.receiver);
+  EXPECT_EQ(after.occupied, last.occupied);
+  EXPECT_EQ(after.free, last.free);
+  EXPECT_GE(after.occupied, before.occupied / 2);
+  EXPECT_GE(map_.FaceXOccupied(2.8, -1.4, 1.4, 0.05, 1.15), 0.95);
+  EXPECT_LE(map_.FaceYOccupied(2.0, -0.45, 0.45, 0.15, 0.75), 0.05);
+  EXPECT_NE(ReadText(dir_ + "/mapper.txt").find("map of the journal"), std::string::npos) << ReadText(dir_ + "/mapper.txt");
+}
+
 TEST_F(MapperProcess, BadCloudsAreCountedAndSkipped) {
   config_ = dir_ + "/small_clouds.yaml";
   WriteText(config_, "filter:\n  input:\n    max_points: 1000\n");
@@ -257,6 +306,8 @@ TEST(MapperProcessErrors, ExitCodesForBadFilesAndFlags) {
   EXPECT_NE(ReadText(dir + "/out.txt").find("snapshot_perod_s"), std::string::npos) << ReadText(dir + "/out.txt");
   EXPECT_EQ(run({Bin("topay-mapper"), "--prior", dir + "/garbage.bt"}), 1);
   EXPECT_NE(ReadText(dir + "/out.txt").find("garbage.bt"), std::string::npos) << ReadText(dir + "/out.txt");
+  EXPECT_EQ(run({Bin("topay-mapper"), "--checkpoint", dir + "/garbage.bt"}), 1);
+  EXPECT_NE(ReadText(dir + "/out.txt").find("map journal"), std::string::npos) << ReadText(dir + "/out.txt");
   EXPECT_EQ(run({Bin("topay-mapper"), "--no-such-flag"}), 2);
 }
 

@@ -70,6 +70,9 @@ TEST(PlannerProcessOptionsTest, ValuesAreReadAndBadOnesNamed) {
   expect_error("deterministic: {rrt_iterations: -3}\n", "deterministic.rrt_iterations");
   expect_error("deterministic: {time_limit_s: 0}\n", "deterministic.time_limit_s");
   expect_error("deterministic: {enable: true}\n", "deterministic.enable");
+  expect_error("limits: {acceleration_share: 0}\n", "limits.acceleration_share");
+  expect_error("limits: {acceleration_share: 1.2}\n", "limits.acceleration_share");
+  expect_error("limits: {acceleration_share: .nan}\n", "limits.acceleration_share");
 }
 
 TEST(PlannerProcessOptionsTest, DeterministicModeIsOffByDefaultAndMakesThePlansDependOnWorkBudgets) {
@@ -95,6 +98,33 @@ TEST(PlannerProcessOptionsTest, DeterministicModeIsOffByDefaultAndMakesThePlansD
   EXPECT_EQ(planner.time_limit_s, 12.0);
   EXPECT_EQ(planner.optimizer.time_limit_s, 12.0) << "a candidate is bounded by the plan's limit, not its own";
   EXPECT_GT(FieldUpdatePeriod(o), 1e5) << "the fields update only when a plan asks";
+}
+
+// Finding 16 of docs/reliability.md: plans keep headroom below the limits the bridge enforces.
+TEST(PlannerProcessOptionsTest, PlansKeepAShareOfTheAccelerationLimits) {
+  const PlannerProcessOptions shipped = LoadPlannerProcessOptions(TOPAY_SOURCE_DIR "/config/planner/planner.yaml");
+  EXPECT_LT(shipped.limits.acceleration_share, 1.0);
+  RobotModel model;
+  model.base_limits = BaseLimits{.v_max_mps = 1.0, .a_max_mps2 = 0.8, .omega_max_radps = 0.9, .beta_max_radps2 = 1.0};
+  model.joint_limits.qd_max_radps = Eigen::VectorXd::Constant(7, 1.5);
+  model.joint_limits.qdd_max_radps2 = Eigen::VectorXd::Constant(7, 2.0);
+  PlannerProcessOptions o;
+  o.limits.acceleration_share = 0.5;
+  WholeBodyPlannerOptions planner;
+  ApplyPlanLimits(o, &model, &planner);
+  ASSERT_TRUE(planner.base_limits.has_value());
+  EXPECT_DOUBLE_EQ(planner.base_limits->a_max_mps2, 0.4);
+  EXPECT_DOUBLE_EQ(planner.base_limits->beta_max_radps2, 0.5);
+  EXPECT_DOUBLE_EQ(planner.base_limits->v_max_mps, 1.0) << "speeds untouched";
+  EXPECT_DOUBLE_EQ(model.base_limits.a_max_mps2, 0.4);
+  EXPECT_DOUBLE_EQ(model.joint_limits.qdd_max_radps2(3), 1.0);
+  EXPECT_DOUBLE_EQ(model.joint_limits.qd_max_radps(3), 1.5);
+  // Limits the planner config sets (the benchmark's) are scaled the same way.
+  WholeBodyPlannerOptions with_limits;
+  with_limits.base_limits = BaseLimits{.v_max_mps = 1.0, .a_max_mps2 = 1.0, .omega_max_radps = 1.25, .beta_max_radps2 = 2.0};
+  ApplyPlanLimits(o, &model, &with_limits);
+  EXPECT_DOUBLE_EQ(with_limits.base_limits->a_max_mps2, 0.5);
+  EXPECT_DOUBLE_EQ(with_limits.base_limits->beta_max_radps2, 1.0);
 }
 
 }  // namespace
