@@ -68,7 +68,10 @@ bool MissionNode::TrackerFinished() const {
   // "goal reached at rest" naming no trajectory (a hold had dropped them all): the tracker at
   // rest with nothing to track is done. Before, the mission waited for a FINISHED that never
   // came until its step timed out (the fault campaign's can-heartbeat-loss, docs/reliability.md).
-  if (reached_at_rest_ && ended_trajectory_id_ == 0 && tracker_state_ == tracker_status_t::IDLE) return true;
+  // The same with the tracker FINISHED on a trajectory of another goal (a restarted planner's
+  // earlier one: at rest at its end, finding 23).
+  const bool tracker_at_rest = tracker_state_ == tracker_status_t::IDLE || tracker_state_ == tracker_status_t::FINISHED;
+  if (reached_at_rest_ && ended_trajectory_id_ == 0 && tracker_at_rest) return true;
   return tracker_finished_id_ != 0 && (ended_trajectory_id_ == 0 || tracker_finished_id_ == ended_trajectory_id_);
 }
 

@@ -392,6 +392,28 @@ TEST_F(MissionNodeTest, AGoalReachedAtRestAfterATrackerHoldCountsAsArrival) {
   EXPECT_EQ(node_->state(), mission_status_t::SUCCEEDED);
 }
 
+// Finding 23 of docs/reliability.md: the planner restarted while the robot ran a trajectory of
+// the goal's first attempt; that trajectory took the robot to the target, and the second
+// attempt's goal was found reached at rest, naming no trajectory, with the tracker FINISHED on
+// the first attempt's trajectory. Before: the mission waited for a FINISHED of its own until
+// the step timed out (120 s).
+TEST_F(MissionNodeTest, AGoalReachedAtRestWithTheTrackerFinishedOnAnEarlierAttemptCountsAsArrival) {
+  Make({Goto(a_, "pickup")});
+  Start();
+  Tracker(kFirstGoalId, tracker_status_t::TRACKING, 1.0, 3);
+  Planner(kFirstGoalId, planner_status_t::SUCCEEDED, 1.0, "trajectory 3 out");
+  Planner(kFirstGoalId, planner_status_t::FAILED, 6.0, "", "moving start: the lead-in collides");
+  node_->Tick(At(6.6));  // the second attempt goes out
+  ASSERT_EQ(goals_.size(), 2u);
+  const std::int64_t second = goals_.back().goal_id;
+  ASSERT_NE(second, kFirstGoalId);
+  Robot(a_, 7.0);
+  Tracker(kFirstGoalId, tracker_status_t::FINISHED, 7.0, 3);  // the first attempt's trajectory
+  EXPECT_FALSE(node_->finished());
+  Planner(second, planner_status_t::SUCCEEDED, 7.2, "goal reached at rest: end effector 0.006 m / 0.003 rad");
+  EXPECT_EQ(node_->state(), mission_status_t::SUCCEEDED);
+}
+
 // A trajectory the planner reported ended still needs the tracker's FINISHED: an IDLE tracker
 // (e.g. between trajectories) is not enough there.
 TEST_F(MissionNodeTest, AnEndedTrajectoryIsNotArrivedByAnIdleTracker) {
