@@ -60,6 +60,12 @@ struct GridGeometry3 {
   }
 };
 
+/// True if `a` and `b` are the same grid: origin, resolution and dims exactly equal (as a grid
+/// sent in a message or written to a file comes back).
+inline bool SameGeometry(const GridGeometry3& a, const GridGeometry3& b) {
+  return a.origin_W_m == b.origin_W_m && a.resolution_m == b.resolution_m && a.dims == b.dims;
+}
+
 /// The 2D counterpart of GridGeometry3 in the world xy plane: cell (ix, iy) covers
 /// [o + i res, o + (i + 1) res) per axis, stored x fastest (linear index iy nx + ix).
 struct GridGeometry2 {

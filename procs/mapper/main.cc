@@ -9,8 +9,6 @@
 #include <CLI/CLI.hpp>
 #include <spdlog/spdlog.h>
 
-#include <algorithm>
-#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <memory>
@@ -52,15 +50,10 @@ bool StartFromJournal(const MapperOptions& options, OccupancyMap* map) {
   if (options.checkpoint_path.empty()) return false;
   const std::optional<JournaledMap> journaled = ReadMapJournal(options.checkpoint_path, options.publish.codec);
   if (!journaled) return false;
-  const GridGeometry3& g = map->geometry();
-  const GridGeometry3& j = journaled->geometry;
-  if (j.dims != g.dims || std::abs(j.resolution_m - g.resolution_m) > 1e-9 || !j.origin_W_m.isApprox(g.origin_W_m, 1e-9)) {
+  if (!SameGeometry(journaled->geometry, map->geometry())) {
     throw ConfigError(options.checkpoint_path, "", "the map journal holds another grid than the mapper's (config changed?)");
   }
-  std::vector<VoxelState> states(journaled->states.size());
-  std::transform(journaled->states.begin(), journaled->states.end(), states.begin(),
-                 [](std::uint8_t b) { return static_cast<VoxelState>(b); });
-  const std::int64_t seeded = SeedKnownVoxels(states, map);
+  const std::int64_t seeded = SeedKnownVoxels(VoxelStatesOf(journaled->states), map);
   spdlog::warn("restarted: the map of the journal {} ({} updates, {} voxels known){}", options.checkpoint_path,
                journaled->records, seeded,
                journaled->stopped_early.empty() ? "" : "; its tail was dropped: " + journaled->stopped_early);
@@ -137,9 +130,7 @@ int main(int argc, char** argv) {
       if (octomap && !from_journal) {
         octomap->SaveWhenIdle(options.save_path);
       } else {
-        const std::span<const std::uint8_t> bytes = mapper->map().states();
-        std::vector<VoxelState> states(bytes.size());
-        std::transform(bytes.begin(), bytes.end(), states.begin(), [](std::uint8_t b) { return static_cast<VoxelState>(b); });
+        const std::vector<VoxelState> states = VoxelStatesOf(mapper->map().states());
         WriteOcTreeFile(*OcTreeFromDenseStates(states, g, MirrorOptionsOf(options)), options.save_path);
       }
       spdlog::info("saved the OctoMap to {}", options.save_path);

@@ -1,9 +1,16 @@
 #include "procs/mapper/map_seed.h"
 
+#include <algorithm>
 #include <stdexcept>
 #include <string>
 
 namespace topay::mapper {
+
+std::vector<VoxelState> VoxelStatesOf(std::span<const std::uint8_t> bytes) {
+  std::vector<VoxelState> states(bytes.size());
+  std::transform(bytes.begin(), bytes.end(), states.begin(), [](std::uint8_t b) { return static_cast<VoxelState>(b); });
+  return states;
+}
 
 std::int64_t SeedKnownVoxels(std::span<const VoxelState> states, OccupancyMap* map) {
   const GridGeometry3& g = map->geometry();

@@ -6,10 +6,14 @@
 
 #include <cstdint>
 #include <span>
+#include <vector>
 
 #include "core/map/occupancy_map.h"
 
 namespace topay::mapper {
+
+/// The states of a map's state bytes (OccupancyMap::states(), a message's or journal's grid).
+std::vector<VoxelState> VoxelStatesOf(std::span<const std::uint8_t> bytes);
 
 /// Sets each kOccupied / kFree voxel of `states` (one per voxel of map->geometry(), Index
 /// order; std::invalid_argument for another count) in *map. Returns the number set.

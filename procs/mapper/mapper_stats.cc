@@ -56,7 +56,7 @@ std::string MapperStats::Report() const {
                 static_cast<long long>(clouds), static_cast<long long>(clouds_rejected),
                 static_cast<long long>(points_non_finite), static_cast<long long>(scans_without_state),
                 static_cast<long long>(updates), static_cast<long long>(snapshots),
-                static_cast<long long>(journal_errors),                static_cast<long long>(states_rejected));
+                static_cast<long long>(journal_errors), static_cast<long long>(states_rejected));
   return head + Line("filter: range", range_ms, "ms") + Line("filter: ground", ground_ms, "ms") +
          Line("filter: self", self_ms, "ms") + Line("filter: voxel grid", voxel_ms, "ms") +
          Line("filter: outliers", outlier_ms, "ms") + Line("filter: total", filter_ms, "ms") +

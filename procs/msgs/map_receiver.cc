@@ -3,14 +3,6 @@
 #include <utility>
 
 namespace topay::msgs {
-namespace {
-
-bool SameGeometry(const GridGeometry3& a, const GridGeometry3& b) {
-  return a.origin_W_m == b.origin_W_m && a.resolution_m == b.resolution_m && a.dims == b.dims;
-}
-
-}  // namespace
-
 MapReceiver::MapReceiver(const MapCodecOptions& options) : options_(options) {}
 
 MapAcceptResult MapReceiver::Accept(const map_update_t& msg) {

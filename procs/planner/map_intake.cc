@@ -61,10 +61,6 @@ int ClearArmOverlaps(const GridGeometry3& geometry, const Kinematics& kinematics
   return cleared;
 }
 
-bool SameGeometry(const GridGeometry3& a, const GridGeometry3& b) {
-  return a.origin_W_m == b.origin_W_m && a.resolution_m == b.resolution_m && a.dims == b.dims;
-}
-
 MapIntake::MapIntake(UnknownVoxelPolicy unknown, const msgs::MapCodecOptions& codec)
     : unknown_(unknown), receiver_(codec) {}
 

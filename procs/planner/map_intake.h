@@ -86,7 +86,4 @@ int ClearBaseFootprint(const GridGeometry3& geometry, const Eigen::Vector2d& p_W
 int ClearArmOverlaps(const GridGeometry3& geometry, const Kinematics& kinematics, const WholeBodyState& state,
                      double max_depth_m, UnknownVoxelPolicy unknown, std::vector<std::uint8_t>* states);
 
-/// True if `a` and `b` are the same grid (origin, resolution, dims).
-bool SameGeometry(const GridGeometry3& a, const GridGeometry3& b);
-
 }  // namespace topay::planner

@@ -91,5 +91,20 @@ TEST(GridGeometryTest, ValidateRejectsHandMadeBadGeometries) {
   EXPECT_THROW(grid2.Validate("test"), std::invalid_argument);
 }
 
+TEST(GridGeometry3Test, SameGeometryComparesOriginResolutionAndDims) {
+  const GridGeometry3 g =
+      GridGeometry3::FromBounds(Eigen::AlignedBox3d(Eigen::Vector3d(-1, -1, 0), Eigen::Vector3d(1, 1, 0.5)), 0.05);
+  EXPECT_TRUE(SameGeometry(g, g));
+  GridGeometry3 other = g;
+  other.origin_W_m.x() += 0.05;
+  EXPECT_FALSE(SameGeometry(g, other));
+  other = g;
+  other.resolution_m = 0.1;
+  EXPECT_FALSE(SameGeometry(g, other));
+  other = g;
+  other.dims.z() += 1;
+  EXPECT_FALSE(SameGeometry(g, other));
+}
+
 }  // namespace
 }  // namespace topay

@@ -36,5 +36,12 @@ TEST(MapSeedTest, AnotherCountOfStatesIsRefused) {
   EXPECT_EQ(map.CountStates().occupied, 0);
 }
 
+TEST(MapSeedTest, StateBytesAreReadAsVoxelStates) {
+  const std::vector<std::uint8_t> bytes{static_cast<std::uint8_t>(VoxelState::kFree),
+                                        static_cast<std::uint8_t>(VoxelState::kOccupied),
+                                        static_cast<std::uint8_t>(VoxelState::kUnknown)};
+  EXPECT_EQ(VoxelStatesOf(bytes), (std::vector<VoxelState>{VoxelState::kFree, VoxelState::kOccupied, VoxelState::kUnknown}));
+}
+
 }  // namespace
 }  // namespace topay::mapper
