@@ -6,6 +6,7 @@
 #include <array>
 #include <cmath>
 
+#include "core/common/angles.h"
 #include "core/common/sample_statistics.h"
 #include "procs/msgs/convert_trajectory.h"
 #include "procs/runtime/process_loop.h"
@@ -44,8 +45,10 @@ bool AtRest(const ControlCommand& c, double tolerance) {
 TrackerNode::TrackerNode(const TrackerOptions& options, const TrackerLimits& limits)
     : options_(options),
       num_joints_(limits.num_joints()),
+      base_limits_(limits.base),
       tracker_(options.nmpc, limits),
-      state_intake_(num_joints_) {
+      state_intake_(num_joints_),
+      planner_watch_(options.planner_watch) {
   solve_ms_.reserve(1 << 16);
   cycle_.command.num_joints = num_joints_;
   cycle_.command.qdot_radps.assign(num_joints_, 0.0);
@@ -70,7 +73,7 @@ void TrackerNode::OnTrajectory(const poly_trajectory_t& msg, std::int64_t now_ut
       spdlog::warn("dropped TRAJECTORY {} (#{}): {}", msg.trajectory_id, counts_.trajectories_dropped_held,
                    held_         ? "the drives are not running (" + hold_reason_ + ")"
                    : stale_held_ ? std::string("the robot state is stale")
-                                 : std::string("tracking was lost, braking"));
+                                 : lost_reason_);
     }
     return;
   }
@@ -139,7 +142,25 @@ void TrackerNode::OnRobotState(const robot_state_t& msg) {
     spdlog::warn("ROBOT_STATE: {}", state_intake_.gate_reason());
   }
   if (std::isfinite(estimate->gripper)) measured_gripper_ = estimate->gripper;
+  CheckJump(*estimate);
   state_ = std::move(estimate);
+}
+
+void TrackerNode::CheckJump(const msgs::RobotStateEstimate& next) {
+  if (!state_ || held() || !MayMove()) return;
+  const double dt = 1e-6 * static_cast<double>(next.utime - state_->utime);
+  const double moved_m = std::hypot(next.state.x_m - state_->state.x_m, next.state.y_m - state_->state.y_m);
+  const double turned_rad = std::abs(WrapAngle(next.state.yaw_rad - state_->state.yaw_rad));
+  const double excess_m = moved_m - base_limits_.v_max_mps * dt;
+  const double excess_rad = turned_rad - base_limits_.omega_max_radps * dt;
+  const bool jumped = (options_.jump_position_m > 0.0 && excess_m > options_.jump_position_m) ||
+                      (options_.jump_yaw_rad > 0.0 && excess_rad > options_.jump_yaw_rad);
+  if (!jumped) return;
+  BrakeOff(&counts_.jumps, "the robot state jumped, braking",
+           fmt::format("the robot state jumped: {:.3f} m and {:.3f} rad in {:.3f} s, {:.3f} m and {:.3f} rad beyond the "
+                       "robot's limits (at most {:.3f} m, {:.3f} rad): the reference is no longer where the robot "
+                       "is; braking to a stop",
+                       moved_m, turned_rad, dt, excess_m, excess_rad, options_.jump_position_m, options_.jump_yaw_rad));
 }
 
 void TrackerNode::OnGripper(const gripper_command_t& msg) {
@@ -172,6 +193,45 @@ void TrackerNode::OnDriveStatus(const drive_status_t& msg) {
   DropTrajectories(fmt::format("drives not running ({}): holding the robot at zero", hold_reason_));
 }
 
+void TrackerNode::OnHeartbeat(const heartbeat_t& msg, std::int64_t now_utime) {
+  const double silence_s = planner_watch_.SilenceS(now_utime);
+  switch (planner_watch_.OnHeartbeat(msg, now_utime)) {
+    case PlannerWatch::Event::kFirstHeard:
+      spdlog::info("planner '{}' heard (pid {}): a restart or {:.1f} s of silence stops its trajectories",
+                   msg.process_name, msg.pid, options_.planner_watch.silence_s);
+      return;
+    case PlannerWatch::Event::kRestarted:
+      if (!held() && MayMove()) {
+        BrakeOff(&counts_.unguarded, "the planner restarted, braking",
+                 fmt::format("the planner restarted (pid {} -> {}, {:.2f} s after the last heartbeat): nobody guards "
+                             "its trajectories any more; braking to a stop",
+                             planner_watch_.previous_pid(), msg.pid, silence_s));
+      } else {
+        spdlog::info("the planner restarted (pid {} -> {}): no trajectory under way", planner_watch_.previous_pid(),
+                     msg.pid);
+      }
+      return;
+    case PlannerWatch::Event::kIgnored:
+      if (Every(planner_watch_.ignored())) {
+        spdlog::warn("HEARTBEAT of '{}' (pid {}, seq {}) ignored (#{}): not the live planner's", msg.process_name,
+                     msg.pid, msg.seq, planner_watch_.ignored());
+      }
+      return;
+    case PlannerWatch::Event::kNone: return;
+  }
+}
+
+bool TrackerNode::MayMove() const {
+  return !pending_.empty() || (active_ && cycle_.status.state != tracker_status_t::FINISHED);
+}
+
+void TrackerNode::BrakeOff(std::int64_t* count, std::string reason, std::string_view why) {
+  ++*count;
+  lost_ = true;
+  lost_reason_ = std::move(reason);
+  DropTrajectories(why);
+}
+
 void TrackerNode::DropTrajectories(std::string_view why) {
   const std::int64_t dropped = (active_ ? 1 : 0) + static_cast<std::int64_t>(pending_.size());
   counts_.trajectories_dropped_held += dropped;
@@ -189,6 +249,12 @@ const TrackerCycle& TrackerNode::Step(std::int64_t now_utime) {
   if (stale_held_ && StateFresh(now_utime)) {
     stale_held_ = false;
     spdlog::info("robot state fresh again: tracker released (at rest, waiting for a trajectory)");
+  }
+  if (!held() && MayMove() && planner_watch_.Silent(now_utime)) {
+    BrakeOff(&counts_.unguarded, "the planner is silent, braking",
+             fmt::format("the planner is silent ({:.1f} s without a heartbeat, limit {:.1f} s): nobody guards the "
+                         "trajectories; braking to a stop",
+                         planner_watch_.SilenceS(now_utime), options_.planner_watch.silence_s));
   }
   if (lost_ && !held_ && !stale_held_) return StepLost(now_utime);
   if (held()) {
@@ -234,6 +300,7 @@ const TrackerCycle& TrackerNode::Step(std::int64_t now_utime) {
       out.position_error_m > options_.lost_position_m) {
     ++counts_.losses;
     lost_ = true;
+    lost_reason_ = "tracking lost, braking";
     DropTrajectories(fmt::format("tracking lost: the base {:.2f} m from the reference (limit {:.2f} m): braking "
                                  "to a stop",
                                  out.position_error_m, options_.lost_position_m));
@@ -258,7 +325,7 @@ const TrackerCycle& TrackerNode::StepLost(std::int64_t now_utime) {
   last_mode_ = out.mode;
   if (AtRest(out.command, options_.rest_command)) {
     lost_ = false;
-    spdlog::info("at rest after tracking was lost: tracker released (waiting for a trajectory)");
+    spdlog::info("at rest ({}): tracker released (waiting for a trajectory)", lost_reason_);
   }
   return cycle_;
 }
@@ -315,7 +382,7 @@ std::int8_t TrackerNode::Health() const {
 std::string TrackerNode::StatusLine() const {
   if (held()) {
     return fmt::format("held: {}, {} trajectories dropped",
-                       held_ ? hold_reason_ : stale_held_ ? "robot state stale" : "tracking lost, braking",
+                       held_ ? hold_reason_ : stale_held_ ? "robot state stale" : lost_reason_,
                        counts_.trajectories_dropped_held);
   }
   return fmt::format("{} trajectory {} (pending {}), {} solves, {} fallbacks, {} rejected", TrackerModeName(last_mode_),
@@ -330,7 +397,9 @@ std::string TrackerNode::Report() const {
   return fmt::format(
       "topay-tracker: {} cycles, {} solves (median {:.3f} ms, p99 {:.3f} ms, max {:.3f} ms), fallbacks {} "
       "({} over budget, {} failed)\n"
-      "  stops: {} stale state, {} trajectory ended, {} tracking lost; held {} times (drives not running), {} times "
+      "  stops: {} stale state, {} trajectory ended, {} tracking lost, {} state jumps, {} unguarded (planner restarted "
+      "or silent); "
+      "held {} times (drives not running), {} times "
       "(at rest on a stale state), {} trajectories dropped held\n"
       "  trajectories: {} received, {} became active, {} rejected, {} ignored (not newer), {} pending superseded\n"
       "  robot states: {} ({} rejected: {}); gripper commands: {} ({} rejected)\n",
@@ -338,7 +407,7 @@ std::string TrackerNode::Report() const {
       solve_ms_.empty() ? 0.0 : NearestRankQuantile(solve_ms_, 0.99),
       solve_ms_.empty() ? 0.0 : *std::max_element(solve_ms_.begin(), solve_ms_.end()),
       summary.num_over_budget + summary.num_failed, summary.num_over_budget, summary.num_failed, c.stops_stale,
-      c.stops_ended, c.losses, c.holds, c.stale_holds, c.trajectories_dropped_held, c.trajectories, c.switches, c.trajectories_rejected, c.trajectories_ignored, c.pending_superseded,
+      c.stops_ended, c.losses, c.jumps, c.unguarded, c.holds, c.stale_holds, c.trajectories_dropped_held, c.trajectories, c.switches, c.trajectories_rejected, c.trajectories_ignored, c.pending_superseded,
       c.states, c.states_rejected, state_intake_.Report(), c.grippers, c.grippers_rejected);
 }
 
@@ -352,6 +421,9 @@ void ConnectTrackerNode(procs::ProcessLoop* loop, TrackerNode* node, double peri
                                      [node](const gripper_command_t& msg) { node->OnGripper(msg); });
   loop->Subscribe<drive_status_t>(std::string(channels::DRIVE_STATUS),
                                   [node](const drive_status_t& msg) { node->OnDriveStatus(msg); });
+  loop->Subscribe<heartbeat_t>(std::string(channels::HEARTBEAT), [node](const heartbeat_t& msg) {
+    node->OnHeartbeat(msg, procs::NowUtime());
+  });
   loop->AddTimer(period_s, [loop, node] {
     const TrackerCycle& cycle = node->Step(procs::NowUtime());
     loop->lcm().publish(std::string(channels::CONTROL_COMMAND), &cycle.command);

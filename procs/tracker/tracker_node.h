@@ -32,6 +32,11 @@
 // Tracking lost: a base position error above options.lost_position_m while tracking drops the
 // trajectory; the robot brakes within the limits (status HELD, trajectories dropped) and is
 // released at rest, where the planner plans anew.
+//
+// Unguarded trajectories (PlannerWatch, finding 24): the planner that published the trajectories
+// restarted (its HEARTBEAT from a new process) or fell silent (options.planner_watch.silence_s):
+// nobody checks them against the map any more, so they are dropped and the robot brakes the same
+// way (HELD until at rest); the planner, restarted, plans anew from rest where it stopped.
 
 #include <cstdint>
 #include <deque>
@@ -46,10 +51,12 @@
 #include "core/trajectory/arc_yaw_trajectory.h"
 #include "procs/msgs/convert_robot_state.h"
 #include "procs/msgs/robot_state_intake.h"
+#include "procs/tracker/planner_watch.h"
 #include "procs/tracker/tracker_options.h"
 #include "topay/control_command_t.hpp"
 #include "topay/drive_status_t.hpp"
 #include "topay/gripper_command_t.hpp"
+#include "topay/heartbeat_t.hpp"
 #include "topay/poly_trajectory_t.hpp"
 #include "topay/robot_state_t.hpp"
 #include "topay/tracker_status_t.hpp"
@@ -76,6 +83,10 @@ struct TrackerCounts {
   std::int64_t trajectories_dropped_held = 0;  ///< active, pending or arriving ones dropped while held
   std::int64_t stale_holds = 0;  ///< times the robot came to rest on a stale state (trajectory dropped, held)
   std::int64_t losses = 0;       ///< times tracking was lost (options.lost_position_m): dropped, braked, held
+  /// times the planner restarted or fell silent while the robot could move: dropped, braked, held
+  std::int64_t unguarded = 0;
+  /// times the robot state jumped (options.jump_*) while the robot could move: dropped, braked, held
+  std::int64_t jumps = 0;
 };
 
 /// One cycle's messages.
@@ -94,18 +105,22 @@ class TrackerNode {
   void OnGripper(const gripper_command_t& msg);
   /// The CAN bridge's state: not RUNNING (REPLAY aside) holds the tracker, RUNNING releases it.
   void OnDriveStatus(const drive_status_t& msg);
+  /// Every process's HEARTBEAT, received at now_utime: the planner's restart brakes the robot
+  /// off the trajectories it no longer guards (PlannerWatch).
+  void OnHeartbeat(const heartbeat_t& msg, std::int64_t now_utime);
   /// One control cycle at now_utime: activates a pending trajectory whose start has come,
   /// steps the NMPC and returns the command and the status to publish.
   const TrackerCycle& Step(std::int64_t now_utime);
 
   const TrackerCounts& counts() const { return counts_; }
   const NmpcTracker& tracker() const { return tracker_; }
+  const PlannerWatch& planner_watch() const { return planner_watch_; }
   /// The active trajectory's id (0: none) and the next pending one's (0: none).
   std::int64_t active_id() const { return active_ ? active_->id : 0; }
   std::int64_t pending_id() const { return pending_.empty() ? 0 : pending_.front().id; }
   /// True while the drives are not running (the last DRIVE_STATUS was not RUNNING), the
   /// robot, stopped on a stale state, waits for a fresh one, or it brakes after tracking was
-  /// lost.
+  /// lost or its trajectories were left unguarded.
   bool held() const { return held_ || stale_held_ || lost_; }
   /// heartbeat_t::WARN while held or stopping on a stale or missing robot state with a
   /// trajectory, else OK; and the heartbeat's status line (mode, ids, solves, fallbacks, rejected messages).
@@ -130,10 +145,19 @@ class TrackerNode {
   bool StateFresh(std::int64_t now_utime) const;
   // Tracking lost: the NMPC's stop (no reference) within the limits, status HELD, released at rest.
   const TrackerCycle& StepLost(std::int64_t now_utime);
+  // Drops the trajectories and brakes like a loss of tracking, for `reason` (the status line's
+  // words) logged with `why`; counts it in *count.
+  void BrakeOff(std::int64_t* count, std::string reason, std::string_view why);
+  // A taken state farther from the last one than the robot's limits allow (options.jump_*):
+  // brakes off the trajectories.
+  void CheckJump(const msgs::RobotStateEstimate& next);
+  // A trajectory the robot may still be moving on: active and not FINISHED, or pending.
+  bool MayMove() const;
   TrackerInput StateInput(std::int64_t now_utime);
 
   TrackerOptions options_;
   int num_joints_;
+  BaseLimits base_limits_;  // the robot's (the jump check)
   NmpcTracker tracker_;
   std::optional<std::int64_t> origin_utime_;  // utime of the core's t = 0 s (first one seen)
   std::optional<Loaded> active_;
@@ -146,7 +170,9 @@ class TrackerNode {
   bool held_ = false;
   std::string hold_reason_;  // the bridge's state and stop reason while held
   bool stale_held_ = false;  // at rest after a stale-state stop, until a fresh state
-  bool lost_ = false;        // braking after tracking was lost, until at rest
+  bool lost_ = false;        // braking after tracking was lost (or unguarded), until at rest
+  std::string lost_reason_;  // ... why, in the status line's words
+  PlannerWatch planner_watch_;
   std::vector<double> solve_ms_;
   TrackerCycle cycle_;
   TrackerCounts counts_;

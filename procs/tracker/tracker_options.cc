@@ -53,6 +53,25 @@ void ReadRebuild(YamlSection s, msgs::TrajectoryRebuildOptions* o) {
   s.Finish();
 }
 
+void ReadPlannerWatch(YamlSection s, PlannerWatchOptions* o) {
+  const YAML::Node names = s.Raw("process_names");
+  if (names.IsDefined() && !names.IsNull()) {
+    if (!names.IsSequence()) throw ConfigError(s.source(), s.FieldPath("process_names"), "expected a list of names");
+    o->process_names.clear();
+    for (const YAML::Node& name : names) {
+      if (!name.IsScalar() || name.Scalar().empty()) {
+        throw ConfigError(s.source(), s.FieldPath("process_names"), "expected non-empty process names");
+      }
+      o->process_names.push_back(name.Scalar());
+    }
+  }
+  s.Read("silence_s", &o->silence_s);
+  if (!(o->silence_s >= 0.0) || !std::isfinite(o->silence_s)) {
+    throw ConfigError(s.source(), s.FieldPath("silence_s"), "must be finite and >= 0");
+  }
+  s.Finish();
+}
+
 }  // namespace
 
 double CycleRateHz(const TrackerOptions& options) { return 1.0 / options.nmpc.control_period_s; }
@@ -73,6 +92,11 @@ TrackerOptions LoadTrackerOptions(const std::string& path) {
   if (!(o.lost_position_m >= 0.0) || !std::isfinite(o.lost_position_m)) {
     throw ConfigError(path, "lost_position_m", "must be finite and >= 0");
   }
+  for (const auto& [key, value] : {std::pair{"jump_position_m", &o.jump_position_m}, std::pair{"jump_yaw_rad", &o.jump_yaw_rad}}) {
+    top.Read(key, value);
+    if (!(*value >= 0.0) || !std::isfinite(*value)) throw ConfigError(path, key, "must be finite and >= 0");
+  }
+  ReadPlannerWatch(top.Section("planner_watch"), &o.planner_watch);
   top.Finish();
   return o;
 }

@@ -7,6 +7,7 @@
 
 #include "core/control/nmpc_options.h"
 #include "procs/msgs/trajectory_from_message.h"
+#include "procs/tracker/planner_watch.h"
 
 namespace topay::tracker {
 
@@ -32,6 +33,18 @@ struct TrackerOptions {
   /// error of normal driving (at most 0.23 m in the CAN-mode fault campaigns) and the planner's
   /// drift replan (0.3 m). 0: never. >= 0.
   double lost_position_m = 0.35;
+  /// A jump of the robot state: a taken ROBOT_STATE farther from the one before than the robot's
+  /// own limits allow in their interval (v_max dt, omega_max dt) by more than these (m, rad),
+  /// while a trajectory may move the robot, drops it and brakes the same way. The continuity
+  /// gate takes small jumps within its slack, and the NMPC then turned the base back onto a
+  /// reference 0.17 m and 0.35 rad away, through a box (finding 22: an estimator re-initialised
+  /// after a simulator restart). Normal driving in the fifth fault campaign stayed under
+  /// 1 mm and 0.001 rad of excess; a restart's jump was 0.13-0.19 m. 0: never. >= 0.
+  double jump_position_m = 0.05;
+  double jump_yaw_rad = 0.1;
+  /// The planner's HEARTBEAT (PlannerWatch): its restart, or its silence for silence_s (3 s),
+  /// drops the trajectories it published and brakes the robot the same way (finding 24).
+  PlannerWatchOptions planner_watch;
 };
 
 /// Loads options from YAML (every key optional; relative robot paths from the file's folder).

@@ -226,6 +226,11 @@ void FaultEpisode::Finish(const GraphView& view, const std::string& outcome) {
   std::string head = result_.safe_ms >= 0.0 ? fmt::format("{} after {:.0f} ms", result_.safe_evidence, result_.safe_ms)
                                             : "no stop";
   if (resets_sent_ > 0) head += fmt::format("; {} FAULT_RESET sent", resets_sent_);
+  const auto held = std::find_if(view.tracker_held_starts_s.begin(), view.tracker_held_starts_s.end(),
+                                 [&](double s) { return s >= inject_s_; });
+  if (held != view.tracker_held_starts_s.end()) {
+    head += fmt::format("; tracker HELD after {:.0f} ms", 1000.0 * (*held - inject_s_));
+  }
   result_.reaction = head + (result_.reaction.empty() ? "" : "; " + result_.reaction);
   if (!target.empty()) {
     const auto it = now.find(target);

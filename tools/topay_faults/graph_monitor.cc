@@ -12,6 +12,7 @@
 #include "topay/mission_status_t.hpp"
 #include "topay/planner_status_t.hpp"
 #include "topay/sim_contact_t.hpp"
+#include "topay/tracker_status_t.hpp"
 #include "topay_msgs/channels.h"
 #include "topay_msgs/checked_decode.h"
 
@@ -135,6 +136,12 @@ void GraphMonitor::OnMessage(const std::string& channel, const std::uint8_t* dat
         v.planner_state = p->state;
         v.planner_goal_id = p->goal_id;
         v.planner_failure = p->failure_reason;
+      }
+    } else if (channel == channels::TRACKER_STATUS) {
+      if (const auto s = CheckedDecode<tracker_status_t>(data, size, nullptr)) {
+        const bool held = s->state == tracker_status_t::HELD;
+        if (held && !v.tracker_held) v.tracker_held_starts_s.push_back(t);
+        v.tracker_held = held;
       }
     } else if (channel == channels::SIM_CONTACT) {
       if (CheckedDecode<sim_contact_t>(data, size, nullptr)) ++v.contacts;

@@ -49,6 +49,8 @@ struct GraphView {
   std::int64_t planner_goal_id = 0;
   std::string planner_failure;
   std::int64_t contacts = 0;              ///< SIM_CONTACT messages that decode (contact starts)
+  bool tracker_held = false;              ///< the last TRACKER_STATUS was HELD
+  std::vector<double> tracker_held_starts_s;  ///< receipts of a TRACKER_STATUS HELD after one that was not
   std::map<std::string, double> heartbeat_s;      ///< process name -> last HEARTBEAT receipt
   std::map<std::string, int> heartbeat_pid;       ///< process name -> pid in its last HEARTBEAT
   std::int64_t messages = 0;              ///< every message received

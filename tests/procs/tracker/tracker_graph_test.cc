@@ -14,7 +14,9 @@
 #include "core/common/angles.h"
 #include "tracker_test_trajectory.h"
 #include "graph_test_support.h"
+#include "procs/runtime/process_loop.h"
 #include "topay/control_command_t.hpp"
+#include "topay/heartbeat_t.hpp"
 #include "topay/robot_state_t.hpp"
 #include "topay/sim_status_t.hpp"
 #include "topay/tracker_status_t.hpp"
@@ -44,36 +46,56 @@ Eigen::VectorXd JointChange() {
   return change;
 }
 
-TEST(TrackerGraph, SimDrivenByTheTrackerFollowsATrajectory) {
-  std::string why;
-  if (!EnterTestNamespace(&why)) GTEST_SKIP() << why;
-  const std::string dir = TestDir("tracker_graph");
+// topay-sim (driven by CONTROL_COMMAND, no LiDAR, an empty room) and topay-tracker, running in
+// `dir`; returns once both heartbeat and the robot's state and the tracker's status come.
+struct SimAndTracker {
+  pid_t sim = 0, tracker = 0;
+};
+SimAndTracker StartSimAndTracker(const std::string& dir, HeartbeatWatcher* watcher, Received* rx) {
   WriteText(dir + "/empty.json", R"({"boxes": [{"center": [30, 30, 0.5], "size": [1, 1, 1], "yaw": 0}]})");
   const std::string config = std::string(TOPAY_SOURCE_DIR) + "/config";
   // The shipped plant (latency, lag) and robot; no LiDAR (nothing to see, and it would take a
   // core of this 2-core machine from the loop under test).
   WriteText(dir + "/sim.yaml", "robot:\n  urdf: " + config + "/robot/topay_mm.urdf\n  yaml: " + config +
                                    "/robot/topay_mm.yaml\nlidar:\n  enabled: false\n");
-  const pid_t sim = Spawn({BinDir() + "/topay-sim", "--config", dir + "/sim.yaml", "--scene", dir + "/empty.json",
-                           "--name", "sim"},
-                          dir + "/sim.txt");
-  const pid_t tracker = Spawn({BinDir() + "/topay-tracker", "--config", config + "/tracker/tracker.yaml", "--name",
-                               "tracker"},
-                              dir + "/tracker.txt");
+  SimAndTracker p;
+  p.sim = Spawn({BinDir() + "/topay-sim", "--config", dir + "/sim.yaml", "--scene", dir + "/empty.json", "--name", "sim"},
+                dir + "/sim.txt");
+  p.tracker = Spawn({BinDir() + "/topay-tracker", "--config", config + "/tracker/tracker.yaml", "--name", "tracker"},
+                    dir + "/tracker.txt");
+  watcher->lcm().subscribe(std::string(channels::ROBOT_STATE), &Received::OnState, rx);
+  watcher->lcm().subscribe(std::string(channels::TRACKER_STATUS), &Received::OnStatus, rx);
+  watcher->lcm().subscribe(std::string(channels::SIM_STATUS), &Received::OnSim, rx);
+  watcher->lcm().subscribe(std::string(channels::CONTROL_COMMAND), &Received::OnCommand, rx);
+  const bool up = watcher->SpinUntil(
+      [&] {
+        return watcher->last.contains("sim") && watcher->last.contains("tracker") && rx->states.size() > 10 &&
+               !rx->statuses.empty();
+      },
+      15.0);
+  EXPECT_TRUE(up) << ReadText(dir + "/sim.txt") << ReadText(dir + "/tracker.txt");
+  return p;
+}
+
+// SIGTERM to both: each exits 0.
+void StopSimAndTracker(const SimAndTracker& p) {
+  kill(p.tracker, SIGTERM);
+  kill(p.sim, SIGTERM);
+  const int tracker_status = WaitFor(p.tracker, 5.0);
+  const int sim_status = WaitFor(p.sim, 5.0);
+  EXPECT_TRUE(WIFEXITED(tracker_status) && WEXITSTATUS(tracker_status) == 0);
+  EXPECT_TRUE(WIFEXITED(sim_status) && WEXITSTATUS(sim_status) == 0);
+}
+
+TEST(TrackerGraph, SimDrivenByTheTrackerFollowsATrajectory) {
+  std::string why;
+  if (!EnterTestNamespace(&why)) GTEST_SKIP() << why;
+  const std::string dir = TestDir("tracker_graph");
   HeartbeatWatcher watcher;
   ASSERT_TRUE(watcher.good());
   Received rx;
-  watcher.lcm().subscribe(std::string(channels::ROBOT_STATE), &Received::OnState, &rx);
-  watcher.lcm().subscribe(std::string(channels::TRACKER_STATUS), &Received::OnStatus, &rx);
-  watcher.lcm().subscribe(std::string(channels::SIM_STATUS), &Received::OnSim, &rx);
-  watcher.lcm().subscribe(std::string(channels::CONTROL_COMMAND), &Received::OnCommand, &rx);
-  ASSERT_TRUE(watcher.SpinUntil(
-      [&] {
-        return watcher.last.contains("sim") && watcher.last.contains("tracker") && rx.states.size() > 10 &&
-               !rx.statuses.empty();
-      },
-      15.0))
-      << ReadText(dir + "/sim.txt") << ReadText(dir + "/tracker.txt");
+  const SimAndTracker processes = StartSimAndTracker(dir, &watcher, &rx);
+  ASSERT_FALSE(rx.statuses.empty());
   EXPECT_EQ(rx.statuses.back().state, tracker_status_t::IDLE);
 
   // The planner's part: a trajectory from the state just received, starting 0.3 s later.
@@ -122,12 +144,7 @@ TEST(TrackerGraph, SimDrivenByTheTrackerFollowsATrajectory) {
   EXPECT_EQ(rx.sims.back().commands_rejected, 0);
   EXPECT_GT(rx.sims.back().commands_accepted, 100);
 
-  kill(tracker, SIGTERM);
-  kill(sim, SIGTERM);
-  const int tracker_status = WaitFor(tracker, 5.0);
-  const int sim_status = WaitFor(sim, 5.0);
-  EXPECT_TRUE(WIFEXITED(tracker_status) && WEXITSTATUS(tracker_status) == 0);
-  EXPECT_TRUE(WIFEXITED(sim_status) && WEXITSTATUS(sim_status) == 0);
+  StopSimAndTracker(processes);
   const std::string tracker_out = ReadText(dir + "/tracker.txt");
   EXPECT_NE(tracker_out.find("TRAJECTORY 11 (goal 1) accepted"), std::string::npos) << tracker_out;
   EXPECT_NE(tracker_out.find("trajectory 11 ended"), std::string::npos) << tracker_out;
@@ -135,6 +152,73 @@ TEST(TrackerGraph, SimDrivenByTheTrackerFollowsATrajectory) {
   const std::string sim_out = ReadText(dir + "/sim.txt");
   EXPECT_NE(sim_out.find("final: contacts 0"), std::string::npos) << sim_out;
   std::printf("%s", tracker_out.c_str());
+}
+
+heartbeat_t PlannerHeartbeat(std::int32_t pid, std::int64_t seq) {
+  heartbeat_t m{};
+  m.utime = procs::NowUtime();
+  m.process_name = "planner";
+  m.pid = pid;
+  m.seq = seq;
+  m.health = heartbeat_t::OK;
+  return m;
+}
+
+// Finding 24 through the processes: the test plays a planner (its HEARTBEAT as "planner", a
+// trajectory); mid-trajectory a HEARTBEAT of a new planner process (kill -9 and restart) comes:
+// the tracker reports HELD within two cycles, commands a stop within the limits, and the robot
+// (the simulated plant) comes to rest; then the tracker is IDLE and no contact was seen.
+TEST(TrackerGraph, APlannerRestartBrakesTheRobotOffTheDeadPlannersTrajectory) {
+  std::string why;
+  if (!EnterTestNamespace(&why)) GTEST_SKIP() << why;
+  const std::string dir = TestDir("tracker_graph_planner_restart");
+  HeartbeatWatcher watcher;
+  ASSERT_TRUE(watcher.good());
+  Received rx;
+  const SimAndTracker processes = StartSimAndTracker(dir, &watcher, &rx);
+  ASSERT_FALSE(rx.states.empty());
+  const std::string heartbeat(channels::HEARTBEAT);
+  heartbeat_t beat = PlannerHeartbeat(4242, 0);
+  watcher.lcm().publish(heartbeat, &beat);
+  const robot_state_t now = rx.states.back();
+  const Eigen::Vector2d p0(now.pose.x_m, now.pose.y_m);
+  const ArcYawTrajectory trajectory = TrackerTestTrajectory(p0, now.pose.yaw_rad, Joints(now), 2.0, 0.5, JointChange());
+  const poly_trajectory_t msg = TrackerTestMessage(trajectory, p0, now.utime + 200'000, 21);
+  watcher.lcm().publish(std::string(channels::TRAJECTORY), &msg);
+  watcher.Spin(1.0);
+  beat = PlannerHeartbeat(4242, 1);
+  watcher.lcm().publish(heartbeat, &beat);
+  watcher.Spin(0.6);
+  ASSERT_FALSE(rx.states.empty());
+  const double v_before = rx.states.back().velocity.v_mps;
+  ASSERT_EQ(rx.statuses.back().state, tracker_status_t::TRACKING) << "moving on trajectory 21";
+  ASSERT_GT(v_before, 0.1);
+
+  beat = PlannerHeartbeat(4343, 0);  // the restarted planner's first heartbeat
+  watcher.lcm().publish(heartbeat, &beat);
+  const std::int64_t restart_utime = procs::NowUtime();
+  rx.statuses.clear();
+  rx.states.clear();
+  ASSERT_TRUE(watcher.SpinUntil([&] { return !rx.statuses.empty() && rx.statuses.back().state == tracker_status_t::HELD; }, 1.0));
+  const double held_after_s = 1e-6 * static_cast<double>(rx.statuses.back().utime - restart_utime);
+  EXPECT_LT(held_after_s, 0.1) << "HELD within a few cycles of the restart";
+  EXPECT_EQ(rx.statuses.back().trajectory_id, 0);
+  ASSERT_TRUE(watcher.SpinUntil(
+      [&] { return !rx.statuses.empty() && rx.statuses.back().state == tracker_status_t::IDLE; }, 5.0))
+      << ReadText(dir + "/tracker.txt");
+  const double rest_after_s = 1e-6 * static_cast<double>(rx.statuses.back().utime - restart_utime);
+  watcher.Spin(0.3);
+  ASSERT_FALSE(rx.states.empty());
+  EXPECT_LT(std::abs(rx.states.back().velocity.v_mps), 0.02) << "the robot at rest";
+  EXPECT_LT(std::abs(rx.states.back().velocity.omega_radps), 0.02);
+  std::printf("planner restart at %.2f m/s: HELD after %.3f s, released at rest after %.3f s\n", v_before,
+              held_after_s, rest_after_s);
+  ASSERT_FALSE(rx.sims.empty());
+  EXPECT_EQ(rx.sims.back().contact_events, 0);
+  StopSimAndTracker(processes);
+  const std::string tracker_out = ReadText(dir + "/tracker.txt");
+  EXPECT_NE(tracker_out.find("the planner restarted (pid 4242 -> 4343"), std::string::npos) << tracker_out;
+  EXPECT_NE(tracker_out.find("1 unguarded"), std::string::npos) << tracker_out;
 }
 
 }  // namespace

@@ -53,6 +53,23 @@ poly_trajectory_t Trajectory(std::int64_t id, std::int64_t start_utime, const Wh
   return test::TrackerTestMessage(test::TrackerTestTrajectory(p0, from.yaw_rad, from.q_rad), p0, start_utime, id);
 }
 
+// An ideal plant: the state moves by the command over dt (midpoint yaw for the base).
+void MoveByCommand(const control_command_t& c, double dt, WholeBodyState* state) {
+  const double yaw_mid = state->yaw_rad + 0.5 * c.omega_radps * dt;
+  state->x_m += c.v_mps * dt * std::cos(yaw_mid);
+  state->y_m += c.v_mps * dt * std::sin(yaw_mid);
+  state->yaw_rad += c.omega_radps * dt;
+  for (int j = 0; j < state->q_rad.size(); ++j) state->q_rad[j] += c.qdot_radps[j] * dt;
+}
+
+heartbeat_t PlannerBeat(std::int32_t pid, std::int64_t seq) {
+  heartbeat_t m{};
+  m.process_name = "planner";
+  m.pid = pid;
+  m.seq = seq;
+  return m;
+}
+
 TEST(TrackerNode, IdleWithoutTrajectoryOrState) {
   TrackerNode node(Options(), MakeTrackerLimits(Robot()));
   const TrackerCycle& c = node.Step(kT0);
@@ -230,7 +247,9 @@ TEST(TrackerNode, AfterAStaleStopAFreshStateNeverResumesTheOldTrajectory) {
 // reference (fault campaign: the base into a box).
 TEST(TrackerNode, TrackingLostBrakesWithinTheLimitsHeldThenReleasesAtRest) {
   const TrackerLimits limits = MakeTrackerLimits(Robot());
-  TrackerNode node(Options(), limits);
+  TrackerOptions options = Options();
+  options.jump_position_m = 0.0;  // the loss by the error alone (the jump check would see it first)
+  TrackerNode node(options, limits);
   node.OnTrajectory(Trajectory(1, kT0), kT0);
   std::int64_t now = kT0;
   double v = 0.0;
@@ -278,6 +297,7 @@ TEST(TrackerNode, TrackingLostBrakesWithinTheLimitsHeldThenReleasesAtRest) {
 TEST(TrackerNode, TrackingLossCanBeSwitchedOff) {
   TrackerOptions options = Options();
   options.lost_position_m = 0.0;
+  options.jump_position_m = 0.0;
   TrackerNode node(options, MakeTrackerLimits(Robot()));
   node.OnTrajectory(Trajectory(1, kT0), kT0);
   WholeBodyState off = Start();
@@ -293,6 +313,172 @@ TEST(TrackerNode, TrackingLossCanBeSwitchedOff) {
   }
   EXPECT_EQ(node.counts().losses, 0);
   EXPECT_EQ(node.active_id(), 1);
+}
+
+// Finding 22: the robot state jumps 0.07 m and 0.17 rad in 10 ms (an estimator re-initialised
+// after a simulator restart), within the continuity gate's slack but far beyond the robot's
+// limits: the tracker brakes off the trajectory (HELD, then IDLE at rest) instead of steering
+// back onto a reference that is no longer where the robot is. The same stream without the jump
+// tracks on; jump_* 0 switches the check off.
+TEST(TrackerNode, AJumpOfTheRobotStateBrakesOffTheTrajectory) {
+  for (const bool enabled : {true, false}) {
+    TrackerOptions options = Options();
+    options.nmpc.latency_s = 0.0;
+    if (!enabled) options.jump_position_m = options.jump_yaw_rad = 0.0;
+    TrackerNode node(options, MakeTrackerLimits(Robot()));
+    node.OnTrajectory(Trajectory(1, kT0), kT0);
+    WholeBodyState state = Start();
+    std::int64_t now = kT0;
+    for (; now <= kT0 + 1'000'000; now += kCycle) {  // two states per cycle: 100 Hz
+      node.OnRobotState(StateMessage(state, now - kCycle / 2));
+      node.OnRobotState(StateMessage(state, now));
+      const TrackerCycle& c = node.Step(now);
+      ASSERT_EQ(c.status.state, tracker_status_t::TRACKING);
+      MoveByCommand(c.command, 0.02, &state);
+    }
+    EXPECT_EQ(node.counts().jumps, 0) << "smooth driving is no jump";
+    state.x_m += 0.05;
+    state.y_m -= 0.05;
+    state.yaw_rad += 0.17;
+    node.OnRobotState(StateMessage(state, now - kCycle / 2));
+    node.OnRobotState(StateMessage(state, now));
+    const TrackerCycle& c = node.Step(now);
+    if (!enabled) {
+      EXPECT_EQ(c.status.state, tracker_status_t::TRACKING);
+      EXPECT_EQ(node.counts().jumps, 0);
+      continue;
+    }
+    EXPECT_EQ(c.status.state, tracker_status_t::HELD);
+    EXPECT_EQ(node.counts().jumps, 1);
+    EXPECT_EQ(node.active_id(), 0);
+    EXPECT_NE(node.StatusLine().find("the robot state jumped"), std::string::npos) << node.StatusLine();
+    bool released = false;
+    for (int i = 0; i < 200 && !released; ++i) {
+      now += kCycle;
+      node.OnRobotState(StateMessage(state, now));
+      const TrackerCycle& braking = node.Step(now);
+      released = braking.status.state == tracker_status_t::IDLE;
+      MoveByCommand(braking.command, 0.02, &state);
+    }
+    EXPECT_TRUE(released);
+    EXPECT_EQ(node.counts().losses, 0);
+  }
+}
+
+// Finding 24: the planner restarted (a HEARTBEAT from a new process) while the robot drove on its
+// predecessor's trajectory, which nobody checks against the map any more: the trajectories are
+// dropped, the robot brakes within the limits under HELD (a trajectory meanwhile dropped), and at
+// rest the tracker is IDLE and follows the new planner's trajectory.
+TEST(TrackerNode, APlannerRestartBrakesOffTheTrajectoriesItNoLongerGuards) {
+  const TrackerLimits limits = MakeTrackerLimits(Robot());
+  TrackerOptions options = Options();
+  options.nmpc.latency_s = 0.0;
+  TrackerNode node(options, limits);
+  node.OnHeartbeat(PlannerBeat(100, 0), kT0);
+  node.OnTrajectory(Trajectory(1, kT0), kT0);
+  node.OnTrajectory(Trajectory(2, kT0 + 3'000'000), kT0);  // pending
+  WholeBodyState state = Start();
+  std::int64_t now = kT0;
+  double v = 0.0;
+  for (; now <= kT0 + 700'000; now += kCycle) {
+    node.OnRobotState(StateMessage(state, now));
+    const TrackerCycle& c = node.Step(now);
+    ASSERT_EQ(c.status.state, tracker_status_t::TRACKING);
+    v = c.command.v_mps;
+    MoveByCommand(c.command, 0.02, &state);
+  }
+  ASSERT_GT(v, 0.05);
+  node.OnHeartbeat(PlannerBeat(100 ^ 1, 0), now);  // another pid, the live planner's seq 0.7 s on
+  EXPECT_EQ(node.counts().unguarded, 0) << "a stray (bit-flipped) copy is not a restart";
+  node.OnHeartbeat(PlannerBeat(100, 1), now);
+  node.OnHeartbeat(PlannerBeat(250, 0), now + 1000);  // kill -9, restarted: counts from 0
+  EXPECT_EQ(node.counts().unguarded, 1);
+  EXPECT_TRUE(node.held());
+  EXPECT_EQ(node.active_id(), 0);
+  EXPECT_EQ(node.pending_id(), 0);
+  EXPECT_NE(node.StatusLine().find("the planner restarted"), std::string::npos) << node.StatusLine();
+  bool released = false;
+  int held_cycles = 0;
+  for (int i = 0; i < 200 && !released; ++i, now += kCycle) {
+    node.OnRobotState(StateMessage(state, now));
+    const TrackerCycle& c = node.Step(now);
+    if (c.status.state == tracker_status_t::HELD) {
+      ++held_cycles;
+      EXPECT_LE(std::abs(c.command.v_mps), std::abs(v) + 1e-12);  // braking, within the limits
+      EXPECT_GE(std::abs(c.command.v_mps), std::abs(v) - limits.base.a_max_mps2 * 0.02 - 1e-9);
+      if (node.held()) {
+        node.OnTrajectory(Trajectory(10 + i, now, state), now);  // meanwhile: dropped
+        EXPECT_EQ(node.active_id(), 0);
+      }
+    } else {
+      EXPECT_EQ(c.status.state, tracker_status_t::IDLE);
+      EXPECT_EQ(c.command.v_mps, 0.0);
+      released = true;
+    }
+    v = c.command.v_mps;
+    MoveByCommand(c.command, 0.02, &state);
+  }
+  EXPECT_GT(held_cycles, 3);
+  EXPECT_TRUE(released);
+  node.OnTrajectory(Trajectory(1000, now, state), now);  // the new planner's, from rest
+  EXPECT_EQ(node.active_id(), 1000);
+  node.OnRobotState(StateMessage(state, now + kCycle));
+  EXPECT_EQ(node.Step(now + kCycle).status.state, tracker_status_t::TRACKING);
+  EXPECT_EQ(node.counts().losses, 0);
+  EXPECT_NE(node.Report().find("1 unguarded"), std::string::npos) << node.Report();
+}
+
+// A planner heard once and then silent for planner_watch.silence_s guards nothing: the robot
+// brakes off its trajectory; a planner that keeps its heartbeat does not stop it.
+TEST(TrackerNode, ASilentPlannerBrakesTheRobotOffItsTrajectory) {
+  TrackerOptions options = Options();
+  options.nmpc.latency_s = 0.0;
+  TrackerNode node(options, MakeTrackerLimits(Robot()));
+  node.OnHeartbeat(PlannerBeat(100, 0), kT0);
+  node.OnTrajectory(Trajectory(1, kT0), kT0);
+  WholeBodyState state = Start();
+  std::int64_t now = kT0;
+  std::int64_t braked_at = 0;
+  for (; now <= kT0 + 3'800'000 && braked_at == 0; now += kCycle) {
+    if (now <= kT0 + 500'000 && (now - kT0) % 250'000 == 0) {
+      node.OnHeartbeat(PlannerBeat(100, (now - kT0) / 250'000), now);  // the last at kT0 + 0.5 s
+    }
+    node.OnRobotState(StateMessage(state, now));
+    const TrackerCycle& c = node.Step(now);
+    if (c.status.state == tracker_status_t::HELD) braked_at = now;
+    MoveByCommand(c.command, 0.02, &state);
+  }
+  ASSERT_NE(braked_at, 0) << node.StatusLine();
+  EXPECT_GT(braked_at, kT0 + 3'500'000) << "3 s after the last heartbeat at 0.5 s, not before";
+  EXPECT_LE(braked_at, kT0 + 3'500'000 + 2 * kCycle);
+  EXPECT_EQ(node.counts().unguarded, 1);
+  EXPECT_EQ(node.counts().losses, 0);
+  EXPECT_NE(node.StatusLine().find("the planner is silent"), std::string::npos) << node.StatusLine();
+}
+
+// A restart while the robot is at rest at a finished trajectory's end, or with no trajectory,
+// stops nothing; a tracker that never heard a planner (fed by a tool) is never stopped by it.
+TEST(TrackerNode, APlannerRestartWithNothingUnderWayStopsNothing) {
+  TrackerNode node(Options(), MakeTrackerLimits(Robot()));
+  node.OnHeartbeat(PlannerBeat(100, 0), kT0);
+  node.OnHeartbeat(PlannerBeat(100, 1), kT0 + 1'000'000);
+  node.OnHeartbeat(PlannerBeat(200, 0), kT0 + 1'500'000);
+  EXPECT_EQ(node.planner_watch().restarts(), 1);
+  EXPECT_EQ(node.counts().unguarded, 0);
+  EXPECT_FALSE(node.held());
+
+  TrackerOptions options = Options();
+  options.nmpc.latency_s = 0.0;
+  TrackerNode unwatched(options, MakeTrackerLimits(Robot()));
+  unwatched.OnTrajectory(Trajectory(1, kT0), kT0);
+  WholeBodyState state = Start();
+  for (std::int64_t now = kT0; now < kT0 + 3'600'000; now += kCycle) {
+    unwatched.OnRobotState(StateMessage(state, now));
+    const TrackerCycle& c = unwatched.Step(now);
+    ASSERT_EQ(c.status.state, tracker_status_t::TRACKING) << (now - kT0) * 1e-6 << " s";
+    MoveByCommand(c.command, 0.02, &state);
+  }
+  EXPECT_EQ(unwatched.counts().unguarded, 0);
 }
 
 drive_status_t Drives(std::int8_t state, const std::string& reason = "") {
@@ -468,12 +654,7 @@ TEST(TrackerNode, SwitchingDoesNotJumpTheCommand) {
       EXPECT_LE(std::abs(c.command.qdot_radps[j] - last.qdot_radps[j]), limits.qdd_max_radps2[j] * 0.02 + 1e-9);
     }
     last = c.command;
-    const double dt = 0.02;
-    const double yaw_mid = state.yaw_rad + 0.5 * c.command.omega_radps * dt;
-    state.x_m += c.command.v_mps * dt * std::cos(yaw_mid);
-    state.y_m += c.command.v_mps * dt * std::sin(yaw_mid);
-    state.yaw_rad += c.command.omega_radps * dt;
-    for (int j = 0; j < state.q_rad.size(); ++j) state.q_rad[j] += c.command.qdot_radps[j] * dt;
+    MoveByCommand(c.command, 0.02, &state);
   }
   EXPECT_TRUE(switched);
   EXPECT_GT(v_at_switch, 0.1);  // it was moving when the new one took over
@@ -497,12 +678,7 @@ TEST(TrackerNode, ClosedLoopOnAnIdealPlantReachesTheEndAndFinishes) {
     if (c.status.state == tracker_status_t::TRACKING) {
       max_position_error = std::max(max_position_error, c.status.position_error_m);
     }
-    const double dt = 0.02;
-    const double yaw_mid = state.yaw_rad + 0.5 * c.command.omega_radps * dt;
-    state.x_m += c.command.v_mps * dt * std::cos(yaw_mid);
-    state.y_m += c.command.v_mps * dt * std::sin(yaw_mid);
-    state.yaw_rad += c.command.omega_radps * dt;
-    for (int j = 0; j < state.q_rad.size(); ++j) state.q_rad[j] += c.command.qdot_radps[j] * dt;
+    MoveByCommand(c.command, 0.02, &state);
   }
   TrajectorySample end = trajectory.MakePoint();
   trajectory.Evaluate(trajectory.duration_s(), &end);

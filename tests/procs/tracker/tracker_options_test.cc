@@ -38,6 +38,13 @@ TEST(TrackerOptions, ShippedConfigRestatesTheDefaults) {
   EXPECT_DOUBLE_EQ(o.nmpc.end_settle_s, d.end_settle_s);
   EXPECT_EQ(o.rebuild.trajectory.integrator.panels_per_piece, 12);
   EXPECT_DOUBLE_EQ(CycleRateHz(o), 50.0);
+  const TrackerOptions defaults;
+  EXPECT_DOUBLE_EQ(o.jump_position_m, defaults.jump_position_m);
+  EXPECT_DOUBLE_EQ(o.jump_yaw_rad, defaults.jump_yaw_rad);
+  EXPECT_DOUBLE_EQ(o.lost_position_m, defaults.lost_position_m);
+  const PlannerWatchOptions watch;
+  EXPECT_EQ(o.planner_watch.process_names, watch.process_names);
+  EXPECT_DOUBLE_EQ(o.planner_watch.silence_s, watch.silence_s);
 }
 
 TEST(TrackerOptions, ReadsValuesAndResolvesRobotPaths) {
@@ -63,7 +70,23 @@ TEST(TrackerOptions, BadValuesAreErrorsNamingTheField) {
   EXPECT_NE(ErrorOf(Write("bad_type.yaml", "nmpc:\n  latency_s: soon\n")).find("nmpc.latency_s"), std::string::npos);
   EXPECT_NE(ErrorOf(Write("bad_panels.yaml", "rebuild:\n  panels_per_piece: 0\n")).find("rebuild.panels_per_piece"),
             std::string::npos);
+  EXPECT_NE(ErrorOf(Write("bad_jump.yaml", "jump_yaw_rad: -0.1\n")).find("jump_yaw_rad"), std::string::npos);
+  EXPECT_NE(ErrorOf(Write("bad_silence.yaml", "planner_watch:\n  silence_s: -1\n")).find("planner_watch.silence_s"),
+            std::string::npos);
+  EXPECT_NE(ErrorOf(Write("bad_names.yaml", "planner_watch:\n  process_names: planner\n"))
+                .find("planner_watch.process_names"),
+            std::string::npos);
+  EXPECT_NE(ErrorOf(Write("empty_name.yaml", "planner_watch:\n  process_names: [planner, \"\"]\n"))
+                .find("planner_watch.process_names"),
+            std::string::npos);
   EXPECT_FALSE(ErrorOf("/nonexistent/tracker.yaml").empty());
+}
+
+TEST(TrackerOptions, ReadsThePlannerWatch) {
+  const TrackerOptions o =
+      LoadTrackerOptions(Write("watch.yaml", "planner_watch:\n  process_names: [plan-a]\n  silence_s: 0\n"));
+  EXPECT_EQ(o.planner_watch.process_names, std::vector<std::string>{"plan-a"});
+  EXPECT_EQ(o.planner_watch.silence_s, 0.0);
 }
 
 }  // namespace
