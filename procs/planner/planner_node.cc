@@ -47,6 +47,17 @@ std::optional<StandingRobot> StandingOf(const PlanJob& job) {
   return job.Standing();
 }
 
+// A plan from rest that failed on its start because an arm sphere stands in the map's blocked
+// voxels, as the core words it: "start state: the arm sphere 11 (...) penetrates box ..."
+// (DiagnoseStartState, core/collision/start_target_diagnosis.h) or "start state: arm collision
+// (...)" (core/planner/plan_in_scene.cc). PlannerProcess.AnArmStoppedDeepInVoxelsIsPlannedOutOfThem
+// holds the wording.
+bool StartArmInCollision(const PlanJob& job, const WholeBodyPlanResult& r) {
+  const std::string& why = r.failure_reason;
+  return job.from_rest && (why.find("start state: the arm sphere") != std::string::npos ||
+                           why.find("start state: arm collision") != std::string::npos);
+}
+
 // The goal's content (all but its utime) as bytes: a goal id is issued once.
 std::vector<std::uint8_t> GoalContent(goal_t msg) {
   msg.utime = 0;
@@ -78,7 +89,8 @@ PlannerNode::PlannerNode(procs::ProcessLoop* loop, PlanWorker* worker, const Kin
       clock_(options.deterministic.enabled ? ClockSource::kMessages : ClockSource::kWall),
       reach_(ComputeReachHeights(kinematics)),
       map_(options.map.unknown),
-      robot_intake_(kinematics.num_joints()) {
+      robot_intake_(kinematics.num_joints()),
+      delivery_(options.delivery) {
   const std::string goal(channels::GOAL), state(channels::ROBOT_STATE), map(channels::MAP_UPDATE),
       tracker(channels::TRACKER_STATUS);
   const std::vector<lcm::Subscription*> subscriptions = {
@@ -223,6 +235,7 @@ void PlannerNode::OnMap(const map_update_t& msg) {
 }
 
 void PlannerNode::OnTrackerStatus(const tracker_status_t& msg) {
+  delivery_.OnTrackerStatus(msg);
   const std::optional<tracker_status_t> before = tracker_;
   tracker_ = msg;
   const bool held = msg.state == tracker_status_t::HELD;
@@ -257,6 +270,7 @@ void PlannerNode::Hold(const tracker_status_t& msg) {
                "every trajectory was dropped{}",
                1e-6 * static_cast<double>(msg.utime), active_ ? fmt::format(" (was on {})", active_->trajectory_id) : "");
   AbandonPlans();
+  delivery_.Forget();
   active_.reset();
   replaced_.clear();
   ClearPredictedCollision();
@@ -409,7 +423,7 @@ void PlannerNode::RequestPlan(PlanTrigger trigger, const std::string& reason, bo
   job.fresh_regions_xy_W_m = FreshRegions(job.start);
   // From rest there is time (the robot waits): the fields take every map update first.
   job.flush_all_map = job.from_rest && options_.map.flush_all_from_rest;
-  job.clear_arm_overlap_m = options_.map.start_arm_overlap_m;
+  job.clear_arm_overlap_m = goal_->escape ? options_.map.start_arm_escape_overlap_m : options_.map.start_arm_overlap_m;
   if (clock_.message_time()) {
     job.flush_all_map = true;  // fields from every map update handled before it
     job.time_limit_s = options_.deterministic.time_limit_s;
@@ -435,6 +449,22 @@ void PlannerNode::Tick() {
   }
   while (std::optional<PlanJobOutcome> outcome = worker_->TakeResult()) HandleOutcome(std::move(*outcome));
   DecideAt(clock_.Now());
+  ResendUnconfirmed(clock_.Now());
+}
+
+void PlannerNode::ResendUnconfirmed(std::int64_t now) {
+  const std::int64_t given_up = delivery_.counts().given_up;
+  const poly_trajectory_t* copy = delivery_.Due(now);
+  if (delivery_.counts().given_up > given_up) {
+    spdlog::warn("the tracker never reported the last trajectory within {:.1f} s of its start: no more copies",
+                 options_.delivery.give_up_s);
+  }
+  if (copy == nullptr) return;
+  loop_->lcm().publish(std::string(channels::TRAJECTORY), copy);
+  const std::int64_t n = delivery_.counts().resent;
+  if (n <= 10 || n % 100 == 0) {
+    spdlog::info("TRAJECTORY {} not reported by the tracker yet: sent again (#{})", copy->trajectory_id, n);
+  }
 }
 
 void PlannerNode::HandleAwaitedOutcome(PlanJobOutcome outcome) {
@@ -562,6 +592,17 @@ void PlannerNode::HandleFailure(const PlanJobOutcome& outcome) {
   PublishPaths(r, outcome.job.goal_id, 0);
   spdlog::warn("goal {}: plan {} failed ({}): {}", outcome.job.goal_id, outcome.job.job_id,
                ToString(r.status), r.failure_reason);
+  if (!goal_->escape && StartArmInCollision(outcome.job, r) &&
+      options_.map.start_arm_escape_overlap_m > outcome.job.clear_arm_overlap_m) {
+    // The arm stopped in voxels deeper than a plan from rest leaves out (a stop near a table's
+    // edge): plan it out of them, leaving out those it reaches into by at most the escape's depth.
+    goal_->escape = true;
+    ++counts_.escapes;
+    spdlog::warn("goal {}: the arm stands in the map's voxels deeper than {:.3f} m: planning from rest again without "
+                 "those it reaches into by at most {:.3f} m (an escape)",
+                 outcome.job.goal_id, options_.map.start_arm_overlap_m, options_.map.start_arm_escape_overlap_m);
+    return RequestPlan(PlanTrigger::kRetry, "escape: the arm stands in the map's voxels");
+  }
   const bool definite = outcome.certified_unreachable || r.status == PlanStatus::kInvalidInput;
   if (!goal_->planned_once && (definite || ++goal_->failed_attempts >= options_.timing.first_plan_attempts)) {
     goal_->done = true;  // no trajectory for it after its attempts: FAILED (the mission may resend it)
@@ -595,6 +636,7 @@ void PlannerNode::PublishTrajectory(const PlanJobOutcome& outcome, std::int64_t 
   MakeActive(std::move(active));
   goal_->planned_once = true;
   goal_->failed_from_rest = 0;
+  goal_->escape = false;
   ++counts_.trajectories;
   PublishActive("plan");
   PublishPaths(outcome.result, outcome.job.goal_id, active_->trajectory_id);
@@ -618,6 +660,7 @@ void PlannerNode::PublishActive(const char* what) {
   poly.start_utime = active_->start_utime;
   const poly_trajectory_t msg = msgs::ToMessage(poly);
   loop_->lcm().publish(std::string(channels::TRAJECTORY), &msg);
+  if (!clock_.message_time()) delivery_.Sent(msg, poly.utime);  // a replay's outputs are its messages' alone
   spdlog::info("goal {}: {} trajectory {} out, {:.2f} s, starts in {:.0f} ms", active_->goal_id, what,
                active_->trajectory_id, t.duration_s(), 1e-3 * (active_->start_utime - poly.utime));
 }
@@ -806,10 +849,13 @@ std::string PlannerNode::Report() const {
   const PlanWorkerCounts w = worker_->counts();
   std::string out = fmt::format(
       "topay-planner: {} goals ({} refused, {} repeats ignored, {} cancelled), {} trajectories, {} stops ({} on a "
-      "stale map), {} plans ({} failed, {} cancelled, {} late, {} colliding with a newer map)\n",
+      "stale map), {} plans ({} failed, {} cancelled, {} late, {} colliding with a newer map), {} arm escapes\n",
       counts_.goals, counts_.goals_refused, counts_.goals_repeated, counts_.goals_cancelled, counts_.trajectories,
       counts_.stops, counts_.stale_map_stops, w.plans, counts_.plans_failed, w.cancelled, counts_.results_dropped_late,
-      counts_.results_colliding);
+      counts_.results_colliding, counts_.escapes);
+  const TrajectoryDeliveryCounts& d = delivery_.counts();
+  out += fmt::format("  delivery: {} trajectories reported by the tracker, {} copies sent again, {} never reported\n",
+                     d.confirmed, d.resent, d.given_up);
   out += "  triggers:";
   for (const auto& [trigger, n] : counts_.triggers) out += fmt::format(" {} {}", ToString(trigger), n);
   out += fmt::format("\n  map: {} checks of the trajectory ahead (mean {:.2f} ms, max {:.2f} ms), {} rejected; "

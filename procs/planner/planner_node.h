@@ -42,6 +42,7 @@
 #include "procs/planner/planner_clock.h"
 #include "procs/planner/planner_process_options.h"
 #include "procs/planner/stop_planner.h"
+#include "procs/planner/trajectory_delivery.h"
 #include "procs/runtime/process_loop.h"
 #include "topay/goal_t.hpp"
 #include "topay/map_update_t.hpp"
@@ -63,6 +64,7 @@ struct PlannerNodeCounts {
   std::int64_t stale_map_stops = 0;  ///< stopping trajectories for a stale map (map.stale_stop_s)
   std::int64_t trajectories = 0, stops = 0;
   std::int64_t plans_failed = 0, results_dropped_late = 0, results_colliding = 0;
+  std::int64_t escapes = 0;  ///< plans from rest planned again with the arm's escape allowance (finding 18)
   std::int64_t maps_rejected = 0, map_checks = 0;
   double map_check_ms_max = 0.0, map_check_ms_sum = 0.0;
   /// Deterministic mode: messages handled from the inbox (all, and by PlannerInput's
@@ -108,6 +110,9 @@ class PlannerNode {
     int replans = 0;
     int failed_attempts = 0;    // plans that failed before its first trajectory went out
     int failed_from_rest = 0;   // plans from rest that failed in a row after it
+    // The standing arm was found in the map's voxels deeper than map.start_arm_overlap_m: its
+    // plans from rest leave out map.start_arm_escape_overlap_m until one goes out (finding 18).
+    bool escape = false;
   };
 
   void Dispatch(const PlannerInput& msg);
@@ -164,6 +169,8 @@ class PlannerNode {
   void PublishStatus(std::int8_t state, const std::string& reason, const std::string& detail,
                      const WholeBodyPlanResult* result = nullptr);
   void UpdateHealth();
+  // Sends the newest TRAJECTORY again while the tracker does not report it (TrajectoryDelivery).
+  void ResendUnconfirmed(std::int64_t now);
   // The tracker is HELD (drives not running): the robot is at rest off every trajectory.
   void Hold(const tracker_status_t& msg);
   // Cancels the plan in progress and forgets the pending and retried ones (a hold, a stale map).
@@ -208,6 +215,7 @@ class PlannerNode {
   std::int64_t retry_at_utime_ = 0;               // 0: no retry scheduled
   std::int64_t job_seq_ = 0, latest_job_ = 0;
   std::int64_t trajectory_seq_ = 0;  // the last trajectory id issued (NextTrajectoryId)
+  TrajectoryDelivery delivery_;  // the newest TRAJECTORY until the tracker reports it (wall clock only)
   planner_status_t status_{};
   std::int64_t last_status_utime_ = 0;
   PlannerNodeCounts counts_;

@@ -23,6 +23,7 @@ void ReadMap(YamlSection s, PlannerMapOptions* o) {
   s.Read("slice_m", &o->slice_m);
   s.Read("flush_all_from_rest", &o->flush_all_from_rest);
   s.Read("start_arm_overlap_m", &o->start_arm_overlap_m);
+  s.Read("start_arm_escape_overlap_m", &o->start_arm_escape_overlap_m);
   s.Read("fresh_radius_m", &o->fresh_radius_m);
   s.Read("fresh_collision_radius_m", &o->fresh_collision_radius_m);
   s.Read("validator_margin_m", &o->validator_margin_m);
@@ -39,6 +40,12 @@ void ReadTiming(YamlSection s, PlanTimingOptions* o) {
   s.Read("retry_period_s", &o->retry_period_s);
   s.Read("first_plan_attempts", &o->first_plan_attempts);
   s.Read("max_failed_plans_from_rest", &o->max_failed_plans_from_rest);
+  s.Finish();
+}
+
+void ReadDelivery(YamlSection s, TrajectoryDeliveryOptions* o) {
+  s.Read("resend_period_s", &o->resend_period_s);
+  s.Read("give_up_s", &o->give_up_s);
   s.Finish();
 }
 
@@ -123,7 +130,13 @@ void CheckPlannerProcessOptions(const PlannerProcessOptions& o, const std::strin
   RequirePositive(o.map.fresh_collision_radius_m, source, "map.fresh_collision_radius_m");
   RequireNonNegative(o.map.validator_margin_m, source, "map.validator_margin_m");
   RequireNonNegative(o.map.start_arm_overlap_m, source, "map.start_arm_overlap_m");
+  if (o.map.start_arm_escape_overlap_m != 0.0 &&
+      !(o.map.start_arm_escape_overlap_m >= o.map.start_arm_overlap_m && std::isfinite(o.map.start_arm_escape_overlap_m))) {
+    throw ConfigError(source, "map.start_arm_escape_overlap_m", "must be 0 (no escape) or >= map.start_arm_overlap_m");
+  }
   RequireNonNegative(o.map.stale_stop_s, source, "map.stale_stop_s");
+  RequireNonNegative(o.delivery.resend_period_s, source, "delivery.resend_period_s");
+  RequirePositive(o.delivery.give_up_s, source, "delivery.give_up_s");
   RequirePositive(o.timing.from_rest_time_limit_s, source, "timing.from_rest_time_limit_s");
   RequirePositive(o.timing.publish_margin_s, source, "timing.publish_margin_s");
   RequirePositive(o.timing.replan_budget_s - o.timing.publish_margin_s, source,
@@ -193,6 +206,7 @@ PlannerProcessOptions LoadPlannerProcessOptions(const std::string& path) {
   o.planner_config = ResolveBeside(o.planner_config, path);
   ReadMap(top.Section("map"), &o.map);
   ReadTiming(top.Section("timing"), &o.timing);
+  ReadDelivery(top.Section("delivery"), &o.delivery);
   ReadTriggers(top.Section("triggers"), &o.triggers);
   ReadStop(top.Section("stop"), &o.stop);
   ReadGoals(top.Section("goals"), &o.goals);

@@ -11,6 +11,7 @@
 #include "core/planner/whole_body_planner_options.h"
 #include "core/robot/robot_model.h"
 #include "core/validate/trajectory_collision_scan.h"
+#include "procs/planner/trajectory_delivery.h"
 
 namespace topay::planner {
 
@@ -39,6 +40,13 @@ struct PlannerMapOptions {
   /// ClearArmOverlaps: the sensed map standing out of a surface the arm stopped near). 0: the
   /// arm's overlaps all stay. >= 0.
   double start_arm_overlap_m = 0.03;
+  /// The escape (finding 18): when a plan from rest fails because the standing arm is in the
+  /// map's voxels deeper than start_arm_overlap_m, the goal's next plans from rest leave out the
+  /// voxels it reaches into by at most this much (m) until one goes out, so the arm can be
+  /// planned out of them. A voxel holds a surface up to a voxel (0.05 m) inside it, so a
+  /// stopped arm 4.8 cm in voxels had not touched the table; deeper than this it may have.
+  /// 0: no escape. >= start_arm_overlap_m (or 0).
+  double start_arm_escape_overlap_m = 0.06;
   /// Added to the core planner's validator obstacle margin (m) when it validates a plan
   /// against the map's voxel boxes (the check of the trajectory ahead triggers at
   /// triggers.check_obstacle_margin_m). 0 by default: the fields do not carry a margin, and
@@ -177,6 +185,9 @@ struct PlannerProcessOptions {
   std::string planner_config;  ///< Core planner YAML; "" = config/planner/topay.yaml.
   PlannerMapOptions map;
   PlanTimingOptions timing;
+  /// The newest TRAJECTORY sent again until the tracker reports it (`delivery`:
+  /// resend_period_s 0.1 s, give_up_s 2 s after its start; trajectory_delivery.h).
+  TrajectoryDeliveryOptions delivery;
   ReplanTriggerOptions triggers;
   SafeStopOptions stop;
   GoalCheckOptions goals;

@@ -1,7 +1,8 @@
 // topay-tracker: the NMPC trajectory tracker of the graph (docs/tracker.md). TRAJECTORY,
-// ROBOT_STATE and GRIPPER_COMMAND in; CONTROL_COMMAND and TRACKER_STATUS out at 50 Hz. Stops
-// within the robot's acceleration limits without a trajectory, after its end, or when the robot
-// state is stale. Exit codes: 0, 1 config or file error, 2 usage error.
+// ROBOT_STATE, GRIPPER_COMMAND, DRIVE_STATUS and the planner's HEARTBEAT in; CONTROL_COMMAND and
+// TRACKER_STATUS out at 50 Hz. Stops within the robot's acceleration limits without a
+// trajectory, after its end, when the robot state is stale or jumps, or when the planner
+// restarted or fell silent. Exit codes: 0, 1 config or file error, 2 usage error.
 
 #include <CLI/CLI.hpp>
 #include <spdlog/spdlog.h>

@@ -1,6 +1,6 @@
 #pragma once
-// topay-tracker's logic (docs/tracker.md): TRAJECTORY, ROBOT_STATE and GRIPPER_COMMAND in; every
-// cycle (50 Hz) NmpcTracker::Step and a CONTROL_COMMAND and TRACKER_STATUS out. No LCM in the
+// topay-tracker's logic (docs/tracker.md): TRAJECTORY, ROBOT_STATE, GRIPPER_COMMAND, DRIVE_STATUS
+// and the planner's HEARTBEAT in; every cycle (50 Hz) NmpcTracker::Step and a CONTROL_COMMAND and TRACKER_STATUS out. No LCM in the
 // class itself (ConnectTrackerNode wires it to a ProcessLoop), so tests call its handlers with
 // the times they choose.
 //

@@ -174,7 +174,7 @@ int main(int argc, char** argv) {
     std::vector<std::string_view> all(ch::kAll.begin(), ch::kAll.end());
     const std::vector<SubscriberTarget> targets = {
         {"estimator_inputs", {ch::BASE_POSE, ch::BASE_VELOCITY, ch::JOINT_STATE, ch::GRIPPER_STATE}},
-        {"tracker_inputs", {ch::TRAJECTORY, ch::ROBOT_STATE, ch::GRIPPER_COMMAND}},
+        {"tracker_inputs", {ch::TRAJECTORY, ch::ROBOT_STATE, ch::GRIPPER_COMMAND, ch::DRIVE_STATUS, ch::HEARTBEAT}},
         {"mission_inputs", {ch::ROBOT_STATE, ch::PLANNER_STATUS, ch::TRACKER_STATUS}},
         {"director_inputs", {ch::MISSION_STATUS, ch::TRAJECTORY, ch::ROBOT_STATE}},
         {"planner_intake", {ch::GOAL, ch::ROBOT_STATE, ch::MAP_UPDATE, ch::TRACKER_STATUS}},

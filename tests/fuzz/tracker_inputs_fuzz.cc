@@ -1,8 +1,8 @@
-// topay-tracker's subscriptions (TRAJECTORY, ROBOT_STATE, GRIPPER_COMMAND) and its 50 Hz NMPC
-// step, on the shipped options and robot, with the node's own handlers (TrackerNode) and a
+// topay-tracker's subscriptions (TRAJECTORY, ROBOT_STATE, GRIPPER_COMMAND, DRIVE_STATUS,
+// HEARTBEAT) and its 50 Hz NMPC step, on the shipped options and robot, with the node's own handlers (TrackerNode) and a
 // clock the input advances. Checked on every CONTROL_COMMAND it would send: finite, and within
 // the robot's velocity limits (|v| <= v_max, |omega| <= omega_max, |qdot_i| <= qd_max_i).
-// Input: subscriber_fuzz.h, 3 channels; at most 64 steps per input (each may solve).
+// Input: subscriber_fuzz.h, 5 channels; at most 64 steps per input (each may solve).
 #include <cmath>
 #include <cstdint>
 
@@ -37,7 +37,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   std::int64_t now = kFuzzT0Utime;
   int steps = 0;
   for (int i = 0; i < kMaxSubscriberOps; ++i) {
-    const std::optional<SubscriberOp> op = NextSubscriberOp(in, 3);
+    const std::optional<SubscriberOp> op = NextSubscriberOp(in, 5);
     if (!op) break;
     if (op->tick) {
       if (++steps > 64) break;
@@ -52,8 +52,14 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
       case 1:
         if (auto m = DecodeFuzzed<robot_state_t>(op->bytes, op->fix_fingerprint)) node.OnRobotState(*m);
         break;
-      default:
+      case 2:
         if (auto m = DecodeFuzzed<gripper_command_t>(op->bytes, op->fix_fingerprint)) node.OnGripper(*m);
+        break;
+      case 3:
+        if (auto m = DecodeFuzzed<drive_status_t>(op->bytes, op->fix_fingerprint)) node.OnDriveStatus(*m);
+        break;
+      default:
+        if (auto m = DecodeFuzzed<heartbeat_t>(op->bytes, op->fix_fingerprint)) node.OnHeartbeat(*m, now);
         break;
     }
   }

@@ -28,6 +28,7 @@ TEST(PlannerProcessOptionsTest, ShippedFileLoadsWithTheDefaults) {
   EXPECT_EQ(o.timing.max_failed_plans_from_rest, d.timing.max_failed_plans_from_rest);
   EXPECT_EQ(o.goals.reached_position_m, d.goals.reached_position_m);
   EXPECT_EQ(o.map.start_arm_overlap_m, d.map.start_arm_overlap_m);
+  EXPECT_EQ(o.map.start_arm_escape_overlap_m, d.map.start_arm_escape_overlap_m);
   EXPECT_EQ(o.goals.reached_orientation_rad, d.goals.reached_orientation_rad);
   EXPECT_TRUE(std::filesystem::exists(o.planner_config)) << o.planner_config;
 }
@@ -59,6 +60,8 @@ TEST(PlannerProcessOptionsTest, ValuesAreReadAndBadOnesNamed) {
   expect_error("triggers: {drift_position_m: -1}\n", "drift_position_m");
   expect_error("timing: {max_failed_plans_from_rest: 0}\n", "timing.max_failed_plans_from_rest");
   expect_error("map: {start_arm_overlap_m: -0.01}\n", "map.start_arm_overlap_m");
+  expect_error("map: {start_arm_escape_overlap_m: 0.02}\n", "map.start_arm_escape_overlap_m");  // below 0.03
+  expect_error("map: {start_arm_escape_overlap_m: .inf}\n", "map.start_arm_escape_overlap_m");
   expect_error("map: {stale_stop_s: -1}\n", "map.stale_stop_s");
   expect_error("goals: {reached_position_m: -0.1}\n", "goals.reached_position_m");
   expect_error("goals: {reached_orientation_rad: .nan}\n", "goals.reached_orientation_rad");

@@ -593,6 +593,84 @@ TEST_F(PlannerProcess, APlanFromRestWithTheArmJustInsideNewlySensedVoxelsGoesOut
   }
 }
 
+// Finding 18: the robot stopped with its arm in voxels deeper than a plan from rest leaves out
+// (map.start_arm_overlap_m 0.03 m; the fault campaign: link7 4.8 cm in a table edge's voxels,
+// no contact, a voxel being up to 5 cm larger than its surface). The first plan fails on its
+// start (an arm sphere in a box of the map); the planner plans from rest again leaving out the voxels the arm
+// reaches into by at most map.start_arm_escape_overlap_m (0.06 m), and that plan goes out.
+// Before, every plan from rest failed on its start and the goal failed ("stuck").
+TEST_F(PlannerProcess, AnArmStoppedDeepInVoxelsIsPlannedOutOfThem) {
+  KinematicsCache cache = kinematics_.MakeCache();
+  kinematics_.Update(start_, &cache);
+  const std::size_t outer = cache.p_WS.size() - 1;
+  const Eigen::Vector3d p_WS = cache.p_WS[outer];
+  const double r = model_.spheres[outer].radius_m;
+  const GridGeometry3 g = planner::testing::RoomGeometry();
+  const double half = 0.5 * g.resolution_m;
+  const auto depth = [&](std::size_t s, const Eigen::Vector3d& c) {  // how far sphere s reaches into the voxel at c
+    return model_.spheres[s].radius_m - ((cache.p_WS[s] - c).cwiseAbs().array() - half).max(0.0).matrix().norm();
+  };
+  std::vector<VoxelChange> cap;
+  double deepest = 0.0;
+  const CellBox cells = VoxelsOverlapping(g, {p_WS - Eigen::Vector3d::Constant(r), p_WS + Eigen::Vector3d::Constant(r)});
+  for (int iz = cells.begin.z(); iz < cells.end.z(); ++iz)
+    for (int iy = cells.begin.y(); iy < cells.end.y(); ++iy)
+      for (int ix = cells.begin.x(); ix < cells.end.x(); ++ix) {
+        const Eigen::Vector3d c = g.CellCenter(ix, iy, iz);
+        if (c.z() < p_WS.z() + 0.25 * r || depth(outer, c) < 0.003) continue;
+        double most = 0.0;
+        for (std::size_t s = 0; s < cache.p_WS.size(); ++s) most = std::max(most, depth(s, c));
+        if (most >= 0.055) continue;  // within the escape's 6 cm
+        cap.push_back({{ix, iy, iz}, VoxelState::kOccupied});
+        deepest = std::max(deepest, most);
+      }
+  ASSERT_GT(deepest, 0.035) << "deeper than a plan from rest leaves out (3 cm)";
+  SpinWithRobot([] { return false; }, 0.5);
+  const map_update_t delta = msgs::EncodeMapDelta(g, cap, procs::NowUtime(), 2);
+  watcher_->lcm().publish(std::string(channels::MAP_UPDATE), &delta);
+  SpinWithRobot([] { return false; }, 0.3);
+  Send(ReachableGoal(52));
+  ASSERT_TRUE(SpinWithRobot([&] { return out_.Last(52, planner_status_t::SUCCEEDED) != nullptr; }, 60.0))
+      << cap.size() << " voxels on the arm, " << deepest << " m deep\n" << ReadText(dir_ + "/planner.txt");
+  ASSERT_FALSE(out_.trajectories.empty());
+  EXPECT_EQ(out_.trajectories.back().goal_id, 52);
+  const std::string log = ReadText(dir_ + "/planner.txt");
+  EXPECT_NE(log.find("start state: the arm sphere"), std::string::npos) << log;
+  EXPECT_NE(log.find("(an escape)"), std::string::npos) << log;
+}
+
+// Finding 25: a TRAJECTORY is one datagram; lost on a lossy bus, the tracker drove on along the
+// old trajectory while the planner believed the robot braking (into a box placed meanwhile). The
+// planner sends its newest trajectory again, the same message, until TRACKER_STATUS names it;
+// then no more copies.
+TEST_F(PlannerProcess, ATrajectoryTheTrackerDoesNotReportIsSentAgainUntilItDoes) {
+  Tracker(tracker_status_t::IDLE);  // a tracker is there, and has not got it
+  Send(ReachableGoal(61));
+  ASSERT_TRUE(SpinWithRobot([&] { return out_.Last(61, planner_status_t::SUCCEEDED) != nullptr; }, 60.0))
+      << ReadText(dir_ + "/planner.txt");
+  const std::int64_t id = out_.Last(61, planner_status_t::SUCCEEDED)->trajectory_id;
+  const auto copies = [&] {
+    return std::count_if(out_.trajectories.begin(), out_.trajectories.end(),
+                         [&](const poly_trajectory_t& t) { return t.trajectory_id == id; });
+  };
+  ASSERT_TRUE(SpinWithRobot([&] { return copies() >= 4; }, 2.0)) << copies() << " copies in 2 s";
+  const poly_trajectory_t* first = nullptr;
+  for (const poly_trajectory_t& t : out_.trajectories) {
+    if (t.trajectory_id != id) continue;
+    if (first == nullptr) first = &t;
+    EXPECT_EQ(t.utime, first->utime) << "the same message";
+    EXPECT_EQ(t.start_utime, first->start_utime);
+    EXPECT_EQ(t.coeffs, first->coeffs);
+  }
+  Tracker(tracker_status_t::TRACKING, 61, id);
+  SpinWithRobot([] { return false; }, 0.3);
+  const auto reported = copies();
+  SpinWithRobot([] { return false; }, 0.6);
+  EXPECT_EQ(copies(), reported) << "no copies once the tracker reports it";
+  const std::string log = ReadText(dir_ + "/planner.txt");
+  EXPECT_NE(log.find("not reported by the tracker yet: sent again"), std::string::npos) << log;
+}
+
 TEST_F(PlannerProcess, AGoalFloodLeavesTheLoopResponsiveAndTheLastGoalPlanned) {
   const int pid_before = watcher_->last["planner"].pid;
   const int beats_before = watcher_->last["planner"].count;
