@@ -47,6 +47,8 @@ void CheckProcessOptions(const EstimatorProcessOptions& o) {
   Require(positive(o.gripper_timeout_s), "gripper_timeout_s", o.gripper_timeout_s, "finite and > 0");
   Require(std::isfinite(o.max_future_s) && o.max_future_s >= 0.0, "max_future_s", o.max_future_s, "finite and >= 0");
   Require(o.num_joints >= 0, "num_joints", o.num_joints, ">= 0");
+  Require(positive(o.max_speed_mps), "max_speed_mps", o.max_speed_mps, "finite and > 0");
+  Require(positive(o.max_yaw_rate_radps), "max_yaw_rate_radps", o.max_yaw_rate_radps, "finite and > 0");
 }
 
 EstimatorProcessOptions LoadEstimatorProcessOptions(const std::string& path) {
@@ -62,6 +64,8 @@ EstimatorProcessOptions LoadEstimatorProcessOptions(const std::string& path) {
   top.Read("gripper_timeout_s", &o.gripper_timeout_s);
   top.Read("max_future_s", &o.max_future_s);
   top.Read("num_joints", &o.num_joints);
+  top.Read("max_speed_mps", &o.max_speed_mps);
+  top.Read("max_yaw_rate_radps", &o.max_yaw_rate_radps);
   top.Finish();
   try {
     CheckProcessOptions(o);

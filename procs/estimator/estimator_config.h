@@ -28,6 +28,11 @@ struct EstimatorProcessOptions {
   double max_future_s = 0.05;
   /// Joints JOINT_STATE must carry (the robot's arm: 7); 0 accepts any count. >= 0.
   int num_joints = 7;
+  /// The fastest odometry believed: a BASE_VELOCITY with |v| (m/s) or |omega| (rad/s) above
+  /// these is rejected (counted), not integrated (twice the robot's v_max 1.0 m/s and 4 x its
+  /// omega_max 0.9 rad/s, as the consumers' continuity gate). > 0.
+  double max_speed_mps = 2.0;
+  double max_yaw_rate_radps = 4.0;
 };
 
 /// Loads options from YAML (every key optional). Throws ConfigError naming the file and the

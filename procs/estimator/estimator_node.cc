@@ -81,7 +81,9 @@ void EstimatorNode::OnPose(const base_pose_t& msg, std::int64_t now_utime) {
 
 void EstimatorNode::OnVelocity(const base_velocity_t& msg, std::int64_t now_utime) {
   ++counts_.velocities;
-  if (const std::optional<InputFault> fault = CheckVelocity(msg)) return Fault(*fault);
+  if (const std::optional<InputFault> fault = CheckVelocity(msg, options_.max_speed_mps, options_.max_yaw_rate_radps)) {
+    return Fault(*fault);
+  }
   if (Future(msg.utime, now_utime)) return Fault(InputFault::kVelocityFuture);
   switch (filter_.AddOdometry(msg.utime, msg.v_mps, msg.omega_radps)) {
     case EstimatorInput::kRejectedNotFinite: return Fault(InputFault::kVelocityNotFinite);

@@ -14,6 +14,7 @@ const char* InputFaultName(InputFault fault) {
     case InputFault::kVelocityOutOfOrder: return "BASE_VELOCITY out of order";
     case InputFault::kVelocityTooOld: return "BASE_VELOCITY too old";
     case InputFault::kVelocityFuture: return "BASE_VELOCITY stamped in the future";
+    case InputFault::kVelocityImplausible: return "BASE_VELOCITY beyond the fastest odometry believed";
     case InputFault::kJointsMalformed: return "JOINT_STATE arrays do not match num_joints";
     case InputFault::kJointsCount: return "JOINT_STATE wrong joint count";
     case InputFault::kJointsNotFinite: return "JOINT_STATE not finite";
@@ -35,8 +36,11 @@ std::optional<InputFault> CheckPose(const base_pose_t& msg) {
   return std::nullopt;
 }
 
-std::optional<InputFault> CheckVelocity(const base_velocity_t& msg) {
+std::optional<InputFault> CheckVelocity(const base_velocity_t& msg, double max_speed_mps, double max_yaw_rate_radps) {
   if (!std::isfinite(msg.v_mps) || !std::isfinite(msg.omega_radps)) return InputFault::kVelocityNotFinite;
+  if (std::abs(msg.v_mps) > max_speed_mps || std::abs(msg.omega_radps) > max_yaw_rate_radps) {
+    return InputFault::kVelocityImplausible;
+  }
   return std::nullopt;
 }
 

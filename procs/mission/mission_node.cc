@@ -70,8 +70,11 @@ bool MissionNode::TrackerFinished() const {
   // came until its step timed out (the fault campaign's can-heartbeat-loss, docs/reliability.md).
   // The same with the tracker FINISHED on a trajectory of another goal (a restarted planner's
   // earlier one: at rest at its end, finding 23).
+  // Also when the status names a trajectory (the planner's last one, of an earlier goal: the
+  // goal flood of finding 28 left the tracker FINISHED on it and the mission waited 120 s): the
+  // planner saw the robot at rest at the target, and a tracker IDLE or FINISHED moves it no more.
   const bool tracker_at_rest = tracker_state_ == tracker_status_t::IDLE || tracker_state_ == tracker_status_t::FINISHED;
-  if (reached_at_rest_ && ended_trajectory_id_ == 0 && tracker_at_rest) return true;
+  if (reached_at_rest_ && tracker_at_rest) return true;
   return tracker_finished_id_ != 0 && (ended_trajectory_id_ == 0 || tracker_finished_id_ == ended_trajectory_id_);
 }
 

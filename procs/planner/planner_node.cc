@@ -698,12 +698,13 @@ double PlannerNode::CollisionDistance(std::int64_t now) const {
   return std::hypot(at.state.x_m - robot.state.x_m, at.state.y_m - robot.state.y_m);
 }
 
-std::optional<ArcYawTrajectory> PlannerNode::MakeStop(std::int64_t begin, std::string* why) const {
+std::optional<ArcYawTrajectory> PlannerNode::MakeStop(std::int64_t begin, std::string* why, bool blind) const {
   // Brake from the trajectory the robot is on when the stop begins: the newest one may not have
   // started yet (a replan waits for its t0), and braking from its start put the stop 0.7 s of
   // travel away from the robot (0.7 m of drift in the demo).
   const ActiveTrajectory& on = OnAt(begin) != nullptr ? *OnAt(begin) : *active_;
-  return stop_planner_.Make(*on.trajectory, on.TimeAt(begin), why);
+  return stop_planner_.Make(*on.trajectory, on.TimeAt(begin), why,
+                            blind ? std::optional(options_.stop.blind_duration_per_rate_ratio) : std::nullopt);
 }
 
 void PlannerNode::PublishStop(ArcYawTrajectory stop, std::int64_t begin, const std::string& detail) {
@@ -740,7 +741,7 @@ void PlannerNode::CheckMapFreshness(std::int64_t now) {
   if (active_ && !active_->stopping && !active_->EndedBy(now)) {
     const std::int64_t begin = now + Micros(options_.stop.latency_s);
     std::string why;
-    if (std::optional<ArcYawTrajectory> stop = MakeStop(begin, &why)) {
+    if (std::optional<ArcYawTrajectory> stop = MakeStop(begin, &why, /*blind=*/true)) {
       ++counts_.stale_map_stops;
       PublishStop(std::move(*stop), begin, detail + ": stopping");
       return;

@@ -153,7 +153,8 @@ class PlannerNode {
   void CheckMapFreshness(std::int64_t now);
   // A stopping trajectory from the one the robot is on at now + stop.latency_s (nullopt with
   // *why when none can be made), and its publication (STOPPING with `detail`).
-  std::optional<ArcYawTrajectory> MakeStop(std::int64_t begin, std::string* why) const;
+  // `blind`: the stale map's stop, shorter (stop.blind_duration_per_rate_ratio).
+  std::optional<ArcYawTrajectory> MakeStop(std::int64_t begin, std::string* why, bool blind = false) const;
   void PublishStop(ArcYawTrajectory stop, std::int64_t begin, const std::string& detail);
   // A new trajectory id: the clock's microseconds, or one more than the last id when that is
   // later. Unique and increasing across restarts of the planner: the tracker takes only a

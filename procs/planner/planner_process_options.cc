@@ -64,6 +64,7 @@ void ReadStop(YamlSection s, SafeStopOptions* o) {
   s.Read("margin_s", &o->margin_s);
   s.Read("replan_grace_s", &o->replan_grace_s);
   s.Read("grace_reach_m", &o->grace_reach_m);
+  s.Read("blind_duration_per_rate_ratio", &o->blind_duration_per_rate_ratio);
   s.Finish();
 }
 
@@ -136,6 +137,9 @@ void CheckPlannerProcessOptions(const PlannerProcessOptions& o, const std::strin
   }
   RequireNonNegative(o.map.stale_stop_s, source, "map.stale_stop_s");
   RequireNonNegative(o.delivery.resend_period_s, source, "delivery.resend_period_s");
+  if (!(o.stop.blind_duration_per_rate_ratio >= 1.5) || !std::isfinite(o.stop.blind_duration_per_rate_ratio)) {
+    throw ConfigError(source, "stop.blind_duration_per_rate_ratio", "must be finite and >= 1.5");
+  }
   RequirePositive(o.delivery.give_up_s, source, "delivery.give_up_s");
   RequirePositive(o.timing.from_rest_time_limit_s, source, "timing.from_rest_time_limit_s");
   RequirePositive(o.timing.publish_margin_s, source, "timing.publish_margin_s");

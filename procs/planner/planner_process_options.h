@@ -127,6 +127,13 @@ struct SafeStopOptions {
   /// all the way through a room it is discovering. > 0.
   double replan_grace_s = 0.25;
   double grace_reach_m = 4.0;
+  /// The stop for a stale map (map.stale_stop_s) brakes with this duration_per_rate_ratio
+  /// (StoppingTrajectoryOptions, 3.0 for the other stops): the planner is blind then and
+  /// anything may have appeared ahead, so the robot stops sooner and shorter (StopPlanner's
+  /// test: 1.93 s and 0.78 m against 2.78 s and 1.06 m; a stop from 0.87 m/s lasted 3.4 s and
+  /// ran 1.35 m into a box placed meanwhile: fault campaign finding 26). >= 1.5 (the time scaling's peak deceleration is 1.5 / ratio of each
+  /// limit; lengthened when beyond them).
+  double blind_duration_per_rate_ratio = 1.6;
 };
 
 /// Goals the planner refuses at once (PLANNER_STATUS FAILED with the reason).

@@ -298,12 +298,9 @@ const TrackerCycle& TrackerNode::Step(std::int64_t now_utime) {
   last_mode_ = out.mode;
   if (out.mode == TrackerMode::kTrack && active_ && options_.lost_position_m > 0.0 &&
       out.position_error_m > options_.lost_position_m) {
-    ++counts_.losses;
-    lost_ = true;
-    lost_reason_ = "tracking lost, braking";
-    DropTrajectories(fmt::format("tracking lost: the base {:.2f} m from the reference (limit {:.2f} m): braking "
-                                 "to a stop",
-                                 out.position_error_m, options_.lost_position_m));
+    BrakeOff(&counts_.losses, "tracking lost, braking",
+             fmt::format("tracking lost: the base {:.2f} m from the reference (limit {:.2f} m): braking to a stop",
+                         out.position_error_m, options_.lost_position_m));
   }
   return cycle_;
 }

@@ -35,6 +35,8 @@ TEST(EstimatorConfig, ShippedConfigRestatesTheDefaults) {
   EXPECT_DOUBLE_EQ(o.gripper_timeout_s, d.gripper_timeout_s);
   EXPECT_DOUBLE_EQ(o.max_future_s, d.max_future_s);
   EXPECT_EQ(o.num_joints, d.num_joints);
+  EXPECT_DOUBLE_EQ(o.max_speed_mps, d.max_speed_mps);
+  EXPECT_DOUBLE_EQ(o.max_yaw_rate_radps, d.max_yaw_rate_radps);
   EXPECT_DOUBLE_EQ(f.translation_var_m2_per_m, df.translation_var_m2_per_m);
   EXPECT_DOUBLE_EQ(f.rotation_var_rad2_per_rad, df.rotation_var_rad2_per_rad);
   EXPECT_DOUBLE_EQ(f.rotation_var_rad2_per_m, df.rotation_var_rad2_per_m);
@@ -65,6 +67,8 @@ TEST(EstimatorConfig, ErrorsNameTheFileAndTheField) {
   EXPECT_NE(ErrorOf(top_typo).find("publish_rate"), std::string::npos) << ErrorOf(top_typo);
   const std::string bad_filter = Write("bad_filter.yaml", "filter:\n  pose_xy_stddev_m: -1\n");
   EXPECT_NE(ErrorOf(bad_filter).find("pose_xy_stddev_m"), std::string::npos) << ErrorOf(bad_filter);
+  const std::string bad_yaw = Write("bad_yaw.yaml", "max_yaw_rate_radps: 0\n");
+  EXPECT_NE(ErrorOf(bad_yaw).find("max_yaw_rate_radps"), std::string::npos) << ErrorOf(bad_yaw);
   const std::string bad_rate = Write("bad_rate.yaml", "publish_rate_hz: 0\n");
   EXPECT_NE(ErrorOf(bad_rate).find("publish_rate_hz"), std::string::npos) << ErrorOf(bad_rate);
   const std::string bad_type = Write("bad_type.yaml", "odometry_timeout_s: soon\n");

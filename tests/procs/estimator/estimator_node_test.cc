@@ -138,7 +138,8 @@ TEST(EstimatorNode, BadInputIsCountedPerKindAndChangesNothing) {
   node.OnPose(PoseMessage(now + 200 * kMs, 5.0, 5.0, 0.0), now);  // from the future
   node.OnPose(PoseMessage(kT0, 1.0, 1.0, 0.0), now);              // not after the last one
   node.OnVelocity(VelocityMessage(now, nan, 0.0), now);
-  node.OnVelocity(VelocityMessage(kT0 - kMs, 3.0, 0.0), now);     // dt < 0
+  node.OnVelocity(VelocityMessage(kT0 - kMs, 0.3, 0.0), now);     // dt < 0
+  node.OnVelocity(VelocityMessage(now, 0.2, 235.0), now);         // a corrupted omega (finding 27)
   node.OnJoints(JointMessage(now, nan), now);
   node.OnJoints(JointMessage(now, 0.0, 6), now);                  // 6 joints, the robot has 7
   joint_state_t malformed = JointMessage(now);
@@ -152,13 +153,14 @@ TEST(EstimatorNode, BadInputIsCountedPerKindAndChangesNothing) {
   EXPECT_EQ(Fault(node, InputFault::kPoseOutOfOrder), 1);
   EXPECT_EQ(Fault(node, InputFault::kVelocityNotFinite), 1);
   EXPECT_EQ(Fault(node, InputFault::kVelocityOutOfOrder), 1);
+  EXPECT_EQ(Fault(node, InputFault::kVelocityImplausible), 1);
   EXPECT_EQ(Fault(node, InputFault::kJointsNotFinite), 1);
   EXPECT_EQ(Fault(node, InputFault::kJointsCount), 1);
   EXPECT_EQ(Fault(node, InputFault::kJointsMalformed), 1);
   EXPECT_EQ(Fault(node, InputFault::kJointsOutOfOrder), 1);
   EXPECT_EQ(Fault(node, InputFault::kJointsJump), 1);
   EXPECT_EQ(Fault(node, InputFault::kGripperRange), 1);
-  EXPECT_EQ(node.counts().total_faults(), 12);
+  EXPECT_EQ(node.counts().total_faults(), 13);
   const robot_state_t* after = node.Step(kT0 + kMs + 1);
   ASSERT_NE(after, nullptr);
   EXPECT_NEAR(after->pose.x_m, before.pose.x_m, 1e-9);
@@ -166,7 +168,7 @@ TEST(EstimatorNode, BadInputIsCountedPerKindAndChangesNothing) {
   EXPECT_EQ(after->joints.position_rad, before.joints.position_rad);
   EXPECT_TRUE(std::isnan(after->gripper));
   EXPECT_NE(node.Report().find("2 BASE_POSE not finite"), std::string::npos) << node.Report();
-  EXPECT_NE(node.StatusLine(now).find("12 bad inputs"), std::string::npos) << node.StatusLine(now);
+  EXPECT_NE(node.StatusLine(now).find("13 bad inputs"), std::string::npos) << node.StatusLine(now);
 }
 
 // A delayed pose (stamped before the odometry already taken) is applied at its time.

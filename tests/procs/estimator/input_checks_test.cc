@@ -33,9 +33,17 @@ TEST(EstimatorInputChecks, PoseAndVelocity) {
   pose.yaw_rad = kNan;
   EXPECT_EQ(CheckPose(pose), InputFault::kPoseNotFinite);
   base_velocity_t velocity{};
-  EXPECT_FALSE(CheckVelocity(velocity));
+  EXPECT_FALSE(CheckVelocity(velocity, 2.0, 4.0));
+  velocity.v_mps = -1.9;
+  velocity.omega_radps = 3.9;
+  EXPECT_FALSE(CheckVelocity(velocity, 2.0, 4.0));
+  velocity.omega_radps = 235.0;  // a bit-flipped exponent (finding 27)
+  EXPECT_EQ(CheckVelocity(velocity, 2.0, 4.0), InputFault::kVelocityImplausible);
+  velocity.omega_radps = 0.0;
+  velocity.v_mps = -2.5;
+  EXPECT_EQ(CheckVelocity(velocity, 2.0, 4.0), InputFault::kVelocityImplausible);
   velocity.omega_radps = std::numeric_limits<double>::infinity();
-  EXPECT_EQ(CheckVelocity(velocity), InputFault::kVelocityNotFinite);
+  EXPECT_EQ(CheckVelocity(velocity, 2.0, 4.0), InputFault::kVelocityNotFinite);
 }
 
 TEST(EstimatorInputChecks, Joints) {

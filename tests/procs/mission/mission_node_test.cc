@@ -414,6 +414,29 @@ TEST_F(MissionNodeTest, AGoalReachedAtRestWithTheTrackerFinishedOnAnEarlierAttem
   EXPECT_EQ(node_->state(), mission_status_t::SUCCEEDED);
 }
 
+// Finding 28 (a goal flood): the planner's "goal reached at rest" status for the third attempt
+// still carried its last trajectory's id (the first attempt's, FINISHED by the tracker): the
+// robot at rest at the target with the tracker FINISHED is arrival; the mission waited 120 s.
+TEST_F(MissionNodeTest, AGoalReachedAtRestNamingAnEarlierGoalsTrajectoryCountsAsArrival) {
+  Make({Goto(a_, "pickup")});
+  Start();
+  Tracker(kFirstGoalId, tracker_status_t::TRACKING, 1.0, 3);
+  Planner(kFirstGoalId, planner_status_t::CANCELLED, 2.0, "goal superseded by goal 900000018");
+  node_->Tick(At(2.6));
+  ASSERT_EQ(goals_.size(), 2u);
+  const std::int64_t second = goals_.back().goal_id;
+  Robot(a_, 3.0);
+  Tracker(kFirstGoalId, tracker_status_t::FINISHED, 3.0, 3);
+  planner_status_t m{};
+  m.utime = At(3.2);
+  m.state = planner_status_t::SUCCEEDED;
+  m.goal_id = second;
+  m.trajectory_id = 3;  // the planner's last trajectory, of the first attempt
+  m.detail = "goal reached at rest: end effector 0.016 m / 0.008 rad from the target";
+  node_->OnPlannerStatus(m, At(3.2));
+  EXPECT_EQ(node_->state(), mission_status_t::SUCCEEDED);
+}
+
 // A trajectory the planner reported ended still needs the tracker's FINISHED: an IDLE tracker
 // (e.g. between trajectories) is not enough there.
 TEST_F(MissionNodeTest, AnEndedTrajectoryIsNotArrivedByAnIdleTracker) {

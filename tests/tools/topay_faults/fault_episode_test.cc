@@ -21,6 +21,7 @@
 #include "topay/heartbeat_t.hpp"
 #include "topay/mission_status_t.hpp"
 #include "topay/motorsim_fault_t.hpp"
+#include "topay/tracker_status_t.hpp"
 
 namespace topay::tools {
 namespace {
@@ -173,7 +174,12 @@ TEST_F(FaultEpisodeTest, TimesTheBridgesStopAndTheRecoveryFromTheBus) {
   std::optional<Clock::time_point> stopped_at;
   bool resumed = false;
   RunEpisode(&episode, &monitor, [&](const GraphView& view) {
-    if (view.drive_state == drive_status_t::STOPPED && !stopped_at) stopped_at = Clock::now();
+    if (view.drive_state == drive_status_t::STOPPED && !stopped_at) {
+      stopped_at = Clock::now();
+      tracker_status_t held{};  // the tracker, held by the stopped drives
+      held.state = tracker_status_t::HELD;
+      listener.publish("TRACKER_STATUS", &held);
+    }
     if (stopped_at && !resumed && SecondsSince(*stopped_at) > 1.0) graph.Resume(), resumed = true;
   });
   listen.join();
@@ -185,6 +191,7 @@ TEST_F(FaultEpisodeTest, TimesTheBridgesStopAndTheRecoveryFromTheBus) {
   EXPECT_GE(r.safe_ms, 50.0);    // the bridge's answer came 50 ms after the fault was seen
   EXPECT_LT(r.safe_ms, 1000.0);
   EXPECT_TRUE(r.recovered) << r.reaction;
+  EXPECT_NE(r.reaction.find("tracker HELD after"), std::string::npos) << r.reaction;
   EXPECT_GE(r.recover_s, 1.0);   // RUNNING and moving again only after 1 s stopped
   EXPECT_EQ(r.contacts, 0);
 }
