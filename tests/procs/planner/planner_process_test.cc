@@ -131,6 +131,36 @@ class PlannerProcess : public testing::Test {
     goal.X_WE = kinematics_.EndEffectorPose(*goal.hint);
     return msgs::ToMessage(goal);
   }
+  // The voxels over the outermost arm sphere of the robot at start_ (centres above its centre
+  // by above_radii of its radius, the sphere reaching at least 3 mm into each) whose deepest
+  // overlap with any arm sphere (m) passes `keep`; *deepest_m (if given) the largest kept.
+  template <class Keep>
+  std::vector<VoxelChange> VoxelsOnTheArm(double above_radii, Keep keep, double* deepest_m) const {
+    KinematicsCache cache = kinematics_.MakeCache();
+    kinematics_.Update(start_, &cache);
+    const std::size_t outer = cache.p_WS.size() - 1;
+    const Eigen::Vector3d p_WS = cache.p_WS[outer];
+    const double r = model_.spheres[outer].radius_m;
+    const GridGeometry3 g = planner::testing::RoomGeometry();
+    const double half = 0.5 * g.resolution_m;
+    const auto depth = [&](std::size_t s, const Eigen::Vector3d& c) {  // how far sphere s reaches into the voxel at c
+      return model_.spheres[s].radius_m - ((cache.p_WS[s] - c).cwiseAbs().array() - half).max(0.0).matrix().norm();
+    };
+    std::vector<VoxelChange> cap;
+    const CellBox cells = VoxelsOverlapping(g, {p_WS - Eigen::Vector3d::Constant(r), p_WS + Eigen::Vector3d::Constant(r)});
+    for (int iz = cells.begin.z(); iz < cells.end.z(); ++iz)
+      for (int iy = cells.begin.y(); iy < cells.end.y(); ++iy)
+        for (int ix = cells.begin.x(); ix < cells.end.x(); ++ix) {
+          const Eigen::Vector3d c = g.CellCenter(ix, iy, iz);
+          if (c.z() < p_WS.z() + above_radii * r || depth(outer, c) < 0.003) continue;
+          double most = 0.0;
+          for (std::size_t s = 0; s < cache.p_WS.size(); ++s) most = std::max(most, depth(s, c));
+          if (!keep(most)) continue;
+          cap.push_back({{ix, iy, iz}, VoxelState::kOccupied});
+          if (deepest_m != nullptr) *deepest_m = std::max(*deepest_m, most);
+        }
+    return cap;
+  }
   void Send(const goal_t& goal) { watcher_->lcm().publish(std::string(channels::GOAL), &goal); }
   // Plays the tracker: a TRACKER_STATUS in `state` (for goal_id's trajectory_id; 0: none).
   void Tracker(std::int8_t state, std::int64_t goal_id = 0, std::int64_t trajectory_id = 0) {
@@ -557,30 +587,12 @@ TEST_F(PlannerProcess, ARestartedPlannersTrajectoryIdsAreAboveTheDeadOnes) {
 // is its check against the newest map, so it goes out. Before, every such plan was refused as
 // "colliding with the newer map at 0.00 s", plan after plan (a PlannerGraph test stuck 60 s).
 TEST_F(PlannerProcess, APlanFromRestWithTheArmJustInsideNewlySensedVoxelsGoesOut) {
-  KinematicsCache cache = kinematics_.MakeCache();
-  kinematics_.Update(start_, &cache);
-  const std::size_t outer = cache.p_WS.size() - 1;
-  const Eigen::Vector3d p_WS = cache.p_WS[outer];
-  const double r = model_.spheres[outer].radius_m;
-  const GridGeometry3 g = planner::testing::RoomGeometry();
-  const double half = 0.5 * g.resolution_m;
-  const auto depth = [&](std::size_t s, const Eigen::Vector3d& c) {  // how far sphere s reaches into the voxel at c
-    return model_.spheres[s].radius_m - ((cache.p_WS[s] - c).cwiseAbs().array() - half).max(0.0).matrix().norm();
-  };
-  std::vector<VoxelChange> cap;
-  const CellBox cells = VoxelsOverlapping(g, {p_WS - Eigen::Vector3d::Constant(r), p_WS + Eigen::Vector3d::Constant(r)});
-  for (int iz = cells.begin.z(); iz < cells.end.z(); ++iz)
-    for (int iy = cells.begin.y(); iy < cells.end.y(); ++iy)
-      for (int ix = cells.begin.x(); ix < cells.end.x(); ++ix) {
-        const Eigen::Vector3d c = g.CellCenter(ix, iy, iz);
-        if (c.z() < p_WS.z() + 0.5 * r || depth(outer, c) < 0.003) continue;
-        bool shallow = true;
-        for (std::size_t s = 0; s < cache.p_WS.size(); ++s) shallow &= depth(s, c) < 0.02;
-        if (shallow) cap.push_back({{ix, iy, iz}, VoxelState::kOccupied});
-      }
+  // Above the outermost sphere's middle, no sphere deeper than 2 cm in any.
+  const std::vector<VoxelChange> cap =
+      VoxelsOnTheArm(0.5, [](double deepest_m) { return deepest_m < 0.02; }, nullptr);
   ASSERT_FALSE(cap.empty());
   SpinWithRobot([] { return false; }, 0.5);
-  const map_update_t delta = msgs::EncodeMapDelta(g, cap, procs::NowUtime(), 2);
+  const map_update_t delta = msgs::EncodeMapDelta(planner::testing::RoomGeometry(), cap, procs::NowUtime(), 2);
   watcher_->lcm().publish(std::string(channels::MAP_UPDATE), &delta);
   SpinWithRobot([] { return false; }, 0.3);
   Send(ReachableGoal(51));
@@ -600,33 +612,12 @@ TEST_F(PlannerProcess, APlanFromRestWithTheArmJustInsideNewlySensedVoxelsGoesOut
 // reaches into by at most map.start_arm_escape_overlap_m (0.06 m), and that plan goes out.
 // Before, every plan from rest failed on its start and the goal failed ("stuck").
 TEST_F(PlannerProcess, AnArmStoppedDeepInVoxelsIsPlannedOutOfThem) {
-  KinematicsCache cache = kinematics_.MakeCache();
-  kinematics_.Update(start_, &cache);
-  const std::size_t outer = cache.p_WS.size() - 1;
-  const Eigen::Vector3d p_WS = cache.p_WS[outer];
-  const double r = model_.spheres[outer].radius_m;
-  const GridGeometry3 g = planner::testing::RoomGeometry();
-  const double half = 0.5 * g.resolution_m;
-  const auto depth = [&](std::size_t s, const Eigen::Vector3d& c) {  // how far sphere s reaches into the voxel at c
-    return model_.spheres[s].radius_m - ((cache.p_WS[s] - c).cwiseAbs().array() - half).max(0.0).matrix().norm();
-  };
-  std::vector<VoxelChange> cap;
-  double deepest = 0.0;
-  const CellBox cells = VoxelsOverlapping(g, {p_WS - Eigen::Vector3d::Constant(r), p_WS + Eigen::Vector3d::Constant(r)});
-  for (int iz = cells.begin.z(); iz < cells.end.z(); ++iz)
-    for (int iy = cells.begin.y(); iy < cells.end.y(); ++iy)
-      for (int ix = cells.begin.x(); ix < cells.end.x(); ++ix) {
-        const Eigen::Vector3d c = g.CellCenter(ix, iy, iz);
-        if (c.z() < p_WS.z() + 0.25 * r || depth(outer, c) < 0.003) continue;
-        double most = 0.0;
-        for (std::size_t s = 0; s < cache.p_WS.size(); ++s) most = std::max(most, depth(s, c));
-        if (most >= 0.055) continue;  // within the escape's 6 cm
-        cap.push_back({{ix, iy, iz}, VoxelState::kOccupied});
-        deepest = std::max(deepest, most);
-      }
+  double deepest = 0.0;  // above a quarter of the outermost sphere, none as deep as the escape's 6 cm
+  const std::vector<VoxelChange> cap =
+      VoxelsOnTheArm(0.25, [](double deepest_m) { return deepest_m < 0.055; }, &deepest);
   ASSERT_GT(deepest, 0.035) << "deeper than a plan from rest leaves out (3 cm)";
   SpinWithRobot([] { return false; }, 0.5);
-  const map_update_t delta = msgs::EncodeMapDelta(g, cap, procs::NowUtime(), 2);
+  const map_update_t delta = msgs::EncodeMapDelta(planner::testing::RoomGeometry(), cap, procs::NowUtime(), 2);
   watcher_->lcm().publish(std::string(channels::MAP_UPDATE), &delta);
   SpinWithRobot([] { return false; }, 0.3);
   Send(ReachableGoal(52));
