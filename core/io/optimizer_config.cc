@@ -86,6 +86,9 @@ void ReadOptimizerOptions(YamlSection section, TrajectoryOptimizerOptions* o) {
   section.Read("joint_escalation_step_rad", &o->joint_escalation_step_rad);
   section.Read("rate_escalation_step", &o->rate_escalation_step);
   section.Read("max_time_stretch", &o->max_time_stretch);
+  section.Read("collapse_duration_fraction", &o->collapse_duration_fraction);
+  section.Read("collapse_rho_factor", &o->collapse_rho_factor);
+  section.Read("max_collapse_restarts", &o->max_collapse_restarts);
   section.Read("ee_position_tolerance_m", &o->ee_position_tolerance_m);
   section.Read("ee_orientation_tolerance_rad", &o->ee_orientation_tolerance_rad);
   ReadAlm(section.Section("alm"), &o->alm);

@@ -112,6 +112,7 @@ void ReadFrontEnd(YamlSection section, FrontEndOptions* o) {
   goal.Read("clearance_weight", &o->goal.clearance_weight);
   goal.Read("clearance_saturation_m", &o->goal.clearance_saturation_m);
   goal.Read("hint_first", &o->goal.hint_first);
+  goal.Read("standing_candidate", &o->goal.standing_candidate);
   goal.Finish();
   YamlSection ik = section.Section("ik");
   ik.Read("max_solutions", &o->ik.max_solutions);
@@ -144,6 +145,11 @@ void ReadFrontEnd(YamlSection section, FrontEndOptions* o) {
   discretisation.Read("delta_l_m", &o->discretisation.delta_l_m);
   discretisation.Read("max_turn_step_rad", &o->discretisation.max_turn_step_rad);
   discretisation.Finish();
+  YamlSection dwell = section.Section("arm_dwell");
+  dwell.Read("travel_time_factor", &o->arm_dwell.travel_time_factor);
+  dwell.Read("min_time_s", &o->arm_dwell.min_time_s);
+  dwell.Read("step_s", &o->arm_dwell.step_s);
+  dwell.Finish();
   YamlSection rrt = section.Section("rrt");
   rrt.Read("time_budget_s", &o->rrt.time_budget_s);
   rrt.Read("stop_at_first_solution", &o->rrt.stop_at_first_solution);
@@ -254,6 +260,7 @@ void CheckOptions(const YAML::Node& root, const std::string& source,
       {"front_end.ik", throwing([&] { CheckWholeBodyIkOptions(f.ik); })},
       {"front_end.topology", [&] { return CheckTopologicalPathSearchOptions(f.topology); }},
       {"front_end.discretisation", throwing([&] { CheckDiscreteSE2Options(f.discretisation); })},
+      {"front_end.arm_dwell", throwing([&] { CheckArmDwellOptions(f.arm_dwell); })},
       {"front_end.rrt", [&] { return CheckArmRrtStarOptions(f.rrt); }},
       {"front_end.validity", throwing([&] { CheckWholeBodyValidityOptions(f.validity); })},
       {"front_end", throwing([&] { CheckFrontEndOptions(f); })},

@@ -116,7 +116,10 @@ std::string BackEndSummary::Report() const {
   }
   out << Format("  iterations: stage 1 %.0f, stage 2 %.0f (%.0f outer, final rho %.3g",
                 stage1_iterations, stage2_iterations, outer_iterations, final_rho)
-      << Format(", %.0f penalty escalations)\n", penalty_escalations);
+      << Format(", %.0f penalty escalations", penalty_escalations)
+      << (collapse_restarts > 0 ? Format(", %.0f restarts after a collapsed duration", collapse_restarts)
+                                : std::string())
+      << ")\n";
   out << Format("  objective evaluations %.0f; time %.2f ms", objective_evaluations,
                 1e3 * total_s)
       << Format(" (warm start %.2f, stage 1 %.2f, stage 2 %.2f, check %.2f ms)\n",

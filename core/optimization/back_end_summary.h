@@ -62,6 +62,9 @@ struct BackEndSummary {
   int stage2_iterations = 0;      ///< L-BFGS iterations over all outer iterations.
   int objective_evaluations = 0;  ///< Both stages.
   int penalty_escalations = 0;    ///< Times violated terms' weights were raised (arc length-yaw).
+  /// Arc length-yaw: stage 2 started again after a collapsed duration
+  /// (TrajectoryOptimizerOptions::collapse_duration_fraction).
+  int collapse_restarts = 0;
   /// Arc length-yaw: the uniform slow-down applied to the result (every duration x this;
   /// TrajectoryOptimizerOptions::max_time_stretch); 1 if none.
   double time_stretch = 1.0;

@@ -111,6 +111,12 @@ void CheckTrajectoryOptimizerOptions(const TrajectoryOptimizerOptions& o) {
           "rate_escalation_step must be in [0, 1)");
   require(std::isfinite(o.max_time_stretch) && o.max_time_stretch >= 1.0,
           "max_time_stretch must be finite and >= 1");
+  require(std::isfinite(o.collapse_duration_fraction) && o.collapse_duration_fraction >= 0.0 &&
+              o.collapse_duration_fraction < 1.0,
+          "collapse_duration_fraction must be in [0, 1)");
+  require(std::isfinite(o.collapse_rho_factor) && o.collapse_rho_factor > 1.0,
+          "collapse_rho_factor must be finite and > 1");
+  require(o.max_collapse_restarts >= 0, "max_collapse_restarts must be >= 0");
   require(o.objective.panels_per_piece >= 1, "objective.panels_per_piece must be >= 1");
   require(o.objective.sample_chunks >= 1, "objective.sample_chunks must be >= 1");
   require(o.feasibility.sample_period_s > 0.0, "feasibility.sample_period_s must be > 0");
@@ -250,10 +256,21 @@ void TrajectoryOptimizer::PrepareEndpointRelief(const WholeBodyPath& initial_pat
   run->summary.endpoint_relief = run->relief.Describe();
 }
 
+// Stage 1 then stage 2; both again from the warm start with a larger rho while stage 2's
+// duration collapsed.
 void TrajectoryOptimizer::RunStages(Run* run) const {
   run->objective->set_stop_token(run->stop);
-  if (options_.run_stage1 && options_.stage1_max_iterations > 0 && !RunStage1(run)) return;
-  RunStage2(run);
+  double rho = options_.alm.rho_initial;
+  for (int restart = 0;; ++restart) {
+    if (options_.run_stage1 && options_.stage1_max_iterations > 0 && !RunStage1(run)) return;
+    if (RunStage2(rho, run) || restart == options_.max_collapse_restarts ||
+        !DurationCollapsed(*run)) {
+      return;
+    }
+    rho = std::min(rho * options_.collapse_rho_factor, options_.alm.rho_max);
+    run->x = run->objective->Pack(run->warm.durations_s, run->warm.waypoints, run->warm.end);
+    ++run->summary.collapse_restarts;
+  }
 }
 
 bool TrajectoryOptimizer::RunStage1(Run* run) const {
@@ -265,26 +282,33 @@ bool TrajectoryOptimizer::RunStage1(Run* run) const {
   lbfgs.max_iterations = options_.stage1_max_iterations;
   const LbfgsResult result = SolveWithLbfgs(&objective, &run->x, lbfgs, run->deadline, run->stop);
   const bool go_on = run->Account(result, &run->summary.stage1_iterations);
-  run->summary.stage1_s = stage.ElapsedS();
+  run->summary.stage1_s += stage.ElapsedS();
   return go_on;
 }
 
 // Stage 2: PHR-ALM on eq. (7) with every other term; while the result is infeasible on the
 // fields, the penalty weights are raised and the ALM continues from where it was.
-void TrajectoryOptimizer::RunStage2(Run* run) const {
+bool TrajectoryOptimizer::RunStage2(double rho, Run* run) const {
   TrajectoryObjective& objective = *run->objective;
   BackEndSummary& summary = run->summary;
   const Stopwatch stage;
+  const auto done = [&](bool success) {
+    summary.stage2_s += stage.ElapsedS();
+    return success;
+  };
   objective.set_terms(ObjectiveTerms());
   Vector6d lambda = Vector6d::Zero();
-  double rho = options_.alm.rho_initial;
   PenaltyValues scales = OnesPenaltyValues();
   PenaltyTightening tightening;
+  objective.set_penalty_scales(scales);
+  objective.set_tightening(tightening);
   for (int escalation = 0;; ++escalation) {
-    if (!RunAugmentedLagrangian(run, &lambda, &rho)) break;
-    if (CheckResult(run)) break;  // success
-    if (StretchTime(run)) break;  // success, slower
-    if (summary.feasibility.feasible || escalation == options_.max_penalty_escalations) break;
+    if (!RunAugmentedLagrangian(run, &lambda, &rho)) return done(false);
+    if (CheckResult(run)) return done(true);  // success
+    if (StretchTime(run)) return done(true);  // success, slower
+    if (summary.feasibility.feasible || escalation == options_.max_penalty_escalations) {
+      return done(false);
+    }
     const FieldFeasibilityReport& report = summary.feasibility;
     EscalateViolatedPenalties(report, options_.feasibility, options_.penalty_escalation_factor,
                               &scales);
@@ -293,7 +317,15 @@ void TrajectoryOptimizer::RunStage2(Run* run) const {
     objective.set_tightening(tightening);
     ++summary.penalty_escalations;
   }
-  summary.stage2_s = stage.ElapsedS();
+}
+
+bool TrajectoryOptimizer::DurationCollapsed(const Run& run) const {
+  const BackEndSummary& summary = run.summary;
+  if (run.cancelled || run.timed_out || !run.checked) return false;
+  const bool on_target = summary.ee_position_error_m <= options_.ee_position_tolerance_m &&
+                         summary.ee_orientation_error_rad <= options_.ee_orientation_tolerance_rad;
+  return !on_target &&
+         summary.duration_s < options_.collapse_duration_fraction * run.warm.total_duration_s;
 }
 
 bool TrajectoryOptimizer::RunAugmentedLagrangian(Run* run, Vector6d* lambda, double* rho) const {

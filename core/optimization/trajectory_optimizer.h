@@ -65,6 +65,21 @@ struct TrajectoryOptimizerOptions : BackEndOptions {
   /// a penalty escalation.
   double max_time_stretch = 2.0;
 
+  // ---- A collapsed duration (ours, finding 29) ---------------------------------------------
+  /// A stage 2 that ends with the end effector off target and the duration below
+  /// collapse_duration_fraction x the warm start's fell into the degenerate optimum of a start
+  /// whose end effector is already within centimetres of the target: at the ALM's first rho
+  /// the error cost less than any motion's jerk and time, so the end state stayed at the
+  /// start and the duration shrank towards 0, where its gradient vanishes (eq. (21)); no
+  /// larger rho brings it back. Both stages then run again from the warm start (multipliers,
+  /// penalty weights and thresholds reset) with rho x collapse_rho_factor, at most
+  /// max_collapse_restarts times (0: never). Finding 29's case (2.5 cm off target, the arm
+  /// to move 0.6 rad; tests/core/optimization/trajectory_optimizer_collapse_test.cc): rho
+  /// 1e4 collapsed to 0.17 ms, 1e6 converged.
+  double collapse_duration_fraction = 0.05;
+  double collapse_rho_factor = 100.0;
+  int max_collapse_restarts = 2;
+
   // ---- Endpoints inside the margins (TrajectoryProblem::exact_prefix_states / suffix) ------
   /// With exact_prefix_states > 0 (exact_suffix_states > 0) the clearance thresholds of the
   /// penalties and of the field check are relieved by the start's (the path's last state's)
@@ -148,6 +163,8 @@ class TrajectoryOptimizer : public TrajectoryBackEnd {
   /// The relief of the problem's exact path stretches (empty if it asks for none or its
   /// endpoints are clear of the margins), given to the objective and named in the summary.
   void PrepareEndpointRelief(const WholeBodyPath& initial_path, Run* run) const;
+  /// Stage 1 and stage 2, both again from the warm start with rho x collapse_rho_factor while
+  /// the duration collapsed (collapse_duration_fraction).
   void RunStages(Run* run) const;
   /// Stage 1: the path fit; false if cancelled or out of time.
   bool RunStage1(Run* run) const;
@@ -155,9 +172,14 @@ class TrajectoryOptimizer : public TrajectoryBackEnd {
   /// applies; true if the stretched trajectory passes CheckResult (x then holds it), else x
   /// and the summary's check are as before.
   bool StretchTime(Run* run) const;
-  /// Stage 2: ALM rounds with penalty escalation until a success, a feasible result or the
+  /// Stage 2: ALM rounds from rho, zero multipliers, unit penalty weights and untightened
+  /// thresholds, with penalty escalation, until a success (true), a feasible result or the
   /// escalation limit.
-  void RunStage2(Run* run) const;
+  bool RunStage2(double rho, Run* run) const;
+  /// The last checked iterate misses the end effector with a duration below
+  /// collapse_duration_fraction x the warm start's (and the run was neither cancelled nor out
+  /// of time).
+  bool DurationCollapsed(const Run& run) const;
   /// ALM outer iterations from (lambda, rho) until the end effector is within the ALM
   /// tolerances or the outer limit; false if cancelled or out of time.
   bool RunAugmentedLagrangian(Run* run, Vector6d* lambda, double* rho) const;

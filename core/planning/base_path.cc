@@ -2,6 +2,18 @@
 
 namespace topay {
 
+std::string_view BasePathSourceName(BasePathSource source) {
+  switch (source) {
+    case BasePathSource::kTopologicalPrm:
+      return "topological_prm";
+    case BasePathSource::kJumpPointSearch:
+      return "jps";
+    case BasePathSource::kStanding:
+      return "standing";
+  }
+  return "unknown";
+}
+
 double PolylineLength(const std::vector<Eigen::Vector2d>& waypoints_W_m) {
   double length = 0.0;
   for (std::size_t i = 1; i < waypoints_W_m.size(); ++i) {

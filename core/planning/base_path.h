@@ -1,13 +1,18 @@
 #pragma once
 
+#include <string_view>
 #include <vector>
 
 #include <Eigen/Core>
 
 namespace topay {
 
-/// Where a base path came from.
-enum class BasePathSource { kTopologicalPrm, kJumpPointSearch };
+/// Where a base path came from. kStanding: the base stays where it stands (a goal candidate
+/// found with the arm alone, GoalCandidate::base_stays; no search): start and goal coincide.
+enum class BasePathSource { kTopologicalPrm, kJumpPointSearch, kStanding };
+
+/// "topological_prm", "jps", "standing" (PLANNER_PATHS' source).
+std::string_view BasePathSourceName(BasePathSource source);
 
 /// A collision-free polyline for the base in the world's xy plane (paper Sec. III-A: one
 /// element of P_b), from the start base position to the goal base position.

@@ -431,6 +431,18 @@ TopologicalPathSearchResult FrontEnd::SearchBasePaths(int attempt, const GoalCan
                                                       PlanContext* context) const {
   FrontEndResult& result = *context->result;
   FrontEndStats& stats = result.stats;
+  if (goal.base_stays) {  // no search: the base stands still (a standing goal candidate)
+    TopologicalPathSearchResult stays;
+    stays.status = TopologicalPathSearchResult::Status::kSuccess;
+    BasePath path;
+    path.waypoints_W_m = {BaseOf(context->start), BaseOf(goal.state)};
+    path.source = BasePathSource::kStanding;
+    stays.paths.push_back(std::move(path));
+    result.base_paths = stays.paths;
+    stats.num_base_paths = 1;
+    stats.standing_base_path = true;
+    return stays;
+  }
   // Base paths, free at the validity's base margin at least.
   TopologicalPathSearchOptions topology = options_.topology;
   topology.base_radius_m = kinematics_.model().base_cylinder.radius_m;
@@ -537,6 +549,9 @@ std::vector<ArmJob> FrontEnd::MakeArmJobs(int attempt, const GoalCandidate& goal
     try {
       job.base_sequence = DiscreteSE2(job.base_path.waypoints_W_m, context->start.yaw_rad,
                                       goal.state.yaw_rad, limits, options_.discretisation);
+      AddArmDwell(context->start.q_rad, goal.state.q_rad,
+                  kinematics_.model().joint_limits.qd_max_radps, options_.arm_dwell,
+                  &job.base_sequence);
     } catch (const std::exception& e) {
       job.setup_error = std::string("DiscreteSE2: ") + e.what();
     }

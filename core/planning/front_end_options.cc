@@ -25,6 +25,7 @@ void CheckFrontEndOptions(const FrontEndOptions& o) {
   require(o.goal_retry.max_total_iterations >= 1, "goal_retry.max_total_iterations", ">= 1");
   CheckExactZoneOptions(o.exact_zones);
   CheckBaseEscapeOptions(o.base_escape);
+  CheckArmDwellOptions(o.arm_dwell);
 }
 
 }  // namespace topay

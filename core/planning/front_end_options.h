@@ -4,6 +4,7 @@
 #include <optional>
 
 #include "core/planning/arm_rrt_star.h"
+#include "core/planning/arm_dwell.h"
 #include "core/planning/base_escape.h"
 #include "core/planning/discrete_se2.h"
 #include "core/planning/exact_zones.h"
@@ -78,6 +79,9 @@ struct FrontEndOptions {
   bool reachable_goal_search = true;
   /// Delta l = 1.414 m, turns in place at the vertices.
   DiscreteSE2Options discretisation;
+  /// A base sequence too short for the arm's move ends with the base standing (ours, finding
+  /// 29: a robot stopped next to its goal; arm_dwell.h).
+  ArmDwellOptions arm_dwell;
   /// Base limits for the layers' arrival times (they bound the joint steps). Unset: the
   /// model's (the real robot's omega_max 0.9 rad/s); the benchmark sets its own.
   std::optional<BaseLimits> base_limits;

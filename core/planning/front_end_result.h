@@ -67,6 +67,9 @@ struct FrontEndStats {
   bool goal_in_exact_zone = false;
   bool start_base_escape = false;
   bool goal_base_escape = false;
+  /// The goal candidate kept the start's base pose (GoalCandidate::base_stays): its one base
+  /// path is the robot standing still (BasePathSource::kStanding), no search.
+  bool standing_base_path = false;
   // Base paths (the goal attempt that produced the result, else the last one).
   int num_prm_nodes = 0;           ///< Guards + connectors.
   int num_raw_paths = 0;           ///< DFS.

@@ -30,6 +30,7 @@ GoalCandidate MakeCandidate(const IkSolution& solution, const WholeBodyState& st
   GoalCandidate candidate;
   candidate.state = solution.state;
   candidate.from_hint = solution.from_hint;
+  candidate.base_stays = solution.base_stays;
   candidate.clearance_m = solution.clearance_m;
   candidate.base_travel_m = std::hypot(solution.state.x_m - start.x_m,
                                        solution.state.y_m - start.y_m);
@@ -55,6 +56,7 @@ GoalCandidatesResult FindGoalCandidates(const WholeBodyIk& ik, const Eigen::Isom
   WholeBodyIkQuery query;
   query.hint = hint;
   query.reference_base = Eigen::Vector3d(start.x_m, start.y_m, start.yaw_rad);
+  if (options.standing_candidate) query.standing = start;
   result.ik = ik.Solve(X_WE_target, clearance, query);
   if (!result.ik.success()) {
     result.failure_reason = "goal: " + result.ik.failure_reason;

@@ -26,6 +26,11 @@ struct GoalCandidatesOptions {
   /// A candidate found from the hint (the benchmark's generating goal state, or the hint
   /// polished by the IK) is placed first whatever its cost.
   bool hint_first = true;
+  /// Ours: the start's base pose with the arm alone (WholeBodyIkQuery::standing: one arm-only
+  /// IK run from the start's joints) is a candidate too, ranked like the rest (no base travel).
+  /// A robot stopped next to its goal, where the base cannot turn (finding 29), finishes with
+  /// the arm; a start out of the arm's reach costs one IK run that does not converge.
+  bool standing_candidate = true;
 };
 
 /// One whole-body goal state for the end-effector target.
@@ -35,6 +40,9 @@ struct GoalCandidate {
   double clearance_m = 0.0;    ///< From the clearance function the IK was given.
   double cost = 0.0;           ///< Ranking cost (GoalCandidatesOptions).
   bool from_hint = false;
+  /// The start's base pose exactly (GoalCandidatesOptions::standing_candidate): only the arm
+  /// moves.
+  bool base_stays = false;
 };
 
 struct GoalCandidatesResult {

@@ -361,7 +361,7 @@ double WholeBodyIk::RankCost(const IkSolution& solution, const WholeBodyIkQuery&
 }
 
 bool WholeBodyIk::Accept(const DlsOutcome& outcome, const StateClearanceFn& clearance,
-                         const WholeBodyIkQuery& query, bool from_hint, Workspace* ws,
+                         const WholeBodyIkQuery& query, IkSeed seed, Workspace* ws,
                          WholeBodyIkResult* result) const {
   if (!outcome.converged) {
     ++result->rejected_not_converged;
@@ -382,7 +382,8 @@ bool WholeBodyIk::Accept(const DlsOutcome& outcome, const StateClearanceFn& clea
   solution.state = ws->state;
   solution.position_error_m = outcome.position_error_m;
   solution.orientation_error_rad = outcome.orientation_error_rad;
-  solution.from_hint = from_hint;
+  solution.from_hint = seed == IkSeed::kHint;
+  solution.base_stays = seed == IkSeed::kStanding;
   solution.cost = RankCost(solution, query);
   for (IkSolution& kept : result->solutions) {
     if (IsDuplicate(kept, solution)) {
@@ -456,6 +457,13 @@ std::string WholeBodyIk::CheckQuery(const WholeBodyIkQuery& query) const {
     }
     if (!query.hint->IsFinite()) return "hint contains NaN or infinity";
   }
+  if (query.standing) {
+    if (query.standing->num_joints() != kinematics_.num_joints()) {
+      return "standing state has " + std::to_string(query.standing->num_joints()) +
+             " joints, the robot " + std::to_string(kinematics_.num_joints());
+    }
+    if (!query.standing->IsFinite()) return "standing state contains NaN or infinity";
+  }
   if (query.reference_base && !query.reference_base->allFinite()) {
     return "reference base pose contains NaN or infinity";
   }
@@ -490,6 +498,7 @@ WholeBodyIkResult WholeBodyIk::Solve(const Eigen::Isometry3d& X_WE_target,
   ws.iterations_left = options_.max_total_iterations;
   // 1. The hint: as is, else as a seed.
   if (query.hint) TryHint(X_WE_target, clearance, query, &ws, &result);
+  if (query.standing) TryStanding(X_WE_target, clearance, query, &ws, &result);
   // 2. Base candidates around the target, restarts at each.
   SearchBases(X_WE_target, p_WW, rho_lo, rho_hi, clearance, query, watch, &ws, &result);
   result.total_iterations = options_.max_total_iterations - ws.iterations_left;
@@ -529,12 +538,24 @@ void WholeBodyIk::TryHint(const Eigen::Isometry3d& X_WE_target, const StateClear
     outcome = Evaluate(X_WE_target, ws);
   }
   bool accepted = outcome.converged &&
-                  Accept(outcome, clearance, query, /*from_hint=*/true, ws, result);
+                  Accept(outcome, clearance, query, IkSeed::kHint, ws, result);
   if (!accepted) {
     outcome = Attempt(X_WE_target, result, ws);
-    accepted = Accept(outcome, clearance, query, /*from_hint=*/true, ws, result);
+    accepted = Accept(outcome, clearance, query, IkSeed::kHint, ws, result);
   }
   result->hint_used = accepted;
+}
+
+void WholeBodyIk::TryStanding(const Eigen::Isometry3d& X_WE_target,
+                              const StateClearanceFn& clearance, const WholeBodyIkQuery& query,
+                              Workspace* ws, WholeBodyIkResult* result) const {
+  ws->state = *query.standing;
+  const JointLimits& limits = kinematics_.model().joint_limits;
+  ws->state.q_rad = ws->state.q_rad.cwiseMax(limits.q_min_rad).cwiseMin(limits.q_max_rad);
+  ++result->dls_runs;
+  const DlsOutcome outcome = RunDls(X_WE_target, /*move_base=*/false, ws);
+  // The DLS keeps the base; the unwrapped yaw of the standing state is kept as well.
+  Accept(outcome, clearance, query, IkSeed::kStanding, ws, result);
 }
 
 bool WholeBodyIk::OutOfBudget(const Stopwatch& watch, const Workspace& ws,
@@ -571,7 +592,7 @@ void WholeBodyIk::SearchBases(const Eigen::Isometry3d& X_WE_target, const Eigen:
         }
       }
       const DlsOutcome outcome = Attempt(X_WE_target, result, ws);
-      if (Accept(outcome, clearance, query, /*from_hint=*/false, ws, result)) break;
+      if (Accept(outcome, clearance, query, IkSeed::kSearch, ws, result)) break;
     }
   }
 }

@@ -109,6 +109,11 @@ struct WholeBodyIkQuery {
   /// The robot's current base pose [x_m, y_m, yaw_rad]: ranking by base travel from it, and
   /// the first sampled base pose lies on the line from the target towards it.
   std::optional<Eigen::Vector3d> reference_base;
+  /// The robot's current whole-body state: tried after the hint with the base where it stands
+  /// (one arm-only DLS run from its joints; no whole-body polish), so that a robot within reach
+  /// of the target can finish with the arm alone (a stop next to its goal, finding 29). Such a
+  /// solution keeps the base pose exactly (IkSolution::base_stays).
+  std::optional<WholeBodyState> standing;
 };
 
 struct IkSolution {
@@ -120,6 +125,7 @@ struct IkSolution {
   double self_distance_m = std::numeric_limits<double>::infinity();
   double cost = 0.0;                  ///< Ranking cost (see WholeBodyIkOptions).
   bool from_hint = false;             ///< Found from the query's hint.
+  bool base_stays = false;            ///< Found from the query's standing state, its base.
 };
 
 struct WholeBodyIkResult {
@@ -192,6 +198,7 @@ class WholeBodyIk {
  private:
   struct Workspace;
   struct DlsOutcome;
+  enum class IkSeed { kSearch, kHint, kStanding };  ///< Where an attempt started.
 
   void DeriveReachGeometry();
   double SelfDistance(Workspace* ws) const;
@@ -209,7 +216,7 @@ class WholeBodyIk {
                      Workspace* ws) const;
   /// Checks a DLS outcome (ws->cache/state current) and adds it to result->solutions.
   bool Accept(const DlsOutcome& outcome, const StateClearanceFn& clearance,
-              const WholeBodyIkQuery& query, bool from_hint, Workspace* ws,
+              const WholeBodyIkQuery& query, IkSeed seed, Workspace* ws,
               WholeBodyIkResult* result) const;
   double RankCost(const IkSolution& solution, const WholeBodyIkQuery& query) const;
 
@@ -222,6 +229,9 @@ class WholeBodyIk {
   /// The hint as is (clamped to the joint limits), else as the seed of one attempt.
   void TryHint(const Eigen::Isometry3d& X_WE_target, const StateClearanceFn& clearance,
                const WholeBodyIkQuery& query, Workspace* ws, WholeBodyIkResult* result) const;
+  /// The standing state's joints as the seed of one arm-only run, its base fixed.
+  void TryStanding(const Eigen::Isometry3d& X_WE_target, const StateClearanceFn& clearance,
+                   const WholeBodyIkQuery& query, Workspace* ws, WholeBodyIkResult* result) const;
   /// Base candidates on the ring around p_WW, restarts_per_base attempts at each, until
   /// max_solutions or the budget.
   void SearchBases(const Eigen::Isometry3d& X_WE_target, const Eigen::Vector3d& p_WW,

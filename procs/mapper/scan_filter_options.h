@@ -34,16 +34,19 @@ struct ScanFilterOptions {
   /// noise) lie within it. Obstacles lower than this are not mapped.
   double ground_max_z_m = 0.05;
   /// The robot's own body (base cylinder and arm spheres at the scan's state) is inflated by
-  /// this much (m) before its points are removed. 0.08 m = 4 sigma of the Mid-360's 2 cm range
+  /// this much (m) before its points are removed. 0.12 m = 6 sigma of the Mid-360's 2 cm range
   /// noise: the noise moves a point along its ray, so a point on the body ends up at most
-  /// |noise| from it, and the chance that one escapes is below 3e-5 per body point (up to
-  /// ~2,000 per scan with the arm in view); the collision spheres already cover the links'
-  /// surfaces. Measured on 12 simulated scans (22,755 body points, tests/procs/mapper/
-  /// scan_filter_test.cc): none escapes at 0.08 m, 35 at 0.05 m, half of them at 0.
-  /// It does not cover the arm's motion during a scan (~0.1 s; a real sensor's points are
-  /// not all taken at the pose of the state given). Real obstacles within the margin of the
-  /// body are removed too: they are in contact range, which the planner keeps out of anyway.
-  double self_margin_m = 0.08;
+  /// |noise| from it; the collision spheres already cover the links' surfaces. 4 sigma (0.08 m,
+  /// before) lets about 3 body points in 100,000 through: over a mission's ~600 scans some did
+  /// (tests/procs/mapper/scan_filter_test.cc: 600 scans of the standing robot), each a voxel
+  /// hugging the robot that no later ray clears, and in the fifth-sixth fault campaigns two such
+  /// voxels 2 cm from the stowed shoulder kept every plan from rest from turning the base
+  /// (docs/reliability.md, finding 29). Measured at 0.08 m on 12 scans: none escaped, 35 at
+  /// 0.05 m, half of them at 0. It does not cover the arm's motion during a scan (~0.1 s; a
+  /// real sensor's points are not all taken at the pose of the state given). Real obstacles
+  /// within the margin of the body are removed too: they are in contact range, which the
+  /// planner keeps out of anyway, and were seen from farther before.
+  double self_margin_m = 0.12;
   /// Without a usable robot state (none near the scan's time, or a bad one) the body cannot be
   /// filtered: the points within this horizontal distance (m) of the sensor are dropped then,
   /// for they may be the robot's own arm, which would stay in the map for good (the arm hides

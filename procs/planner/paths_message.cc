@@ -21,7 +21,7 @@ planner_paths_t ToPathsMessage(const WholeBodyPlanResult& result, std::int64_t u
   for (const BasePath& path : paths) {
     msg.path_points.push_back(static_cast<std::int32_t>(path.waypoints_W_m.size()));
     msg.length_m.push_back(path.length_m);
-    msg.source.push_back(path.source == BasePathSource::kJumpPointSearch ? "jps" : "topological_prm");
+    msg.source.push_back(std::string(BasePathSourceName(path.source)));
     for (const Eigen::Vector2d& p : path.waypoints_W_m) {
       msg.x_m.push_back(p.x());
       msg.y_m.push_back(p.y());

@@ -14,6 +14,8 @@ std::string BasePathText(const WholeBodyPlanResult& plan, int path_index) {
   out << std::fixed << std::setprecision(1);
   if (base.source == BasePathSource::kJumpPointSearch) {
     out << "JPS";
+  } else if (base.source == BasePathSource::kStanding) {
+    out << "standing";
   } else {
     out << "PRM class " << base.homotopy_class;
   }

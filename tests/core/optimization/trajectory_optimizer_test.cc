@@ -343,6 +343,52 @@ TEST_F(TrajectoryOptimizerTest, ResultShortOnlyOfRateLimitsIsSlowedDownToPass) {
   EXPECT_EQ(not_stretched.time_stretch, 1.0) << not_stretched.Report();
 }
 
+// A collapsed duration (finding 29): when the ALM's first rho makes the end-effector error
+// cheaper than any motion, the end state stays at the start and the duration shrinks towards
+// 0, where its gradient vanishes; no later rho recovers. Here a rho of 1 forces that on an
+// arm-only move 2.5 cm off the target (the joints of finding 29's stop and of its standing
+// goal candidate); the restart from the warm start with rho x 1e4 converges. (On finding 29's
+// map the shipped rho 1e4 collapsed: StoppedNextToGoalTest.)
+TEST_F(TrajectoryOptimizerTest, ACollapsedDurationIsRestartedWithALargerRho) {
+  Eigen::VectorXd q_start(7), q_goal(7);
+  q_start << -0.925797, -0.137792, 1.823221, 1.000736, -0.684505, 0.739296, -5.587509;
+  q_goal << -0.556793, 0.124654, 1.998595, 1.088026, -1.307897, 1.016698, -5.362173;
+  const WholeBodyState start = MakeState(0.0, -3.0, -1.56, q_start);  // no box within 2 m
+  const WholeBodyState goal = MakeState(0.0, -3.0, -1.56, q_goal);
+  const TrajectoryProblem problem = Problem(start, goal);
+  const double offset_m = (world_->kinematics->EndEffectorPose(start).translation() -
+                           problem.X_WE_goal.translation()).norm();
+  ASSERT_GT(offset_m, 0.015);
+  ASSERT_LT(offset_m, 0.04);
+  const WholeBodyPath path = StraightPath(start, goal);
+
+  TrajectoryOptimizerOptions options;
+  options.alm.rho_initial = 1.0;
+  options.collapse_rho_factor = 1e4;
+  options.max_collapse_restarts = 0;
+  const TrajectoryOptimizer plain(*world_->kinematics, world_->base_field(), world_->arm_field(),
+                                  options);
+  const BackEndSummary collapsed = plain.Optimize(problem, path);
+  std::printf("without the restart:\n%s", collapsed.Report().c_str());
+  EXPECT_EQ(collapsed.status, BackEndStatus::kNotConverged);
+  EXPECT_LT(collapsed.duration_s, 0.05 * 0.5);  // the warm start lasts more than 0.5 s
+  EXPECT_GT(collapsed.ee_position_error_m, 0.01);
+
+  options.max_collapse_restarts = 1;
+  const TrajectoryOptimizer restarting(*world_->kinematics, world_->base_field(),
+                                       world_->arm_field(), options);
+  const BackEndSummary summary = restarting.Optimize(problem, path);
+  std::printf("with it:\n%s", summary.Report().c_str());
+  ASSERT_EQ(summary.status, BackEndStatus::kSuccess) << summary.Report();
+  EXPECT_EQ(summary.collapse_restarts, 1);
+  EXPECT_NE(summary.Report().find("after a collapsed duration"), std::string::npos);
+  EXPECT_GT(summary.duration_s, 0.3);
+  const ArcYawTrajectory trajectory = summary.MakeTrajectory();
+  EXPECT_TRUE(CheckTrajectoryExactly(trajectory, *world_, problem.base_limits, problem.X_WE_goal)
+                  .Passes());
+  EXPECT_TRUE(Validate(trajectory, *world_, problem).ok);
+}
+
 TEST(TrajectoryOptimizerOptionsTest, RejectsOptionsOutOfRange) {
   TrajectoryOptimizerOptions options;
   options.alm.rho_growth = 0.5;
@@ -355,6 +401,15 @@ TEST(TrajectoryOptimizerOptionsTest, RejectsOptionsOutOfRange) {
   EXPECT_THROW(CheckTrajectoryOptimizerOptions(options), std::invalid_argument);
   options = TrajectoryOptimizerOptions();
   options.max_time_stretch = 0.9;
+  EXPECT_THROW(CheckTrajectoryOptimizerOptions(options), std::invalid_argument);
+  options = TrajectoryOptimizerOptions();
+  options.collapse_duration_fraction = 1.0;
+  EXPECT_THROW(CheckTrajectoryOptimizerOptions(options), std::invalid_argument);
+  options = TrajectoryOptimizerOptions();
+  options.collapse_rho_factor = 1.0;
+  EXPECT_THROW(CheckTrajectoryOptimizerOptions(options), std::invalid_argument);
+  options = TrajectoryOptimizerOptions();
+  options.max_collapse_restarts = -1;
   EXPECT_THROW(CheckTrajectoryOptimizerOptions(options), std::invalid_argument);
   EXPECT_NO_THROW(CheckTrajectoryOptimizerOptions(TrajectoryOptimizerOptions()));
   // Penalty options are checked when the optimizer is built.

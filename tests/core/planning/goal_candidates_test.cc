@@ -121,6 +121,32 @@ TEST_F(GoalCandidatesTest, AValidHintComesFirstEvenIfFartherAway) {
   }
 }
 
+// A start a few centimetres off the goal (finding 29): a candidate at the start's base pose,
+// found from the start's joints with the arm alone, ranked first by travel (no hint).
+TEST_F(GoalCandidatesTest, AStartWithinReachGivesACandidateWhereItStands) {
+  const WholeBodyIk ik = MakeIk();
+  WholeBodyState start = GoalState();
+  start.x_m += 0.04;
+  start.yaw_rad -= 0.3;
+  start.q_rad(0) += 0.2;
+  const Eigen::Isometry3d X_WE = kinematics_.EndEffectorPose(GoalState());
+  const GoalCandidatesResult result = FindGoalCandidates(ik, X_WE, start, std::nullopt, nullptr);
+  ASSERT_TRUE(result.success()) << result.failure_reason;
+  const GoalCandidate& first = result.candidates.front();
+  EXPECT_TRUE(first.base_stays);
+  EXPECT_EQ(first.base_travel_m, 0.0);
+  EXPECT_EQ(first.state.x_m, start.x_m);
+  EXPECT_EQ(first.state.y_m, start.y_m);
+  EXPECT_EQ(first.state.yaw_rad, start.yaw_rad);
+  ExpectReachesTarget(first.state, X_WE);
+
+  GoalCandidatesOptions without;
+  without.standing_candidate = false;
+  const GoalCandidatesResult other = FindGoalCandidates(ik, X_WE, start, std::nullopt, nullptr, without);
+  ASSERT_TRUE(other.success()) << other.failure_reason;
+  for (const GoalCandidate& candidate : other.candidates) EXPECT_FALSE(candidate.base_stays);
+}
+
 TEST_F(GoalCandidatesTest, AHintInCollisionIsNotReturned) {
   const WholeBodyIk ik = MakeIk();
   const WholeBodyState hint = GoalState();

@@ -270,6 +270,58 @@ TEST_F(WholeBodyIkTest, ANearbyHintSeedsTheSolution) {
   EXPECT_EQ(used, 10);
 }
 
+// A robot standing where it can reach the target with the arm alone (finding 29): the
+// standing state seeds one arm-only run, whose solution keeps the base exactly.
+TEST_F(WholeBodyIkTest, TheStandingStateGivesASolutionThatKeepsItsBase) {
+  Rng rng(29);
+  WholeBodyIkOptions options = TestOptions();
+  options.max_base_candidates = 0;  // only the standing state
+  const WholeBodyIk ik(kinematics_, options);
+  int found = 0;
+  for (int trial = 0; trial < 10; ++trial) {
+    WholeBodyState truth;
+    do {
+      truth = RandomFreeState(&rng);
+    } while (SpherePairDistance(truth) < 0.05);
+    const Eigen::Isometry3d X_WE_target = kinematics_.EndEffectorPose(truth);
+    // Standing where the truth stands, the joints off by up to 0.1 rad each: the arm alone
+    // reaches the target (a base off the truth's may leave it out of the arm's reach at
+    // that orientation: 8 of 10 trials with 3 cm and 0.05 rad off).
+    WholeBodyIkQuery query;
+    query.standing = truth;
+    for (int j = 0; j < truth.num_joints(); ++j) query.standing->q_rad(j) += rng.Uniform(-0.1, 0.1);
+    const WholeBodyIkResult result = ik.Solve(X_WE_target, nullptr, query);
+    if (!result.success()) {
+      ADD_FAILURE() << "trial " << trial << ": " << result.failure_reason;
+      continue;
+    }
+    ++found;
+    ASSERT_EQ(result.solutions.size(), 1u);
+    const IkSolution& solution = result.solutions.front();
+    EXPECT_TRUE(solution.base_stays);
+    EXPECT_FALSE(solution.from_hint);
+    ExpectValid(solution, X_WE_target);
+    EXPECT_EQ(solution.state.x_m, query.standing->x_m);
+    EXPECT_EQ(solution.state.y_m, query.standing->y_m);
+    EXPECT_EQ(solution.state.yaw_rad, query.standing->yaw_rad);
+  }
+  EXPECT_EQ(found, 10);
+}
+
+TEST_F(WholeBodyIkTest, AStandingStateOutOfReachGivesNoSolutionOfItsOwn) {
+  Rng rng(30);
+  WholeBodyIkOptions options = TestOptions();
+  options.max_base_candidates = 0;
+  const WholeBodyIk ik(kinematics_, options);
+  const WholeBodyState truth = RandomFreeState(&rng);
+  WholeBodyIkQuery query;
+  query.standing = truth;
+  query.standing->x_m += 3.0;  // the arm reaches about 1 m
+  const WholeBodyIkResult result = ik.Solve(kinematics_.EndEffectorPose(truth), nullptr, query);
+  EXPECT_FALSE(result.success());
+  EXPECT_EQ(result.dls_runs, 1);
+}
+
 TEST_F(WholeBodyIkTest, AnUnhelpfulHintDoesNotPreventSolutions) {
   Rng rng(12);
   const WholeBodyIk ik(kinematics_, TestOptions());
@@ -421,7 +473,14 @@ TEST_F(WholeBodyIkTest, RejectsBadHintsAndReferences) {
   WholeBodyIkQuery inf_reference;
   inf_reference.reference_base =
       Eigen::Vector3d(0.0, std::numeric_limits<double>::infinity(), 0.0);
-  for (const WholeBodyIkQuery& query : {nan_hint, short_hint, inf_reference}) {
+  WholeBodyIkQuery nan_standing;
+  nan_standing.standing = truth;
+  nan_standing.standing->x_m = std::numeric_limits<double>::quiet_NaN();
+  WholeBodyIkQuery short_standing;
+  short_standing.standing = truth;
+  short_standing.standing->q_rad.resize(6);
+  for (const WholeBodyIkQuery& query :
+       {nan_hint, short_hint, inf_reference, nan_standing, short_standing}) {
     const WholeBodyIkResult result = ik.Solve(X_WE_target, nullptr, query);
     EXPECT_FALSE(result.success());
     EXPECT_NE(result.failure_reason.find("bad input"), std::string::npos)

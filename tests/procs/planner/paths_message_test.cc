@@ -27,6 +27,15 @@ WholeBodyPlanResult TwoPathsResult() {
   return r;
 }
 
+TEST(PathsMessage, NamesTheBaseStandingStillAsSuch) {
+  WholeBodyPlanResult r = TwoPathsResult();
+  r.front_end.base_paths[0].source = BasePathSource::kStanding;
+  const planner_paths_t msg = ToPathsMessage(r, 123, 11, 7);
+  ASSERT_EQ(msg.num_paths, 2);
+  EXPECT_EQ(msg.source[0], "standing");
+  EXPECT_EQ(msg.source[1], "jps");
+}
+
 TEST(PathsMessage, CarriesEveryBasePathAndTheChosenOne) {
   WholeBodyPlanResult r = TwoPathsResult();
   r.chosen = 0;
