@@ -9,15 +9,6 @@
 namespace topay {
 namespace {
 
-BaseLimits Limits() {
-  BaseLimits limits;
-  limits.v_max_mps = 1.0;
-  limits.a_max_mps2 = 0.8;
-  limits.omega_max_radps = 0.9;
-  limits.beta_max_radps2 = 1.0;
-  return limits;
-}
-
 Eigen::VectorXd Joints(std::initializer_list<double> values) {
   Eigen::VectorXd q(static_cast<Eigen::Index>(values.size()));
   int i = 0;
@@ -36,7 +27,7 @@ TEST(ArmDwellTest, TheTimeNeededIsTheSlowestJointsTravelTimesTheFactorPlusTheMin
 
 TEST(ArmDwellTest, ABaseThatStaysGetsStandingLayersUntilTheArmHasItsTime) {
   // One waypoint and the start's yaw: DiscreteSE2 gives one layer, no time at all.
-  DiscreteSE2Path path = DiscreteSE2({Eigen::Vector2d(1.0, 2.0)}, 0.3, 0.3, Limits());
+  DiscreteSE2Path path = DiscreteSE2({Eigen::Vector2d(1.0, 2.0)}, 0.3, 0.3, BaseLimits{});
   ASSERT_EQ(path.num_layers(), 1);
   ArmDwellOptions options;  // 1.5 x travel + 1 s, layers at most 0.5 s apart
   const Eigen::VectorXd q0 = Joints({0.0, 0.0, 0.0}), q1 = Joints({0.5, -0.2, 0.1});
@@ -61,7 +52,7 @@ TEST(ArmDwellTest, ABaseThatStaysGetsStandingLayersUntilTheArmHasItsTime) {
 
 TEST(ArmDwellTest, ASequenceLongEnoughIsLeftAlone) {
   DiscreteSE2Path path =
-      DiscreteSE2({Eigen::Vector2d(0.0, 0.0), Eigen::Vector2d(4.0, 0.0)}, 0.0, 0.0, Limits());
+      DiscreteSE2({Eigen::Vector2d(0.0, 0.0), Eigen::Vector2d(4.0, 0.0)}, 0.0, 0.0, BaseLimits{});
   const int layers = path.num_layers();
   const double total = path.total_time_s();
   ASSERT_GT(total, 4.0);
@@ -72,7 +63,7 @@ TEST(ArmDwellTest, ASequenceLongEnoughIsLeftAlone) {
 }
 
 TEST(ArmDwellTest, ZeroFactorAndMinimumMeanNeverADwell) {
-  DiscreteSE2Path path = DiscreteSE2({Eigen::Vector2d(0.0, 0.0)}, 0.0, 0.0, Limits());
+  DiscreteSE2Path path = DiscreteSE2({Eigen::Vector2d(0.0, 0.0)}, 0.0, 0.0, BaseLimits{});
   ArmDwellOptions options;
   options.travel_time_factor = 0.0;
   options.min_time_s = 0.0;

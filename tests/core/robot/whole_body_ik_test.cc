@@ -72,6 +72,15 @@ class WholeBodyIkTest : public ::testing::Test {
     return state;
   }
 
+  // A random free state whose sphere pairs are 5 cm apart: a solution near it need not touch.
+  WholeBodyState SpacedFreeState(Rng* rng) const {
+    WholeBodyState state;
+    do {
+      state = RandomFreeState(rng);
+    } while (SpherePairDistance(state) < 0.05);
+    return state;
+  }
+
   // Every acceptance criterion of a returned solution, recomputed here with FK.
   void ExpectValid(const IkSolution& solution, const Eigen::Isometry3d& X_WE_target) const {
     const WholeBodyState& state = solution.state;
@@ -239,11 +248,7 @@ TEST_F(WholeBodyIkTest, ANearbyHintSeedsTheSolution) {
   const WholeBodyIk ik(kinematics_, options);
   int used = 0;
   for (int trial = 0; trial < 10; ++trial) {
-    // A truth whose sphere pairs are 5 cm apart: the solution near the hint need not touch.
-    WholeBodyState truth;
-    do {
-      truth = RandomFreeState(&rng);
-    } while (SpherePairDistance(truth) < 0.05);
+    const WholeBodyState truth = SpacedFreeState(&rng);
     const Eigen::Isometry3d X_WE_target = kinematics_.EndEffectorPose(truth);
     WholeBodyIkQuery query;
     query.hint = truth;
@@ -279,10 +284,7 @@ TEST_F(WholeBodyIkTest, TheStandingStateGivesASolutionThatKeepsItsBase) {
   const WholeBodyIk ik(kinematics_, options);
   int found = 0;
   for (int trial = 0; trial < 10; ++trial) {
-    WholeBodyState truth;
-    do {
-      truth = RandomFreeState(&rng);
-    } while (SpherePairDistance(truth) < 0.05);
+    const WholeBodyState truth = SpacedFreeState(&rng);
     const Eigen::Isometry3d X_WE_target = kinematics_.EndEffectorPose(truth);
     // Standing where the truth stands, the joints off by up to 0.1 rad each: the arm alone
     // reaches the target (a base off the truth's may leave it out of the arm's reach at
