@@ -722,8 +722,20 @@ void PlannerNode::PublishStop(ArcYawTrajectory stop, std::int64_t begin, const s
   PublishStatus(planner_status_t::STOPPING, "", detail);
 }
 
+double PlannerNode::StaleLimitS(std::int64_t now) const {
+  const PlannerMapOptions& map = options_.map;
+  const double limit_s = map.stale_stop_s;
+  if (map.stale_blind_distance_m <= 0.0) return limit_s;
+  double speed_mps = robot_ ? std::abs(robot_->v_mps) : 0.0;
+  if (const ActiveTrajectory* on = OnAt(now); on != nullptr && !on->stopping) {
+    speed_mps = std::max(speed_mps, std::abs(on->SampleAt(now).v_mps));
+  }
+  if (!(speed_mps > 0.0)) return limit_s;
+  return std::clamp(map.stale_blind_distance_m / speed_mps, std::min(map.stale_min_s, limit_s), limit_s);
+}
+
 void PlannerNode::CheckMapFreshness(std::int64_t now) {
-  const double limit_s = options_.map.stale_stop_s;
+  const double limit_s = StaleLimitS(now);
   if (limit_s <= 0.0 || !map_.has_map()) return;
   const double age_s = 1e-6 * static_cast<double>(now - map_.receiver().utime());
   if (age_s <= limit_s) {

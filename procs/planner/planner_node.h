@@ -180,6 +180,9 @@ class PlannerNode {
   void ClearPredictedCollision();
   // The trajectory the robot is on at `utime`: the newest one started by then (null: none).
   const ActiveTrajectory* OnAt(std::int64_t utime) const;
+  // The map's age (s) beyond which it is stale at now (map.stale_stop_s, shorter while moving:
+  // map.stale_blind_distance_m).
+  double StaleLimitS(std::int64_t now) const;
 
   procs::ProcessLoop* loop_;
   PlanWorker* worker_;

@@ -28,6 +28,8 @@ void ReadMap(YamlSection s, PlannerMapOptions* o) {
   s.Read("fresh_collision_radius_m", &o->fresh_collision_radius_m);
   s.Read("validator_margin_m", &o->validator_margin_m);
   s.Read("stale_stop_s", &o->stale_stop_s);
+  s.Read("stale_blind_distance_m", &o->stale_blind_distance_m);
+  s.Read("stale_min_s", &o->stale_min_s);
   s.Finish();
 }
 
@@ -136,6 +138,8 @@ void CheckPlannerProcessOptions(const PlannerProcessOptions& o, const std::strin
     throw ConfigError(source, "map.start_arm_escape_overlap_m", "must be 0 (no escape) or >= map.start_arm_overlap_m");
   }
   RequireNonNegative(o.map.stale_stop_s, source, "map.stale_stop_s");
+  RequireNonNegative(o.map.stale_blind_distance_m, source, "map.stale_blind_distance_m");
+  RequireNonNegative(o.map.stale_min_s, source, "map.stale_min_s");
   RequireNonNegative(o.delivery.resend_period_s, source, "delivery.resend_period_s");
   if (!(o.stop.blind_duration_per_rate_ratio >= 1.5) || !std::isfinite(o.stop.blind_duration_per_rate_ratio)) {
     throw ConfigError(source, "stop.blind_duration_per_rate_ratio", "must be finite and >= 1.5");

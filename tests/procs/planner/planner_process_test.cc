@@ -409,6 +409,46 @@ TEST_F(PlannerProcess, AStaleMapStopsTheRobotUntilItIsFreshAgain) {
   EXPECT_NE(log.find("(1 on a stale map)"), std::string::npos) << log;
 }
 
+// Finding 30: while the robot moves, the map is stale after map.stale_blind_distance_m / v
+// (here 0.3 m), not after the whole map.stale_stop_s (here 3 s): the stop comes within about
+// half a second of the map freezing, its detail naming the shorter limit.
+TEST_F(PlannerProcess, AMapThatFreezesWhileTheRobotMovesIsStaleAfterSoManyMetres) {
+  std::string yaml = ReadText(dir_ + "/planner.yaml");
+  const std::size_t at = yaml.find("stale_stop_s: 0}");
+  ASSERT_NE(at, std::string::npos) << yaml;
+  yaml.replace(at, std::string("stale_stop_s: 0}").size(),
+               "stale_stop_s: 3.0, stale_blind_distance_m: 0.3, stale_min_s: 0.3}");
+  WriteText(dir_ + "/planner.yaml", yaml);
+  RestartPlanner();
+  std::int64_t seq = 1;
+  bool mapping = true;
+  Clock::time_point last_map = Clock::now();
+  const auto with_map = [&](auto pred) {  // the mapper: an empty delta stamped now every 0.1 s
+    return [&, pred] {
+      if (mapping && SecondsSince(last_map) >= 0.1) {
+        const map_update_t delta = msgs::EncodeMapDelta(planner::testing::RoomGeometry(), {}, procs::NowUtime(), ++seq);
+        watcher_->lcm().publish(std::string(channels::MAP_UPDATE), &delta);
+        last_map = Clock::now();
+      }
+      return pred();
+    };
+  };
+  Send(ReachableGoal(42));
+  ASSERT_TRUE(SpinWithRobot(with_map([&] { return !out_.trajectories.empty(); }), 60.0)) << ReadText(dir_ + "/planner.txt");
+  v_mps_ = 0.8;  // on its way (measured): the limit 0.3 m / 0.8 m/s = 0.375 s
+  SpinWithRobot(with_map([] { return false; }), 0.5);
+  mapping = false;  // the map freezes
+  const Clock::time_point frozen = Clock::now();
+  const auto stopping = [&] {
+    const planner_status_t* s = out_.Last(42, planner_status_t::STOPPING);
+    return s != nullptr && s->detail.find("the map is stale") != std::string::npos;
+  };
+  ASSERT_TRUE(SpinWithRobot(stopping, 5.0)) << ReadText(dir_ + "/planner.txt");
+  EXPECT_LT(SecondsSince(frozen), 1.5);  // 3 s without the distance limit
+  const std::string detail = out_.Last(42, planner_status_t::STOPPING)->detail;
+  EXPECT_EQ(detail.find("(limit 3.00 s)"), std::string::npos) << detail;
+}
+
 // At start-up a goal can come before the mapper's first snapshot (the mission starts as soon as
 // the planner heartbeats): it waits for the map, saying so, and is planned once the map is there.
 TEST_F(PlannerProcess, AGoalBeforeTheFirstMapWaitsForItAndIsPlanned) {
