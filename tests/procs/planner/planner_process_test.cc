@@ -81,7 +81,39 @@ class PlannerProcess : public testing::Test {
     kill(planner_, SIGKILL);
     WaitFor(planner_, 3.0);
     StartPlanner();
+  }  // Restarts the planner with the test YAML's "stale_stop_s: 0}" replaced by `map_tail`.
+  void RestartWithStaleOptions(const std::string& map_tail) {
+    std::string yaml = ReadText(dir_ + "/planner.yaml");
+    const std::size_t at = yaml.find("stale_stop_s: 0}");
+    ASSERT_NE(at, std::string::npos) << yaml;
+    yaml.replace(at, std::string("stale_stop_s: 0}").size(), map_tail);
+    WriteText(dir_ + "/planner.yaml", yaml);
+    RestartPlanner();
   }
+  // A mapper stand-in for the stale-map tests: an empty MAP_UPDATE delta stamped now every
+  // period_s while `on` (RestartPlanner's snapshot is map_seq 1, stamped long ago: stale).
+  struct MapperStandIn {
+    double period_s = 0.2;
+    bool on = true;
+    std::int64_t seq = 1;
+    Clock::time_point last = Clock::now();
+  };
+  void Tick(MapperStandIn* mapper) {
+    if (!mapper->on || SecondsSince(mapper->last) < mapper->period_s) return;
+    const map_update_t delta =
+        msgs::EncodeMapDelta(planner::testing::RoomGeometry(), {}, procs::NowUtime(), ++mapper->seq);
+    watcher_->lcm().publish(std::string(channels::MAP_UPDATE), &delta);
+    mapper->last = Clock::now();
+  }
+  // `pred`, with the stand-in mapper publishing meanwhile (for SpinWithRobot).
+  template <typename Pred>
+  auto WithMapper(MapperStandIn* mapper, Pred pred) {
+    return [this, mapper, pred] {
+      Tick(mapper);
+      return pred();
+    };
+  }
+
   // Stops the planner with SIGTERM (its output flushed, its report written) and returns it.
   std::string StopPlannerAndReadLog() {
     kill(planner_, SIGTERM);
@@ -369,29 +401,13 @@ TEST_F(PlannerProcess, AGoalIdIsNotReusedForAnotherTarget) {
 // map.stale_stop_s the trajectory under way is stopped (STOPPING, a stopping trajectory) and no
 // plan goes out; when fresh updates come back the goal is planned again.
 TEST_F(PlannerProcess, AStaleMapStopsTheRobotUntilItIsFreshAgain) {
-  std::string yaml = ReadText(dir_ + "/planner.yaml");
-  const std::size_t at = yaml.find("stale_stop_s: 0}");
-  ASSERT_NE(at, std::string::npos) << yaml;
-  yaml.replace(at, std::string("stale_stop_s: 0}").size(), "stale_stop_s: 0.5}");
-  WriteText(dir_ + "/planner.yaml", yaml);
-  RestartPlanner();
-  std::int64_t seq = 1;  // RestartPlanner's snapshot is map_seq 1 (stamped long ago: stale at once)
-  bool mapping = true;
-  Clock::time_point last_map = Clock::now();
-  const auto with_map = [&](auto pred) {  // the mapper: an empty delta stamped now every 0.2 s
-    return [&, pred] {
-      if (mapping && SecondsSince(last_map) >= 0.2) {
-        const map_update_t delta = msgs::EncodeMapDelta(planner::testing::RoomGeometry(), {}, procs::NowUtime(), ++seq);
-        watcher_->lcm().publish(std::string(channels::MAP_UPDATE), &delta);
-        last_map = Clock::now();
-      }
-      return pred();
-    };
-  };
+  RestartWithStaleOptions("stale_stop_s: 0.5}");
+  MapperStandIn mapper;
+  const auto with_map = [&](auto pred) { return WithMapper(&mapper, pred); };
   Send(ReachableGoal(41));
   ASSERT_TRUE(SpinWithRobot(with_map([&] { return !out_.trajectories.empty(); }), 60.0)) << ReadText(dir_ + "/planner.txt");
   const std::size_t planned = out_.trajectories.size();
-  mapping = false;  // the map freezes
+  mapper.on = false;  // the map freezes
   const auto stopping = [&] {
     const planner_status_t* s = out_.Last(41, planner_status_t::STOPPING);
     return s != nullptr && s->detail.find("the map is stale") != std::string::npos;
@@ -400,7 +416,7 @@ TEST_F(PlannerProcess, AStaleMapStopsTheRobotUntilItIsFreshAgain) {
   EXPECT_EQ(out_.trajectories.size(), planned + 1);  // the stopping trajectory
   SpinWithRobot([] { return false; }, 1.0);
   EXPECT_EQ(out_.trajectories.size(), planned + 1) << "no plan on a stale map";
-  mapping = true;
+  mapper.on = true;
   ASSERT_TRUE(SpinWithRobot(with_map([&] { return out_.trajectories.size() > planned + 1; }), 30.0))
       << ReadText(dir_ + "/planner.txt");
   EXPECT_EQ(out_.trajectories.back().goal_id, 41);
@@ -413,31 +429,15 @@ TEST_F(PlannerProcess, AStaleMapStopsTheRobotUntilItIsFreshAgain) {
 // (here 0.3 m), not after the whole map.stale_stop_s (here 3 s): the stop comes within about
 // half a second of the map freezing, its detail naming the shorter limit.
 TEST_F(PlannerProcess, AMapThatFreezesWhileTheRobotMovesIsStaleAfterSoManyMetres) {
-  std::string yaml = ReadText(dir_ + "/planner.yaml");
-  const std::size_t at = yaml.find("stale_stop_s: 0}");
-  ASSERT_NE(at, std::string::npos) << yaml;
-  yaml.replace(at, std::string("stale_stop_s: 0}").size(),
-               "stale_stop_s: 3.0, stale_blind_distance_m: 0.3, stale_min_s: 0.3}");
-  WriteText(dir_ + "/planner.yaml", yaml);
-  RestartPlanner();
-  std::int64_t seq = 1;
-  bool mapping = true;
-  Clock::time_point last_map = Clock::now();
-  const auto with_map = [&](auto pred) {  // the mapper: an empty delta stamped now every 0.1 s
-    return [&, pred] {
-      if (mapping && SecondsSince(last_map) >= 0.1) {
-        const map_update_t delta = msgs::EncodeMapDelta(planner::testing::RoomGeometry(), {}, procs::NowUtime(), ++seq);
-        watcher_->lcm().publish(std::string(channels::MAP_UPDATE), &delta);
-        last_map = Clock::now();
-      }
-      return pred();
-    };
-  };
+  RestartWithStaleOptions("stale_stop_s: 3.0, stale_blind_distance_m: 0.3, stale_min_s: 0.3}");
+  MapperStandIn mapper;
+  mapper.period_s = 0.1;
+  const auto with_map = [&](auto pred) { return WithMapper(&mapper, pred); };
   Send(ReachableGoal(42));
   ASSERT_TRUE(SpinWithRobot(with_map([&] { return !out_.trajectories.empty(); }), 60.0)) << ReadText(dir_ + "/planner.txt");
   v_mps_ = 0.8;  // on its way (measured): the limit 0.3 m / 0.8 m/s = 0.375 s
   SpinWithRobot(with_map([] { return false; }), 0.5);
-  mapping = false;  // the map freezes
+  mapper.on = false;  // the map freezes
   const Clock::time_point frozen = Clock::now();
   const auto stopping = [&] {
     const planner_status_t* s = out_.Last(42, planner_status_t::STOPPING);
