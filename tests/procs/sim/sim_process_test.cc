@@ -243,6 +243,9 @@ TEST(SimProcessCheckpoint, ARestartedSimulatorContinuesWhereTheRobotWas) {
   kill(pid, SIGKILL);
   WaitFor(pid, 3.0);
   ASSERT_GT(x_killed - x0, 0.5);
+  // The dead simulator's last states may still wait in the socket (a loaded machine): read them
+  // before the restart, or the first "new" state is an old one (still at 0.5 m/s).
+  watcher.Spin(0.3);
   listener.states.clear();
   pid = Spawn(argv, dir + "/out2.txt");
   ASSERT_TRUE(watcher.SpinUntil([&] { return !listener.states.empty(); }, 10.0)) << ReadText(dir + "/out2.txt");
