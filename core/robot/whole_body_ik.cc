@@ -450,19 +450,19 @@ std::vector<Eigen::Vector3d> WholeBodyIk::SampleBasePoses(const Eigen::Vector3d&
 }
 
 std::string WholeBodyIk::CheckQuery(const WholeBodyIkQuery& query) const {
-  if (query.hint) {
-    if (query.hint->num_joints() != kinematics_.num_joints()) {
-      return "hint has " + std::to_string(query.hint->num_joints()) + " joints, the robot " +
+  // A whole-body state of the query (the hint, the standing state), named `what`.
+  const auto check_state = [this](const std::optional<WholeBodyState>& state,
+                                  const std::string& what) -> std::string {
+    if (!state) return "";
+    if (state->num_joints() != kinematics_.num_joints()) {
+      return what + " has " + std::to_string(state->num_joints()) + " joints, the robot " +
              std::to_string(kinematics_.num_joints());
     }
-    if (!query.hint->IsFinite()) return "hint contains NaN or infinity";
-  }
-  if (query.standing) {
-    if (query.standing->num_joints() != kinematics_.num_joints()) {
-      return "standing state has " + std::to_string(query.standing->num_joints()) +
-             " joints, the robot " + std::to_string(kinematics_.num_joints());
-    }
-    if (!query.standing->IsFinite()) return "standing state contains NaN or infinity";
+    return state->IsFinite() ? "" : what + " contains NaN or infinity";
+  };
+  for (const std::string& why : {check_state(query.hint, "hint"),
+                                 check_state(query.standing, "standing state")}) {
+    if (!why.empty()) return why;
   }
   if (query.reference_base && !query.reference_base->allFinite()) {
     return "reference base pose contains NaN or infinity";

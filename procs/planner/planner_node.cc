@@ -735,9 +735,13 @@ double PlannerNode::StaleLimitS(std::int64_t now) const {
 }
 
 void PlannerNode::CheckMapFreshness(std::int64_t now) {
-  const double limit_s = StaleLimitS(now);
-  if (limit_s <= 0.0 || !map_.has_map()) return;
+  const PlannerMapOptions& map = options_.map;
+  if (map.stale_stop_s <= 0.0 || !map_.has_map()) return;
   const double age_s = 1e-6 * static_cast<double>(now - map_.receiver().utime());
+  // Younger than any limit StaleLimitS gives, and not stale: nothing to decide (this runs every
+  // tick; the limit evaluates the trajectory the robot is on).
+  if (!map_stale_ && age_s <= std::min(map.stale_min_s, map.stale_stop_s)) return;
+  const double limit_s = StaleLimitS(now);
   if (age_s <= limit_s) {
     if (!map_stale_) return;
     map_stale_ = false;
