@@ -101,6 +101,7 @@ void ReadFrontEnd(YamlSection section, FrontEndOptions* o) {
   section.Read("max_goal_attempts", &o->max_goal_attempts);
   section.Read("fallback_base_clearance_m", &o->fallback_base_clearance_m);
   section.Read("reachable_goal_search", &o->reachable_goal_search);
+  section.Read("other_way_turn_min_rad", &o->other_way_turn_min_rad);
   section.Read("improvement_window_s", &o->improvement_window_s);
   section.Read("acquisition_budget_s", &o->acquisition_budget_s);
   section.Read("num_threads", &o->num_threads);

@@ -72,11 +72,13 @@ class LayerBuilder {
     path_.layers.push_back(first);
   }
 
-  /// Turns in place from the current yaw by the shorter way to `target_yaw` (mod 2 pi).
-  void TurnTo(double target_yaw) {
+  /// Turns in place from the current yaw to `target_yaw` (mod 2 pi), the shorter way round
+  /// or, if other_way, the longer.
+  void TurnTo(double target_yaw, bool other_way = false) {
     const Se2Layer from = path_.layers.back();
-    const double turn = WrapAngle(target_yaw - from.yaw_rad);
+    double turn = WrapAngle(target_yaw - from.yaw_rad);
     if (std::abs(turn) < options_.min_turn_rad) return;
+    if (other_way) turn -= std::copysign(2.0 * std::numbers::pi, turn);
     const int steps = static_cast<int>(std::ceil(std::abs(turn) / options_.max_turn_step_rad));
     for (int k = 1; k <= steps; ++k) {
       const double swept = std::abs(turn) * k / steps;
@@ -159,17 +161,32 @@ double TrapezoidArrivalTime(double s, double total, double rate_max, double acce
 
 DiscreteSE2Path DiscreteSE2(const std::vector<Eigen::Vector2d>& waypoints_W_m, double start_yaw_rad,
                             double goal_yaw_rad, const BaseLimits& limits,
-                            const DiscreteSE2Options& options) {
+                            const DiscreteSE2Options& options, const DiscreteSE2Turns& turns) {
   Validate(waypoints_W_m, start_yaw_rad, goal_yaw_rad, limits, options);
   const std::vector<Eigen::Vector2d> runs = Simplify(waypoints_W_m, options);
   LayerBuilder builder(limits, options);
   builder.Start(runs.front(), start_yaw_rad);
   for (std::size_t i = 1; i < runs.size(); ++i) {
-    builder.TurnTo(Heading(runs[i - 1], runs[i]));
+    builder.TurnTo(Heading(runs[i - 1], runs[i]), i == 1 && turns.start_other_way);
     builder.DriveTo(runs[i]);
   }
-  builder.TurnTo(goal_yaw_rad);
+  builder.TurnTo(goal_yaw_rad, turns.goal_other_way || (runs.size() == 1 && turns.start_other_way));
   return builder.Take();
+}
+
+double StartTurnRad(const DiscreteSE2Path& path) {
+  const std::vector<Se2Layer>& layers = path.layers;
+  std::size_t last = 0;
+  while (last + 1 < layers.size() && layers[last + 1].turn_in_place) ++last;
+  return layers.empty() ? 0.0 : layers[last].yaw_rad - layers.front().yaw_rad;
+}
+
+double GoalTurnRad(const DiscreteSE2Path& path) {
+  const std::vector<Se2Layer>& layers = path.layers;
+  if (layers.empty()) return 0.0;
+  std::size_t first = layers.size() - 1;
+  while (first > 0 && layers[first].turn_in_place) --first;
+  return layers.back().yaw_rad - layers[first].yaw_rad;
 }
 
 }  // namespace topay

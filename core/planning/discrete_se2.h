@@ -59,12 +59,26 @@ struct DiscreteSE2Path {
   WholeBodyState State(int layer, const Eigen::VectorXd& q_rad) const;
 };
 
+/// Which way the turns in place at the ends of a path go round (DiscreteSE2). Ours (finding 29,
+/// its third case): a robot stopped with its arm held out over a table and its next path
+/// starting behind it turns half a turn in place; the shorter way round may sweep the arm
+/// through the table where the other way is clear, and which way is shorter flips with a few
+/// milliradians of start yaw. The front end tries both (FrontEndOptions::other_way_turn_min_rad).
+struct DiscreteSE2Turns {
+  /// The turn at the start (from the start yaw to the first heading) goes the longer way
+  /// round: 2 pi - |dyaw| the other way. No effect when that turn is below min_turn_rad.
+  bool start_other_way = false;
+  /// The same for the turn at the goal (to the goal yaw). A path of one waypoint has one turn,
+  /// both at the start and at the goal: it goes the other way if either flag is set.
+  bool goal_other_way = false;
+};
+
 /// DiscreteSE2 (paper Algorithm 1): turns a base polyline (first waypoint = start base
 /// position, last = goal base position) into base states: a turn in place at the start from
 /// start_yaw_rad to the first segment's heading, then along each straight run states at most
 /// delta_l_m apart with yaw = the run's heading, a turn in place at each vertex to the next
-/// heading, and a final turn to goal_yaw_rad. Turns take the shorter way round (|dyaw| <= pi);
-/// the base always drives forward. The first layer's yaw equals start_yaw_rad; the last
+/// heading, and a final turn to goal_yaw_rad. Turns take the shorter way round (|dyaw| <= pi)
+/// unless `turns` says otherwise for the first or the last; the base always drives forward. The first layer's yaw equals start_yaw_rad; the last
 /// layer's yaw equals goal_yaw_rad modulo 2 pi (continuous yaw, see Se2Layer).
 /// A single waypoint (or all waypoints within min_segment_m) gives only the turn from the
 /// start yaw to the goal yaw (one layer if those agree too).
@@ -72,7 +86,13 @@ struct DiscreteSE2Path {
 /// options or limits (v_max, a_max, omega_max, beta_max), naming the culprit.
 DiscreteSE2Path DiscreteSE2(const std::vector<Eigen::Vector2d>& waypoints_W_m, double start_yaw_rad,
                             double goal_yaw_rad, const BaseLimits& limits,
-                            const DiscreteSE2Options& options = {});
+                            const DiscreteSE2Options& options = {}, const DiscreteSE2Turns& turns = {});
+
+/// The yaw change (rad, signed, continuous yaw) of the turn in place that begins the sequence
+/// (its leading turn_in_place layers), or that ends it (the trailing ones; standing layers
+/// add nothing). 0 when there is none.
+double StartTurnRad(const DiscreteSE2Path& path);
+double GoalTurnRad(const DiscreteSE2Path& path);
 
 /// Time (s) at which a rest-to-rest trapezoidal profile with peak rate rate_max and
 /// acceleration accel_max reaches position s along a run of length `total` (0 <= s <= total;

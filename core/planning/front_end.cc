@@ -546,19 +546,38 @@ std::vector<ArmJob> FrontEnd::MakeArmJobs(int attempt, const GoalCandidate& goal
     job.base_path = search.paths[index];
     job.base_path_index = index;
     job.seed = DeriveSeed(options_.seed, 1000 * static_cast<std::uint64_t>(attempt + 1) + index);
-    try {
-      job.base_sequence = DiscreteSE2(job.base_path.waypoints_W_m, context->start.yaw_rad,
-                                      goal.state.yaw_rad, limits, options_.discretisation);
-      AddArmDwell(context->start.q_rad, goal.state.q_rad,
-                  kinematics_.model().joint_limits.qd_max_radps, options_.arm_dwell,
-                  &job.base_sequence);
-    } catch (const std::exception& e) {
-      job.setup_error = std::string("DiscreteSE2: ") + e.what();
+    job.setup_error = Discretise(job.base_path, goal, limits, {}, *context, &job.base_sequence);
+    const bool start_other_way =
+        job.setup_error.empty() && std::abs(StartTurnRad(job.base_sequence)) >= options_.other_way_turn_min_rad;
+    const bool goal_other_way =
+        job.setup_error.empty() && std::abs(GoalTurnRad(job.base_sequence)) >= options_.other_way_turn_min_rad;
+    jobs.push_back(job);
+    // The same base path with a half turn at an end the other way round, right after it (a
+    // job queued behind every other may never start within the acquisition budget).
+    for (const DiscreteSE2Turns turns : {DiscreteSE2Turns{true, false}, DiscreteSE2Turns{false, true}}) {
+      if (!(turns.start_other_way ? start_other_way : goal_other_way)) continue;
+      ArmJob other = job;
+      other.seed = DeriveSeed(job.seed, turns.start_other_way ? 1 : 2);
+      other.setup_error = Discretise(job.base_path, goal, limits, turns, *context, &other.base_sequence);
+      jobs.push_back(std::move(other));
     }
-    jobs.push_back(std::move(job));
   }
   context->result->stats.discretisation_ms += watch.ElapsedMs();
   return jobs;
+}
+
+std::string FrontEnd::Discretise(const BasePath& path, const GoalCandidate& goal, const BaseLimits& limits,
+                                 const DiscreteSE2Turns& turns, const PlanContext& context,
+                                 DiscreteSE2Path* sequence) const {
+  try {
+    *sequence = DiscreteSE2(path.waypoints_W_m, context.start.yaw_rad, goal.state.yaw_rad, limits,
+                            options_.discretisation, turns);
+    AddArmDwell(context.start.q_rad, goal.state.q_rad, kinematics_.model().joint_limits.qd_max_radps,
+                options_.arm_dwell, sequence);
+  } catch (const std::exception& e) {
+    return std::string("DiscreteSE2: ") + e.what();
+  }
+  return "";
 }
 
 ParallelAcquisitionResult FrontEnd::AcquireArmPaths(int attempt, const GoalCandidate& goal,

@@ -112,10 +112,17 @@ class FrontEnd {
                                                 const TopologicalPathSearchOptions& topology,
                                                 const WholeBodyValidity& validity,
                                                 PlanContext* context) const;
-  /// One arm job per base path, shortest first, each with its DiscreteSE2 layers.
+  /// One arm job per base path, shortest first, each with its DiscreteSE2 layers; a path
+  /// with a turn in place at its start or goal of at least other_way_turn_min_rad is followed
+  /// by a job with that turn the other way round.
   std::vector<ArmJob> MakeArmJobs(int attempt, const GoalCandidate& goal,
                                   const TopologicalPathSearchResult& search,
                                   PlanContext* context) const;
+  /// The layers of `path` towards `goal` (DiscreteSE2 with `turns`, then AddArmDwell) in
+  /// *sequence; returns the error that stopped it ("" if none).
+  std::string Discretise(const BasePath& path, const GoalCandidate& goal, const BaseLimits& limits,
+                         const DiscreteSE2Turns& turns, const PlanContext& context,
+                         DiscreteSE2Path* sequence) const;
   /// The parallel arm RRT* stage on the jobs; records its figures in the result's stats.
   ParallelAcquisitionResult AcquireArmPaths(int attempt, const GoalCandidate& goal,
                                             const std::vector<ArmJob>& jobs,

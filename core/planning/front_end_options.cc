@@ -17,6 +17,7 @@ void CheckFrontEndOptions(const FrontEndOptions& o) {
   require(o.acquisition_budget_s > 0.0, "acquisition_budget_s", "> 0 (+infinity: no limit)");
   require(std::isfinite(o.fallback_base_clearance_m) && o.fallback_base_clearance_m >= 0.0,
           "fallback_base_clearance_m", "finite and >= 0");
+  require(o.other_way_turn_min_rad >= 0.0, "other_way_turn_min_rad", ">= 0 (+infinity: never)");
   require(o.num_threads >= 0, "num_threads", ">= 0 (0: all cores)");
   CheckGoalCandidatesOptions(o.goal);
   require(o.goal_retry.max_base_candidates >= 0, "goal_retry.max_base_candidates", ">= 0");

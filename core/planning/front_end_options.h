@@ -79,6 +79,13 @@ struct FrontEndOptions {
   bool reachable_goal_search = true;
   /// Delta l = 1.414 m, turns in place at the vertices.
   DiscreteSE2Options discretisation;
+  /// A base path whose turn in place at the start (or at the goal) is at least this large
+  /// (rad) gets a second arm job with that turn the other way round (DiscreteSE2Turns; ours,
+  /// finding 29's third case: a robot stopped with its arm out over a table and its path
+  /// behind it turned half a turn the way that swept the arm through the table, and every
+  /// plan failed, where the other way round was clear). 2.5 rad: the other way is at most
+  /// 3.8 rad. +infinity: never.
+  double other_way_turn_min_rad = 2.5;
   /// A base sequence too short for the arm's move ends with the base standing (ours, finding
   /// 29: a robot stopped next to its goal; arm_dwell.h).
   ArmDwellOptions arm_dwell;

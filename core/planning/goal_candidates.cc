@@ -57,6 +57,7 @@ GoalCandidatesResult FindGoalCandidates(const WholeBodyIk& ik, const Eigen::Isom
   query.hint = hint;
   query.reference_base = Eigen::Vector3d(start.x_m, start.y_m, start.yaw_rad);
   if (options.standing_candidate) query.standing = start;
+  query.reference_q_rad = start.q_rad;  // goals on the joints' nearest turns (finding 29)
   result.ik = ik.Solve(X_WE_target, clearance, query);
   if (!result.ik.success()) {
     result.failure_reason = "goal: " + result.ik.failure_reason;

@@ -11,6 +11,7 @@
 #include "core/common/angles.h"
 #include "core/common/random.h"
 #include "core/common/stopwatch.h"
+#include "core/robot/joint_turns.h"
 
 namespace topay {
 namespace {
@@ -380,6 +381,9 @@ bool WholeBodyIk::Accept(const DlsOutcome& outcome, const StateClearanceFn& clea
     return false;
   }
   solution.state = ws->state;
+  if (query.reference_q_rad) {
+    solution.state.q_rad = NearestJointTurns(kinematics_.model(), solution.state.q_rad, *query.reference_q_rad);
+  }
   solution.position_error_m = outcome.position_error_m;
   solution.orientation_error_rad = outcome.orientation_error_rad;
   solution.from_hint = seed == IkSeed::kHint;
@@ -466,6 +470,13 @@ std::string WholeBodyIk::CheckQuery(const WholeBodyIkQuery& query) const {
   }
   if (query.reference_base && !query.reference_base->allFinite()) {
     return "reference base pose contains NaN or infinity";
+  }
+  if (query.reference_q_rad) {
+    if (query.reference_q_rad->size() != kinematics_.num_joints()) {
+      return "reference joints have " + std::to_string(query.reference_q_rad->size()) + " joints, the robot " +
+             std::to_string(kinematics_.num_joints());
+    }
+    if (!query.reference_q_rad->allFinite()) return "reference joints contain NaN or infinity";
   }
   return "";
 }

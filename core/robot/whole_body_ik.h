@@ -114,6 +114,10 @@ struct WholeBodyIkQuery {
   /// of the target can finish with the arm alone (a stop next to its goal, finding 29). Such a
   /// solution keeps the base pose exactly (IkSolution::base_stays).
   std::optional<WholeBodyState> standing;
+  /// The robot's current joints: every solution's revolute joints are turned by whole turns to
+  /// lie nearest them (NearestJointTurns: the same pose, the least joint travel; finding 29's
+  /// third case), so that duplicates on other turns are removed too.
+  std::optional<Eigen::VectorXd> reference_q_rad;
 };
 
 struct IkSolution {

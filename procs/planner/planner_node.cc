@@ -8,6 +8,7 @@
 #include <spdlog/spdlog.h>
 
 #include "core/collision/scene_clearance.h"
+#include "core/common/stamp_difference.h"
 #include "core/common/stopwatch.h"
 #include "procs/msgs/convert_trajectory.h"
 #include "procs/planner/paths_message.h"
@@ -371,10 +372,15 @@ bool PlannerNode::FillStart(PlanTrigger trigger, std::int64_t now, PlanJob* job,
   if (!AtRest(job->start, t.rest_speed)) {
     // Moving off any trajectory of ours (a restart, one that ended): start at the measured
     // state extrapolated to t0 with its measured rates.
+    const double dt = 1e-6 * StampDifferenceUs(t0, robot_->utime);
+    if (!(std::abs(dt) <= t.max_extrapolation_s)) {
+      *error = fmt::format("the robot is moving and its state is {:.2f} s from the plan's start (more than "
+                           "timing.max_extrapolation_s, {:.2f} s): not extrapolated", dt, t.max_extrapolation_s);
+      return false;
+    }
     job->from_rest = false;
     job->t0_utime = t0;
     job->time_limit_s = t.replan_budget_s - t.publish_margin_s;
-    const double dt = 1e-6 * (t0 - robot_->utime);
     job->start.state.x_m += dt * job->start.v_mps * std::cos(job->start.state.yaw_rad);
     job->start.state.y_m += dt * job->start.v_mps * std::sin(job->start.state.yaw_rad);
     job->start.state.yaw_rad += dt * job->start.omega_radps;

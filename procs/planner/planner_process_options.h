@@ -92,6 +92,12 @@ struct PlanTimingOptions {
   double rest_speed = 0.02;
   /// A failed replan is retried after this long (s) while the goal stands.
   double retry_period_s = 0.3;
+  /// A robot moving off any trajectory of ours is planned from its measured state extrapolated
+  /// to the plan's start t0 at its measured rates; a state more than this (s) from t0 is not
+  /// extrapolated (the plan waits: a stale ROBOT_STATE, e.g. replayed from a log, put a start's
+  /// joint 1 at 17 rad). t0 is replan_budget_s ahead, so this allows states up to
+  /// max_extrapolation_s - replan_budget_s old. > replan_budget_s.
+  double max_extrapolation_s = 2.0;
   /// A goal fails (FAILED) after this many plans without a trajectory for it (a target the
   /// certificate proves unreachable, or bad input, at once): in a room seen for the first
   /// time a first plan is often overtaken by the next scan. >= 1.

@@ -30,6 +30,8 @@ TEST(OptionChecksAtLoadTest, FrontEnd) {
   const testing::BadConfigCase cases[] = {
       {"front_end: {max_goal_attempts: 0}", "front_end.max_goal_attempts"},
       {"front_end: {fallback_base_clearance_m: -0.1}", "front_end.fallback_base_clearance_m"},
+      {"front_end: {other_way_turn_min_rad: -1}", "front_end.other_way_turn_min_rad"},
+      {"front_end: {other_way_turn_min_rad: .nan}", "front_end.other_way_turn_min_rad"},
       {"front_end: {improvement_window_s: -1}", "front_end.improvement_window_s"},
       {"front_end: {acquisition_budget_s: -1}", "front_end.acquisition_budget_s"},
       {"front_end: {acquisition_budget_s: 0}", "front_end.acquisition_budget_s"},

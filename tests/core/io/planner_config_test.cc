@@ -30,6 +30,7 @@ TEST(PlannerConfigTest, ShippedFileLoadsAndRestatesTheDefaults) {
   EXPECT_EQ(f.max_goal_attempts, d.front_end.max_goal_attempts);
   EXPECT_EQ(f.fallback_base_clearance_m, d.front_end.fallback_base_clearance_m);
   EXPECT_EQ(f.reachable_goal_search, d.front_end.reachable_goal_search);
+  EXPECT_EQ(f.other_way_turn_min_rad, d.front_end.other_way_turn_min_rad);
   EXPECT_EQ(f.improvement_window_s, d.front_end.improvement_window_s);
   EXPECT_EQ(f.acquisition_budget_s, d.front_end.acquisition_budget_s);
   EXPECT_EQ(f.seed, d.front_end.seed);

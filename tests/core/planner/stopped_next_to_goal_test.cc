@@ -11,7 +11,10 @@
 // that run (its own footprint cleared, as the planner clears it for a plan from rest); load
 // it with `topay-plan --scene-file` to look at it.
 
+#include <cmath>
 #include <cstdio>
+#include <limits>
+#include <stdexcept>
 #include <fstream>
 #include <string>
 
@@ -93,12 +96,17 @@ class StoppedNextToGoalTest : public ::testing::Test {
   Scene scene_;
 };
 
-void ExpectFinishedWithTheArmAlone(const ScenePlan& plan) {
-  ASSERT_TRUE(plan.result.success()) << plan.result.failure_reason;
-  ASSERT_GE(plan.result.chosen, 0);
+// The chosen candidate, validated.
+const CandidateReport& ExpectValidated(const ScenePlan& plan) {
+  EXPECT_TRUE(plan.result.success()) << plan.result.failure_reason;
+  if (!plan.result.success() || plan.result.chosen < 0) throw std::runtime_error("no plan");
   const CandidateReport& chosen = plan.result.candidates[plan.result.chosen];
-  ASSERT_TRUE(chosen.validation.has_value());
-  EXPECT_TRUE(chosen.validation->ok);
+  EXPECT_TRUE(chosen.validation.has_value() && chosen.validation->ok);
+  return chosen;
+}
+
+void ExpectFinishedWithTheArmAlone(const ScenePlan& plan) {
+  const CandidateReport& chosen = ExpectValidated(plan);
   const BasePath& base = plan.result.front_end.paths[chosen.path_index].base_path;
   EXPECT_EQ(base.source, BasePathSource::kStanding);
   EXPECT_EQ(base.length_m, 0.0);
@@ -112,10 +120,12 @@ TEST_F(StoppedNextToGoalTest, PlansFromWhereItStoppedWithTheArmAlone) {
 }
 
 // The mission sends its goal with the hint it planned the first time: that goal's base pose
-// is 4 cm away, where this base cannot go; the standing candidate comes after it.
+// is 4 cm away, and the base paths there leave the tight spot and come back. Before the
+// other-way turns (finding 29's third case, below) none had an arm path and the standing
+// candidate, after the hint, was planned; now the hint's own goal is reached that way.
 TEST_F(StoppedNextToGoalTest, PlansFromWhereItStoppedWithTheMissionsHint) {
   const ScenePlan plan = PlanInScene(kinematics_, scene_, Options(), start_, X_WE_goal_, hint_);
-  ExpectFinishedWithTheArmAlone(plan);
+  ExpectValidated(plan);
 }
 
 // What the optimizer's restart does there: without it the standing candidate's optimization
@@ -131,6 +141,41 @@ TEST_F(StoppedNextToGoalTest, WithoutTheOptimizerRestartTheStandingCandidateColl
   EXPECT_EQ(first.status, BackEndStatus::kNotConverged);
   EXPECT_LT(first.duration_s, 0.01);
   EXPECT_GT(first.ee_position_error_m, 0.01);
+}
+
+// Finding 29's third case, on the same map: a drive fault stopped the robot 0.3 s after it
+// left the pickup for the drop-off, its arm still out over the table. Its base escape is
+// straight back, so every base path began with a half turn in place (3.1416 rad: the way
+// round decided by the start yaw's last milliradians), and that way swept the arm through the
+// table: no arm path, plan after plan. Tried the other way round too (other_way_turn_min_rad),
+// the arm clears the table at once. The target here is behind the robot as the drop-off was.
+class StoppedWithTheArmOverTheTableTest : public StoppedNextToGoalTest {
+ protected:
+  const WholeBodyState start_over_table_ =
+      State(2.47403405, -1.76545509, -1.63972551, {-0.641774, -0.288659, 1.690748, 0.927928, -0.629314, 0.883198, -5.517302});
+  const Eigen::Isometry3d X_WE_behind_ = [] {
+    Eigen::Isometry3d X = Eigen::Isometry3d::Identity();
+    X.linear() = Eigen::Quaterniond(-0.242232728, -0.585451702, -0.189031317, 0.750224481).normalized().toRotationMatrix();
+    X.translation() = Eigen::Vector3d(2.3, 0.3, 0.8);
+    return X;
+  }();
+};
+
+TEST_F(StoppedWithTheArmOverTheTableTest, PlansWithTheHalfTurnTheOtherWayRound) {
+  const ScenePlan plan = PlanInScene(kinematics_, scene_, Options(), start_over_table_, X_WE_behind_);
+  const CandidateReport& chosen = ExpectValidated(plan);
+  // The chosen path turns the longer way: more than half a turn at the start.
+  const FrontEndPath& path = plan.result.front_end.paths[chosen.path_index];
+  EXPECT_GT(std::abs(StartTurnRad(path.base_sequence)), 3.1416);
+}
+
+TEST_F(StoppedWithTheArmOverTheTableTest, OnlyTheShorterWayRoundFindsNoArmPath) {
+  WholeBodyPlannerOptions options = Options();
+  options.front_end.other_way_turn_min_rad = std::numeric_limits<double>::infinity();
+  options.retry.max_rounds = 1;
+  const ScenePlan plan = PlanInScene(kinematics_, scene_, options, start_over_table_, X_WE_behind_);
+  EXPECT_FALSE(plan.result.success());
+  EXPECT_NE(plan.result.failure_reason.find("no arm path"), std::string::npos) << plan.result.failure_reason;
 }
 
 }  // namespace

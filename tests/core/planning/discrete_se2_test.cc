@@ -160,6 +160,41 @@ TEST(DiscreteSE2Test, TurnsTakeTheShorterWayAndKeepYawContinuous) {
   EXPECT_GT(path.layers[1].yaw_rad, kPi);  // continuous, not wrapped
 }
 
+// Finding 29's third case: a path that begins (and ends) behind the robot turns half a turn;
+// asked, that turn goes the longer way round, the rest of the sequence as before.
+TEST(DiscreteSE2Test, AnEndTurnGoesTheOtherWayRoundWhenAsked) {
+  DiscreteSE2Options options;
+  // Facing -y (3.0 rad short of a half turn), the path heads +y, the goal yaw is +x.
+  const std::vector<Eigen::Vector2d> waypoints = {{0.0, 0.0}, {0.0, 2.0}};
+  const double start_yaw = kPi / 2.0 - 3.0, goal_yaw = 0.0;
+  const DiscreteSE2Path shorter = DiscreteSE2(waypoints, start_yaw, goal_yaw, Limits(), options);
+  const DiscreteSE2Path start_other = DiscreteSE2(waypoints, start_yaw, goal_yaw, Limits(), options, {true, false});
+  const DiscreteSE2Path goal_other = DiscreteSE2(waypoints, start_yaw, goal_yaw, Limits(), options, {false, true});
+  for (const DiscreteSE2Path* path : {&shorter, &start_other, &goal_other}) {
+    ExpectWellFormed(*path, options);
+    EXPECT_NEAR(WrapAngle(path->layers.back().yaw_rad - goal_yaw), 0.0, 1e-12);
+  }
+  EXPECT_NEAR(StartTurnRad(shorter), 3.0, 1e-12);
+  EXPECT_NEAR(StartTurnRad(start_other), 3.0 - 2.0 * kPi, 1e-12);
+  EXPECT_NEAR(StartTurnRad(goal_other), 3.0, 1e-12);
+  EXPECT_NEAR(GoalTurnRad(shorter), -kPi / 2.0, 1e-12);
+  EXPECT_NEAR(GoalTurnRad(start_other), -kPi / 2.0, 1e-12);
+  EXPECT_NEAR(GoalTurnRad(goal_other), 3.0 * kPi / 2.0, 1e-12);
+  // The longer turn takes longer: 5 steps of at most pi / 4 for 3.28 rad, 4 for 3.0 rad.
+  EXPECT_EQ(start_other.num_layers(), shorter.num_layers() + 1);
+  EXPECT_GT(start_other.total_time_s(), shorter.total_time_s());
+  // A path without turns at its ends has none to turn the other way.
+  const DiscreteSE2Path straight = DiscreteSE2(waypoints, kPi / 2.0, kPi / 2.0, Limits(), options, {true, true});
+  EXPECT_EQ(StartTurnRad(straight), 0.0);
+  EXPECT_EQ(GoalTurnRad(straight), 0.0);
+  EXPECT_EQ(straight.num_layers(), DiscreteSE2(waypoints, kPi / 2.0, kPi / 2.0, Limits(), options).num_layers());
+  // One waypoint: its one turn goes the other way for either flag.
+  EXPECT_NEAR(StartTurnRad(DiscreteSE2({{1.0, 2.0}}, 0.0, -kPi / 2.0, Limits(), options, {true, false})),
+              3.0 * kPi / 2.0, 1e-12);
+  EXPECT_NEAR(GoalTurnRad(DiscreteSE2({{1.0, 2.0}}, 0.0, -kPi / 2.0, Limits(), options, {false, true})),
+              3.0 * kPi / 2.0, 1e-12);
+}
+
 TEST(DiscreteSE2Test, SingleWaypointTurnsInPlaceOnly) {
   DiscreteSE2Options options;
   const DiscreteSE2Path path = DiscreteSE2({{1.0, 2.0}}, 0.0, -kPi / 2.0, Limits(), options);

@@ -147,6 +147,32 @@ TEST_F(GoalCandidatesTest, AStartWithinReachGivesACandidateWhereItStands) {
   for (const GoalCandidate& candidate : other.candidates) EXPECT_FALSE(candidate.base_stays);
 }
 
+// Finding 29's third case: a goal whose wrist angle (joint 7, +-6.28 rad) is a turn away from
+// the start's. Every candidate, the hint's too, is on the turn nearest the start (the same
+// pose, the least travel): none has another turn within the limits that is nearer.
+TEST_F(GoalCandidatesTest, CandidatesLieOnTheWristTurnNearestTheStart) {
+  const WholeBodyIk ik = MakeIk();
+  WholeBodyState goal = GoalState();
+  goal.q_rad(6) = 5.9;
+  WholeBodyState start = StartState();
+  start.q_rad(6) = -5.5;
+  const Eigen::Isometry3d X_WE = kinematics_.EndEffectorPose(goal);
+  const GoalCandidatesResult result = FindGoalCandidates(ik, X_WE, start, goal, nullptr);
+  ASSERT_TRUE(result.success()) << result.failure_reason;
+  ASSERT_TRUE(result.candidates.front().from_hint);
+  EXPECT_NEAR(result.candidates.front().state.q_rad(6), 5.9 - 2.0 * std::numbers::pi, 1e-9);
+  const double q7_max = model_.joint_limits.q_max_rad(6);
+  for (const GoalCandidate& candidate : result.candidates) {
+    ExpectReachesTarget(candidate.state, X_WE);
+    const double q7 = candidate.state.q_rad(6);
+    for (double other : {q7 - 2.0 * std::numbers::pi, q7 + 2.0 * std::numbers::pi}) {
+      if (std::abs(other) <= q7_max) {
+        EXPECT_GE(std::abs(other - start.q_rad(6)), std::abs(q7 - start.q_rad(6)));
+      }
+    }
+  }
+}
+
 TEST_F(GoalCandidatesTest, AHintInCollisionIsNotReturned) {
   const WholeBodyIk ik = MakeIk();
   const WholeBodyState hint = GoalState();

@@ -14,6 +14,7 @@
 #include "core/common/angles.h"
 #include "core/common/random.h"
 #include "core/io/robot_loader.h"
+#include "core/robot/joint_turns.h"
 #include "core/robot/kinematics.h"
 #include "core/robot/self_collision.h"
 #include "tests/core/robot/allocation_counter.h"
@@ -310,6 +311,41 @@ TEST_F(WholeBodyIkTest, TheStandingStateGivesASolutionThatKeepsItsBase) {
   EXPECT_EQ(found, 10);
 }
 
+// True if q7 + 2 pi k for some k != 0 lies within joint 7's limits and nearer the reference.
+bool FartherThanAnotherTurn(double q7_rad, double reference_rad) {
+  constexpr double kLimit = 6.28, kTurn = 2.0 * std::numbers::pi;
+  for (int k : {-2, -1, 1, 2}) {
+    const double other = q7_rad + k * kTurn;
+    if (std::abs(other) <= kLimit && std::abs(other - reference_rad) < std::abs(q7_rad - reference_rad)) return true;
+  }
+  return false;
+}
+
+// Finding 29's third case: the wrist (joint 7, limits +-6.28 rad) reaches a pose on two turns;
+// with the robot's joints as reference every solution is on the turn nearest them.
+TEST_F(WholeBodyIkTest, SolutionsLieOnTheJointTurnsNearestTheReference) {
+  Rng rng(31);
+  const WholeBodyIk ik(kinematics_, TestOptions());
+  int turned = 0;
+  for (int trial = 0; trial < 5; ++trial) {
+    WholeBodyState truth = RandomFreeState(&rng);
+    truth.q_rad(6) = rng.Uniform(3.5, 6.0);
+    const Eigen::Isometry3d X_WE_target = kinematics_.EndEffectorPose(truth);
+    const WholeBodyIkResult free = ik.Solve(X_WE_target, nullptr);
+    WholeBodyIkQuery query;
+    query.reference_q_rad = Eigen::VectorXd::Constant(model_.num_joints(), 0.0);
+    (*query.reference_q_rad)(6) = -5.5;
+    const WholeBodyIkResult result = ik.Solve(X_WE_target, nullptr, query);
+    ASSERT_TRUE(result.success()) << "trial " << trial << ": " << result.failure_reason;
+    for (const IkSolution& solution : result.solutions) {
+      ExpectValid(solution, X_WE_target);
+      EXPECT_FALSE(FartherThanAnotherTurn(solution.state.q_rad(6), -5.5)) << "trial " << trial;
+    }
+    for (const IkSolution& solution : free.solutions) turned += FartherThanAnotherTurn(solution.state.q_rad(6), -5.5);
+  }
+  EXPECT_GT(turned, 0);  // without the reference some solutions were on the far turn
+}
+
 TEST_F(WholeBodyIkTest, AStandingStateOutOfReachGivesNoSolutionOfItsOwn) {
   Rng rng(30);
   WholeBodyIkOptions options = TestOptions();
@@ -481,8 +517,13 @@ TEST_F(WholeBodyIkTest, RejectsBadHintsAndReferences) {
   WholeBodyIkQuery short_standing;
   short_standing.standing = truth;
   short_standing.standing->q_rad.resize(6);
-  for (const WholeBodyIkQuery& query :
-       {nan_hint, short_hint, inf_reference, nan_standing, short_standing}) {
+  WholeBodyIkQuery nan_reference_q;
+  nan_reference_q.reference_q_rad = truth.q_rad;
+  (*nan_reference_q.reference_q_rad)(6) = std::numeric_limits<double>::quiet_NaN();
+  WholeBodyIkQuery long_reference_q;
+  long_reference_q.reference_q_rad = Eigen::VectorXd::Zero(8);
+  for (const WholeBodyIkQuery& query : {nan_hint, short_hint, inf_reference, nan_standing, short_standing,
+                                        nan_reference_q, long_reference_q}) {
     const WholeBodyIkResult result = ik.Solve(X_WE_target, nullptr, query);
     EXPECT_FALSE(result.success());
     EXPECT_NE(result.failure_reason.find("bad input"), std::string::npos)

@@ -135,7 +135,7 @@ class PlannerProcess : public testing::Test {
     while (!pred() && SecondsSince(start) < timeout_s) {
       if (SecondsSince(last) >= 0.05) {
         msgs::RobotStateEstimate robot;
-        robot.utime = procs::NowUtime();
+        robot.utime = procs::NowUtime() - static_cast<std::int64_t>(1e6 * state_age_s_);
         robot.state = start_;
         robot.v_mps = v_mps_;
         robot.qdot_radps = Eigen::VectorXd::Zero(7);
@@ -246,6 +246,7 @@ class PlannerProcess : public testing::Test {
   Kinematics kinematics_{model_};
   WholeBodyState start_ = BentArmState(-2.5, -2.5, 0.0);
   double v_mps_ = 0.0;  // the published robot state's forward speed
+  double state_age_s_ = 0.0;  // how old the published robot state is when sent (s)
   std::vector<OrientedBox> boxes_;
   std::string dir_;
   pid_t planner_ = -1;
@@ -317,6 +318,32 @@ TEST_F(PlannerProcess, AHeldTrackerMakesItWaitAndPlanFromRestWhereTheRobotStoppe
   const std::string log = StopPlannerAndReadLog();
   EXPECT_NE(log.find("tracker released"), std::string::npos) << log;
   EXPECT_NE(log.find("cannot plan yet: the robot is coming to rest after the tracker's hold"), std::string::npos) << log;
+  EXPECT_EQ(log.find("moving start"), std::string::npos) << log;
+}
+
+// A moving robot whose ROBOT_STATE is stale (stamped 5 s ago: a replayed log, a stuck
+// estimator) is not planned from that state extrapolated 6 s at its rates: the goal waits,
+// saying why, and is planned from rest once a fresh state shows the robot at rest.
+TEST_F(PlannerProcess, AStaleStateOfAMovingRobotIsNotExtrapolated) {
+  v_mps_ = 0.2;
+  state_age_s_ = 5.0;
+  Send(ReachableGoal(24));
+  const auto waiting = [&] {
+    const planner_status_t* s = out_.Last(24, planner_status_t::PLANNING);
+    return s != nullptr && s->detail.find("not extrapolated") != std::string::npos;
+  };
+  ASSERT_TRUE(SpinWithRobot(waiting, 10.0)) << ReadText(dir_ + "/planner.txt");
+  SpinWithRobot([] { return false; }, 1.0);
+  EXPECT_TRUE(out_.trajectories.empty());
+  v_mps_ = 0.0;
+  state_age_s_ = 0.0;
+  ASSERT_TRUE(SpinWithRobot([&] { return !out_.trajectories.empty(); }, 60.0)) << ReadText(dir_ + "/planner.txt");
+  std::string error;
+  const auto poly = msgs::FromMessage(out_.trajectories.back(), &error);
+  ASSERT_TRUE(poly.has_value()) << error;
+  EXPECT_NEAR(poly->p0_W_m.x(), start_.x_m, 1e-3);  // from rest at the robot
+  const std::string log = StopPlannerAndReadLog();
+  EXPECT_NE(log.find("its state is 6."), std::string::npos) << log;
   EXPECT_EQ(log.find("moving start"), std::string::npos) << log;
 }
 
