@@ -110,7 +110,8 @@ struct FrontEndResult {
   /// Empty on success; otherwise what failed and where, e.g. "start state: arm collision".
   std::string failure_reason;
   /// Successful whole-body paths, shortest duration first (the authors' code's choice rule),
-  /// at most one per base path.
+  /// at most one per arm job: one per base path, or more when its end turns were also tried
+  /// the other way round (FrontEndOptions::other_way_turn_min_rad).
   std::vector<FrontEndPath> paths;
   /// The goal state the paths end at (the chosen candidate), and all candidates.
   WholeBodyState goal;
