@@ -372,12 +372,13 @@ bool PlannerNode::FillStart(PlanTrigger trigger, std::int64_t now, PlanJob* job,
   if (!AtRest(job->start, t.rest_speed)) {
     // Moving off any trajectory of ours (a restart, one that ended): start at the measured
     // state extrapolated to t0 with its measured rates.
-    const double dt = 1e-6 * StampDifferenceUs(t0, robot_->utime);
-    if (!(std::abs(dt) <= t.max_extrapolation_s)) {
-      *error = fmt::format("the robot is moving and its state is {:.2f} s from the plan's start (more than "
-                           "timing.max_extrapolation_s, {:.2f} s): not extrapolated", dt, t.max_extrapolation_s);
+    const double age_s = 1e-6 * StampDifferenceUs(now, robot_->utime);
+    if (!(std::abs(age_s) <= t.max_state_age_s)) {
+      *error = fmt::format("the robot is moving and its state is {:.2f} s old (more than timing.max_state_age_s, "
+                           "{:.2f} s): not extrapolated", age_s, t.max_state_age_s);
       return false;
     }
+    const double dt = 1e-6 * StampDifferenceUs(t0, robot_->utime);
     job->from_rest = false;
     job->t0_utime = t0;
     job->time_limit_s = t.replan_budget_s - t.publish_margin_s;

@@ -40,7 +40,7 @@ void ReadTiming(YamlSection s, PlanTimingOptions* o) {
   s.Read("publish_collision_horizon_s", &o->publish_collision_horizon_s);
   s.Read("rest_speed", &o->rest_speed);
   s.Read("retry_period_s", &o->retry_period_s);
-  s.Read("max_extrapolation_s", &o->max_extrapolation_s);
+  s.Read("max_state_age_s", &o->max_state_age_s);
   s.Read("first_plan_attempts", &o->first_plan_attempts);
   s.Read("max_failed_plans_from_rest", &o->max_failed_plans_from_rest);
   s.Finish();
@@ -153,8 +153,7 @@ void CheckPlannerProcessOptions(const PlannerProcessOptions& o, const std::strin
   RequirePositive(o.timing.publish_collision_horizon_s, source, "timing.publish_collision_horizon_s");
   RequirePositive(o.timing.rest_speed, source, "timing.rest_speed");
   RequirePositive(o.timing.retry_period_s, source, "timing.retry_period_s");
-  RequirePositive(o.timing.max_extrapolation_s - o.timing.replan_budget_s, source,
-                  "timing.max_extrapolation_s (minus replan_budget_s)");
+  RequirePositive(o.timing.max_state_age_s, source, "timing.max_state_age_s");
   if (o.timing.first_plan_attempts < 1) {
     throw ConfigError(source, "timing.first_plan_attempts", "must be >= 1");
   }

@@ -93,11 +93,10 @@ struct PlanTimingOptions {
   /// A failed replan is retried after this long (s) while the goal stands.
   double retry_period_s = 0.3;
   /// A robot moving off any trajectory of ours is planned from its measured state extrapolated
-  /// to the plan's start t0 at its measured rates; a state more than this (s) from t0 is not
-  /// extrapolated (the plan waits: a stale ROBOT_STATE, e.g. replayed from a log, put a start's
-  /// joint 1 at 17 rad). t0 is replan_budget_s ahead, so this allows states up to
-  /// max_extrapolation_s - replan_budget_s old. > replan_budget_s.
-  double max_extrapolation_s = 2.0;
+  /// to the plan's start t0 at its measured rates; a state older than this (s) when the plan is
+  /// asked for (or stamped that far ahead) is not extrapolated: the plan waits, saying so (a
+  /// stale ROBOT_STATE, replayed from a log, put a start's joint 1 at 17 rad). > 0.
+  double max_state_age_s = 1.0;
   /// A goal fails (FAILED) after this many plans without a trajectory for it (a target the
   /// certificate proves unreachable, or bad input, at once): in a room seen for the first
   /// time a first plan is often overtaken by the next scan. >= 1.

@@ -26,7 +26,7 @@ TEST(PlannerProcessOptionsTest, ShippedFileLoadsWithTheDefaults) {
   EXPECT_EQ(o.stop.replan_grace_s, d.stop.replan_grace_s);
   EXPECT_EQ(o.map.flush_all_from_rest, d.map.flush_all_from_rest);
   EXPECT_EQ(o.timing.max_failed_plans_from_rest, d.timing.max_failed_plans_from_rest);
-  EXPECT_EQ(o.timing.max_extrapolation_s, d.timing.max_extrapolation_s);
+  EXPECT_EQ(o.timing.max_state_age_s, d.timing.max_state_age_s);
   EXPECT_EQ(o.goals.reached_position_m, d.goals.reached_position_m);
   EXPECT_EQ(o.map.start_arm_overlap_m, d.map.start_arm_overlap_m);
   EXPECT_EQ(o.map.start_arm_escape_overlap_m, d.map.start_arm_escape_overlap_m);
@@ -60,8 +60,8 @@ TEST(PlannerProcessOptionsTest, ValuesAreReadAndBadOnesNamed) {
   expect_error("timing: {replan_budget_s: 0.01}\n", "replan_budget_s");
   expect_error("triggers: {drift_position_m: -1}\n", "drift_position_m");
   expect_error("timing: {max_failed_plans_from_rest: 0}\n", "timing.max_failed_plans_from_rest");
-  expect_error("timing: {max_extrapolation_s: 0.5}\n", "timing.max_extrapolation_s");  // below replan_budget_s
-  expect_error("timing: {max_extrapolation_s: .nan}\n", "timing.max_extrapolation_s");
+  expect_error("timing: {max_state_age_s: 0}\n", "timing.max_state_age_s");
+  expect_error("timing: {max_state_age_s: .nan}\n", "timing.max_state_age_s");
   expect_error("map: {start_arm_overlap_m: -0.01}\n", "map.start_arm_overlap_m");
   expect_error("map: {start_arm_escape_overlap_m: 0.02}\n", "map.start_arm_escape_overlap_m");  // below 0.03
   expect_error("map: {start_arm_escape_overlap_m: .inf}\n", "map.start_arm_escape_overlap_m");

@@ -343,7 +343,7 @@ TEST_F(PlannerProcess, AStaleStateOfAMovingRobotIsNotExtrapolated) {
   ASSERT_TRUE(poly.has_value()) << error;
   EXPECT_NEAR(poly->p0_W_m.x(), start_.x_m, 1e-3);  // from rest at the robot
   const std::string log = StopPlannerAndReadLog();
-  EXPECT_NE(log.find("its state is 6."), std::string::npos) << log;
+  EXPECT_NE(log.find("its state is 5."), std::string::npos) << log;
   EXPECT_EQ(log.find("moving start"), std::string::npos) << log;
 }
 
