@@ -547,20 +547,21 @@ std::vector<ArmJob> FrontEnd::MakeArmJobs(int attempt, const GoalCandidate& goal
     job.base_path_index = index;
     job.seed = DeriveSeed(options_.seed, 1000 * static_cast<std::uint64_t>(attempt + 1) + index);
     job.setup_error = Discretise(job.base_path, goal, limits, {}, *context, &job.base_sequence);
-    const bool start_other_way =
-        job.setup_error.empty() && std::abs(StartTurnRad(job.base_sequence)) >= options_.other_way_turn_min_rad;
-    const bool goal_other_way =
-        job.setup_error.empty() && std::abs(GoalTurnRad(job.base_sequence)) >= options_.other_way_turn_min_rad;
-    jobs.push_back(job);
     // The same base path with a half turn at an end the other way round, right after it (a
     // job queued behind every other may never start within the acquisition budget).
-    for (const DiscreteSE2Turns turns : {DiscreteSE2Turns{true, false}, DiscreteSE2Turns{false, true}}) {
-      if (!(turns.start_other_way ? start_other_way : goal_other_way)) continue;
-      ArmJob other = job;
-      other.seed = DeriveSeed(job.seed, turns.start_other_way ? 1 : 2);
+    std::vector<ArmJob> other_ways;
+    const auto add_other_way = [&](double turn_rad, const DiscreteSE2Turns& turns, std::uint64_t salt) {
+      if (!job.setup_error.empty() || std::abs(turn_rad) < options_.other_way_turn_min_rad) return;
+      ArmJob& other = other_ways.emplace_back();
+      other.base_path = job.base_path;
+      other.base_path_index = index;
+      other.seed = DeriveSeed(job.seed, salt);
       other.setup_error = Discretise(job.base_path, goal, limits, turns, *context, &other.base_sequence);
-      jobs.push_back(std::move(other));
-    }
+    };
+    add_other_way(StartTurnRad(job.base_sequence), {true, false}, 1);
+    add_other_way(GoalTurnRad(job.base_sequence), {false, true}, 2);
+    jobs.push_back(std::move(job));
+    for (ArmJob& other : other_ways) jobs.push_back(std::move(other));
   }
   context->result->stats.discretisation_ms += watch.ElapsedMs();
   return jobs;

@@ -454,29 +454,28 @@ std::vector<Eigen::Vector3d> WholeBodyIk::SampleBasePoses(const Eigen::Vector3d&
 }
 
 std::string WholeBodyIk::CheckQuery(const WholeBodyIkQuery& query) const {
-  // A whole-body state of the query (the hint, the standing state), named `what`.
-  const auto check_state = [this](const std::optional<WholeBodyState>& state,
-                                  const std::string& what) -> std::string {
-    if (!state) return "";
-    if (state->num_joints() != kinematics_.num_joints()) {
-      return what + " has " + std::to_string(state->num_joints()) + " joints, the robot " +
-             std::to_string(kinematics_.num_joints());
+  // Something of the query with `joints` joints (the hint, the standing state, the reference
+  // joints), named `what`, finite or not.
+  const auto check = [this](bool given, Eigen::Index joints, bool finite, const std::string& what) -> std::string {
+    if (!given) return "";
+    if (joints != kinematics_.num_joints()) {
+      return what + " has " + std::to_string(joints) + " joints, the robot " + std::to_string(kinematics_.num_joints());
     }
-    return state->IsFinite() ? "" : what + " contains NaN or infinity";
+    return finite ? "" : what + " contains NaN or infinity";
   };
-  for (const std::string& why : {check_state(query.hint, "hint"),
-                                 check_state(query.standing, "standing state")}) {
+  const auto& hint = query.hint;
+  const auto& standing = query.standing;
+  const auto& reference_q = query.reference_q_rad;
+  for (const std::string& why :
+       {check(hint.has_value(), hint ? hint->num_joints() : 0, hint && hint->IsFinite(), "hint"),
+        check(standing.has_value(), standing ? standing->num_joints() : 0, standing && standing->IsFinite(),
+              "standing state"),
+        check(reference_q.has_value(), reference_q ? reference_q->size() : 0, reference_q && reference_q->allFinite(),
+              "reference joint vector")}) {
     if (!why.empty()) return why;
   }
   if (query.reference_base && !query.reference_base->allFinite()) {
     return "reference base pose contains NaN or infinity";
-  }
-  if (query.reference_q_rad) {
-    if (query.reference_q_rad->size() != kinematics_.num_joints()) {
-      return "reference joints have " + std::to_string(query.reference_q_rad->size()) + " joints, the robot " +
-             std::to_string(kinematics_.num_joints());
-    }
-    if (!query.reference_q_rad->allFinite()) return "reference joints contain NaN or infinity";
   }
   return "";
 }
