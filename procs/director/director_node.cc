@@ -77,16 +77,20 @@ std::optional<RouteQuery> DirectorNode::Route(std::int64_t now_utime) const {
 }
 
 void DirectorNode::Tick(std::int64_t now_utime) {
-  for (Pending& p : pending_) {
+  TakePlacement(now_utime);
+  for (std::size_t i = 0; i < pending_.size(); ++i) {
+    Pending& p = pending_[i];
     if (p.done) continue;
+    const std::string box = "box " + std::to_string(p.box_id);
     if (StepRunning(p)) {
       p.step_seen = true;
-      status_ = "step " + p.event.during_step + " runs: waiting for a place for box " + std::to_string(p.box_id);
-      if (RobotDriving(p)) TryPlace(&p, now_utime);
+      if (!placement_.busy() && RobotDriving(p) && now_utime >= next_attempt_utime_) StartPlacement(i, now_utime);
+      status_ = "step " + p.event.during_step + " runs: " + (placement_.busy() ? "checking" : "waiting for") +
+                " a place for " + box;
     } else if (p.step_seen) {
-      p.done = true;
+      p.done = true;  // a running attempt's result is dropped when it comes
       ++given_up_;
-      status_ = "no place for box " + std::to_string(p.box_id) + " before step " + p.event.during_step + " ended";
+      status_ = "no place for " + box + " before step " + p.event.during_step + " ended";
       Log(true, p.event.name + ": " + status_ + "; nothing published");
     } else {
       status_ = "waiting for step " + p.event.during_step;
@@ -95,21 +99,31 @@ void DirectorNode::Tick(std::int64_t now_utime) {
   }
 }
 
-void DirectorNode::TryPlace(Pending* p, std::int64_t now_utime) {
+void DirectorNode::StartPlacement(std::size_t event_index, std::int64_t now_utime) {
   const std::optional<RouteQuery> route = Route(now_utime);
   if (!route) return;
-  const std::int64_t trajectory_id = path_->trajectory_id;
-  const std::optional<RouteBox> placed = PlaceRouteBox(*route, scene_, kinematics_, p->event.box, &rng_);
-  if (!placed) return;
-  // The checks took a while (flood fills over the room): the robot drove on meanwhile.
-  if (outputs_.refresh) outputs_.refresh();
-  if (!path_ || path_->trajectory_id != trajectory_id || !StepRunning(*p)) return;
+  const PlacementTag tag{path_->trajectory_id, event_index};
+  placement_.Start(tag, *route, scene_, kinematics_, pending_[event_index].event.box, rng_);
+}
+
+void DirectorNode::TakePlacement(std::int64_t now_utime) {
+  const std::optional<PlacementResult> result = placement_.TakeIfDone();
+  if (!result) return;
+  rng_ = result->rng;  // the draws go on from where the attempt left them
+  Pending& p = pending_[result->tag.event_index];
+  if (p.done) return;  // its step ended meanwhile
+  if (!result->box) {
+    next_attempt_utime_ = now_utime + static_cast<std::int64_t>(options_.retry_period_s * 1e6);
+    return;
+  }
+  // The robot drove on while the room was checked: the box again against where it is now.
+  if (!path_ || path_->trajectory_id != result->tag.trajectory_id || !StepRunning(p)) return;
   const std::optional<RouteQuery> now = Route(now_utime);
   if (!now) return;
-  const std::optional<RouteBox> checked = RecheckRouteBox(*placed, *now, p->event.box);
+  const std::optional<RouteBox> checked = RecheckRouteBox(*result->box, *now, p.event.box);
   if (!checked) return;
-  Publish(*p, *checked, now_utime);
-  p->done = true;
+  Publish(p, *checked, now_utime);
+  p.done = true;
 }
 
 void DirectorNode::Publish(const Pending& p, const RouteBox& placed, std::int64_t now_utime) {

@@ -11,6 +11,7 @@
 #include "core/common/random.h"
 #include "core/geometry/scene.h"
 #include "core/robot/kinematics.h"
+#include "procs/director/background_placement.h"
 #include "procs/director/base_path.h"
 #include "procs/director/director_options.h"
 #include "procs/msgs/robot_state_intake.h"
@@ -23,9 +24,6 @@ namespace topay::director {
 
 struct DirectorOutputs {
   std::function<void(const sim_event_t&)> event;  ///< publishes SIM_EVENT
-  /// Delivers the messages that came meanwhile (the On* calls) before a placement's re-check;
-  /// may be empty.
-  std::function<void()> refresh;
   /// A line for the log (placements, give-ups); may be empty.
   std::function<void(bool warning, const std::string&)> log;
 };
@@ -40,12 +38,20 @@ class DirectorNode {
   /// A trajectory that cannot be rebuilt is logged and ignored.
   void OnTrajectory(const poly_trajectory_t& msg);
   void OnRobotState(const robot_state_t& msg);
-  /// Each pending event: gives up once its step has run and ended; else, while its step runs
-  /// and the robot drives at min_speed_mps, tries to place its box on the active trajectory
-  /// ahead of the robot (PlaceRouteBox), re-checks it after refresh (RecheckRouteBox) and
-  /// publishes it (APPEAR, NOW).
+  /// The first pending event: gives up once its step has run and ended; else, while its step
+  /// runs and the robot drives at min_speed_mps, starts an attempt to place its box on the
+  /// active trajectory ahead of the robot (PlaceRouteBox on a worker thread: the flood fills
+  /// take seconds on a loaded machine and the loop must go on). A later tick takes the
+  /// attempt's result, re-checks the box against where the robot is then (RecheckRouteBox)
+  /// and publishes it (APPEAR, NOW); an attempt whose draws were all rejected is tried again
+  /// retry_period_s later. Returns at once.
   void Tick(std::int64_t now_utime);
+  /// Blocks until a running placement attempt is done (its result is taken by the next
+  /// Tick); for tests.
+  void WaitForPlacement() const { placement_.Wait(); }
 
+  /// A placement attempt runs (or its result waits for the next Tick).
+  bool placing() const { return placement_.busy(); }
   int boxes_placed() const { return boxes_placed_; }
   int events_given_up() const { return given_up_; }
   bool all_done() const;
@@ -62,7 +68,8 @@ class DirectorNode {
   bool StepRunning(const Pending& p) const;
   bool RobotDriving(const Pending& p) const;
   std::optional<RouteQuery> Route(std::int64_t now_utime) const;
-  void TryPlace(Pending* p, std::int64_t now_utime);
+  void StartPlacement(std::size_t event_index, std::int64_t now_utime);
+  void TakePlacement(std::int64_t now_utime);
   void Publish(const Pending& p, const RouteBox& placed, std::int64_t now_utime);
   void Log(bool warning, const std::string& line);
 
@@ -79,7 +86,9 @@ class DirectorNode {
   double speed_mps_ = 0.0;
   int boxes_placed_ = 0;
   int given_up_ = 0;
+  std::int64_t next_attempt_utime_ = 0;  // after an attempt whose draws were all rejected
   std::string status_ = "waiting for the mission";
+  BackgroundPlacement placement_;  // last: its destructor waits for a running attempt
 };
 
 }  // namespace topay::director

@@ -66,6 +66,10 @@ DirectorOptions LoadDirectorOptions(const std::string& path) {
   top.Read("seed", &o.seed);
   top.Read("tick_period_s", &o.tick_period_s);
   if (!(o.tick_period_s > 0.0)) throw ConfigError(path, "tick_period_s", "must be > 0");
+  top.Read("retry_period_s", &o.retry_period_s);
+  if (!(o.retry_period_s >= 0.0 && o.retry_period_s < 3600.0)) {
+    throw ConfigError(path, "retry_period_s", "must be >= 0 and < 3600");
+  }
   top.Read("path_sample_s", &o.path_sample_s);
   if (!(o.path_sample_s > 0.0)) throw ConfigError(path, "path_sample_s", "must be > 0");
   const YAML::Node events = top.Raw("events");

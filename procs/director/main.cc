@@ -62,10 +62,6 @@ int main(int argc, char** argv) {
   lcm::LCM& lcm = loop.lcm();
   DirectorOutputs outputs;
   outputs.event = [&lcm](const sim_event_t& m) { lcm.publish(std::string(channels::SIM_EVENT), &m); };
-  outputs.refresh = [&lcm] {
-    while (lcm.handleTimeout(0) > 0) {
-    }
-  };
   outputs.log = [](bool warning, const std::string& line) {
     if (warning) {
       spdlog::warn("{}", line);

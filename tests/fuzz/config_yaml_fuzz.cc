@@ -215,7 +215,8 @@ void FuzzDirector(const std::string& text, const LoaderTempFile& file) {
   file.Write(text);
   const auto options = LoadOrConfigError([&] { return director::LoadDirectorOptions(file.path()); }, file.path());
   if (!options) return;
-  FuzzCheck(options->tick_period_s > 0.0 && options->path_sample_s > 0.0, "director periods are > 0");
+  FuzzCheck(options->tick_period_s > 0.0 && options->path_sample_s > 0.0 && options->retry_period_s >= 0.0,
+            "director periods are > 0 (the retry's >= 0)");
   for (const director::BoxOnRouteEvent& event : options->events) {
     FuzzCheck(!event.during_step.empty() && event.min_speed_mps >= 0.0 && event.box_id >= -1,
               "a director event names its step");

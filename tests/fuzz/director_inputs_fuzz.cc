@@ -49,6 +49,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     if (op->tick) {
       now += op->advance_us;
       node.Tick(now);
+      node.WaitForPlacement();  // deterministic: an attempt's result is taken by the next tick
       continue;
     }
     switch (op->channel) {

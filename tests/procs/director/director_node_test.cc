@@ -1,6 +1,8 @@
 // topay-director's node with direct calls: no box before its step runs or while the robot
 // stands, one box once the step runs and the robot drives (on the trajectory ahead of it, an
-// id clear of the room's), never a second; a step that ends first gives the event up.
+// id clear of the room's), never a second; a step that ends first gives the event up. The
+// placement runs on a worker thread: the tick that starts it never publishes, a later one
+// takes its result (WaitForPlacement in between, so that the tests do not depend on timing).
 
 #include "procs/director/director_node.h"
 
@@ -34,7 +36,6 @@ class DirectorNodeTest : public testing::Test {
   DirectorNode MakeNode() {
     DirectorOutputs outputs;
     outputs.event = [this](const sim_event_t& m) { events_.push_back(m); };
-    outputs.refresh = [this] { ++refreshes_; };
     outputs.log = [this](bool warning, const std::string&) { warnings_ += warning ? 1 : 0; };
     return DirectorNode(options_, room_, kinematics_, outputs);
   }
@@ -74,7 +75,7 @@ class DirectorNodeTest : public testing::Test {
   Scene room_;
   DirectorOptions options_;
   std::vector<sim_event_t> events_;
-  int refreshes_ = 0, warnings_ = 0;
+  int warnings_ = 0;
   double x_robot_m_ = 0.0;
 };
 
@@ -91,6 +92,13 @@ TEST_F(DirectorNodeTest, OneBoxOnceTheStepRunsAndTheRobotDrives) {
   EXPECT_TRUE(events_.empty()) << "not while the robot is slow";
   Drive(&node, 2.0, 0.8);
   node.Tick(At(2.0));
+  EXPECT_TRUE(node.placing());
+  EXPECT_TRUE(events_.empty()) << "the tick that starts the attempt returns at once";
+  EXPECT_EQ(node.StatusLine(), "step dropoff runs: checking a place for box 1000");
+  node.WaitForPlacement();
+  Drive(&node, 2.2, 0.8);  // the robot drove on meanwhile
+  node.Tick(At(2.2));
+  EXPECT_FALSE(node.placing());
   ASSERT_EQ(events_.size(), 1u);
   const sim_event_t& e = events_[0];
   EXPECT_EQ(e.action, sim_event_t::APPEAR);
@@ -101,13 +109,13 @@ TEST_F(DirectorNodeTest, OneBoxOnceTheStepRunsAndTheRobotDrives) {
   EXPECT_GE(e.center_m[0] - x_robot_m_, 2.0);
   EXPECT_LE(e.center_m[0] - x_robot_m_, 3.6);
   EXPECT_EQ(e.size_m[2], 1.0);
-  EXPECT_EQ(refreshes_, 1);
   EXPECT_EQ(node.boxes_placed(), 1);
   EXPECT_TRUE(node.all_done());
   EXPECT_NE(node.StatusLine().find("box 1000 placed at"), std::string::npos) << node.StatusLine();
-  for (double t = 2.2; t < 4.0; t += 0.2) {
+  for (double t = 2.4; t < 4.0; t += 0.2) {
     Drive(&node, t, 0.8);
     node.Tick(At(t));
+    node.WaitForPlacement();
   }
   EXPECT_EQ(events_.size(), 1u) << "once per event";
 }
@@ -117,6 +125,8 @@ TEST_F(DirectorNodeTest, GivesUpWhenTheStepEndsFirst) {
   node.OnMissionStatus(Status(mission_status_t::RUNNING, "goto dropoff"));
   Drive(&node, 8.5, 0.8);  // 1.5 s from the end: too near it for a box
   node.Tick(At(8.5));
+  node.WaitForPlacement();
+  node.Tick(At(8.7));
   EXPECT_TRUE(events_.empty());
   node.OnMissionStatus(Status(mission_status_t::RUNNING, "gripper open"));
   node.Tick(At(9.0));
@@ -133,10 +143,77 @@ TEST_F(DirectorNodeTest, ConfiguredBoxIdAndNoBoxBeforeTheTrajectoryStarts) {
   node.OnMissionStatus(Status(mission_status_t::RUNNING, "goto dropoff"));
   Drive(&node, 0.0, 0.8);
   node.Tick(kT0 - 100'000);  // a replan not joined yet
-  EXPECT_TRUE(events_.empty());
+  EXPECT_FALSE(node.placing());
+  node.Tick(At(1.0));
+  node.WaitForPlacement();
   node.Tick(At(1.0));
   ASSERT_EQ(events_.size(), 1u);
   EXPECT_EQ(events_[0].box_id, 42);
+}
+
+TEST_F(DirectorNodeTest, AnAttemptWithEveryDrawRejectedIsTriedAgainOnlyAfterTheRetryPeriod) {
+  options_.retry_period_s = 1.0;
+  options_.events[0].box.min_robot_distance_m = 50.0;  // no box is ever that far from the robot
+  DirectorNode node = MakeNode();
+  node.OnMissionStatus(Status(mission_status_t::RUNNING, "goto dropoff"));
+  Drive(&node, 1.0, 0.8);
+  node.Tick(At(1.0));
+  ASSERT_TRUE(node.placing());
+  node.WaitForPlacement();
+  node.Tick(At(1.2));  // takes the failed attempt: the next one from 2.2 s
+  EXPECT_FALSE(node.placing());
+  node.Tick(At(2.0));
+  EXPECT_FALSE(node.placing()) << "retried before retry_period_s";
+  node.Tick(At(2.2));
+  EXPECT_TRUE(node.placing());
+  node.WaitForPlacement();
+  EXPECT_TRUE(events_.empty());
+  EXPECT_EQ(node.boxes_placed(), 0);
+}
+
+TEST_F(DirectorNodeTest, AStepThatEndsWhileTheAttemptRunsDropsItsBox) {
+  DirectorNode node = MakeNode();
+  node.OnMissionStatus(Status(mission_status_t::RUNNING, "goto dropoff"));
+  Drive(&node, 1.0, 0.8);
+  node.Tick(At(1.0));
+  ASSERT_TRUE(node.placing());
+  node.OnMissionStatus(Status(mission_status_t::RUNNING, "gripper open"));
+  node.Tick(At(1.2));
+  EXPECT_EQ(node.events_given_up(), 1);
+  node.WaitForPlacement();
+  node.Tick(At(1.4));
+  EXPECT_FALSE(node.placing());
+  EXPECT_TRUE(events_.empty()) << "a box for a step that has ended";
+  EXPECT_EQ(node.boxes_placed(), 0);
+}
+
+TEST_F(DirectorNodeTest, TheSameDrawsAsAnAttemptOnTheLoopWould) {
+  // The worker draws from a copy of the node's generator and hands it back: same seed, same
+  // box as PlaceRouteBox called directly with a generator of that seed.
+  DirectorNode node = MakeNode();
+  node.OnMissionStatus(Status(mission_status_t::RUNNING, "goto dropoff"));
+  Drive(&node, 1.0, 0.8);
+  node.Tick(At(1.0));
+  node.WaitForPlacement();
+  node.Tick(At(1.0));
+  ASSERT_EQ(events_.size(), 1u);
+  const ArcYawTrajectory trajectory = test::TrackerTestTrajectory(Eigen::Vector2d(-4.0, 0.0), 0.0,
+                                                                  Eigen::VectorXd::Zero(7), 8.0, 0.0,
+                                                                  Eigen::VectorXd::Zero(7), 5.0);
+  std::string error;
+  const std::optional<BasePath> path =
+      SampleBasePath(test::TrackerTestMessage(trajectory, Eigen::Vector2d(-4.0, 0.0), kT0, 7), options_.path_sample_s,
+                     &error);
+  ASSERT_TRUE(path) << error;
+  RouteQuery route;
+  route.path_W_m = path->p_W_m;
+  route.robot_index = *path->IndexAt(At(1.0));
+  route.p_WR_m = Eigen::Vector2d(x_robot_m_, 0.0);
+  Rng rng(options_.seed);
+  const std::optional<RouteBox> direct = PlaceRouteBox(route, room_, kinematics_, options_.events[0].box, &rng);
+  ASSERT_TRUE(direct);
+  EXPECT_DOUBLE_EQ(events_[0].center_m[0], direct->box.center_W_m.x());
+  EXPECT_DOUBLE_EQ(events_[0].size_m[0], direct->box.size_m.x());
 }
 
 }  // namespace

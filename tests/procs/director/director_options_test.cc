@@ -49,6 +49,7 @@ TEST(DirectorOptions, ShippedScriptPutsOneBoxOnTheWayToTheDropoff) {
   EXPECT_EQ(e.box.tries, d.tries);
   EXPECT_EQ(o.seed, 1u);
   EXPECT_EQ(o.tick_period_s, DirectorOptions{}.tick_period_s);
+  EXPECT_EQ(o.retry_period_s, DirectorOptions{}.retry_period_s);
 }
 
 TEST(DirectorOptions, EventDefaultsAndFields) {
@@ -60,12 +61,15 @@ TEST(DirectorOptions, EventDefaultsAndFields) {
   EXPECT_EQ(o.events[0].box_id, 77);
   EXPECT_EQ(o.events[0].name, "crate");
   EXPECT_EQ(o.seed, 9u);
+  EXPECT_EQ(LoadDirectorOptions(Write("retry_period_s: 2.5\n")).retry_period_s, 2.5);
   EXPECT_TRUE(LoadDirectorOptions(Write("seed: 2\n")).events.empty());
 }
 
 TEST(DirectorOptions, BadScriptsNameTheField) {
   EXPECT_NE(ErrorOf("sede: 1\n").find("sede"), std::string::npos);
   EXPECT_NE(ErrorOf("tick_period_s: 0\n").find("tick_period_s"), std::string::npos);
+  EXPECT_NE(ErrorOf("retry_period_s: -1\n").find("retry_period_s"), std::string::npos);
+  EXPECT_NE(ErrorOf("retry_period_s: .nan\n").find("retry_period_s"), std::string::npos);
   EXPECT_NE(ErrorOf("events: 3\n").find("events"), std::string::npos);
   EXPECT_NE(ErrorOf("events:\n  - type: box_flood\n    during_step: x\n").find("events[0].type"), std::string::npos);
   EXPECT_NE(ErrorOf("events:\n  - type: box_on_route\n").find("events[0].during_step"), std::string::npos);
