@@ -16,6 +16,7 @@
 #include "core/map/occupancy_map.h"
 #include "graph_test_support.h"
 #include "procs/msgs/map_receiver.h"
+#include "tests/common/sanitizer_build.h"
 #include "topay/map_update_t.hpp"
 #include "topay/point_cloud_t.hpp"
 #include "topay/sim_event_t.hpp"
@@ -100,7 +101,7 @@ struct MapListener {
   }
 };
 
-class MapperProcess : public testing::Test {
+class MapperProcess : public ::testing::Test {
  protected:
   void SetUp() override {
     std::string why;
@@ -236,8 +237,8 @@ TEST_F(MapperProcess, AMapperKilledMidRunStartsAgainFromItsJournal) {
   ASSERT_GE(map_.FaceXOccupied(2.8, -1.4, 1.4, 0.05, 1.15), 0.95);
   // The crate goes from the world after the last snapshot: the journal's deltas carry it.
   SendEvent(sim_event_t::DISAPPEAR, 1, Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero());
-  watcher_->Spin(1.5);
-  ASSERT_LE(map_.FaceYOccupied(2.0, -0.45, 0.45, 0.15, 0.75), 0.05);
+  ASSERT_TRUE(watcher_->SpinUntil([&] { return map_.FaceYOccupied(2.0, -0.45, 0.45, 0.15, 0.75) <= 0.05; },
+                                  1.5 * topay::testing::kBuildSlowdown));
   const VoxelStateCounts before = CountsOf(map_.receiver);
   // No scans after the kill (the sim stops first), so the restarted mapper can only know the
   // map from its journal.
@@ -248,6 +249,7 @@ TEST_F(MapperProcess, AMapperKilledMidRunStartsAgainFromItsJournal) {
   const VoxelStateCounts last = CountsOf(map_.receiver);
   kill(mapper_, SIGKILL);
   WaitFor(mapper_, 5.0);
+  watcher_->Spin(0.3);  // the killed mapper's last MAP_UPDATEs, still queued, go to the old receiver
   map_.receiver = msgs::MapReceiver();
   StartMapper({"--checkpoint", journal});
   ASSERT_TRUE(watcher_->SpinUntil([&] { return map_.receiver.has_map(); }, 10.0)) << ReadText(dir_ + "/mapper.txt");
