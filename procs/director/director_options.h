@@ -32,7 +32,7 @@ struct DirectorOptions {
   double tick_period_s = 0.2;   ///< How often a pending event tries to place its box (s). > 0.
   /// After a placement attempt whose draws were all rejected, the next one waits this long
   /// (s; each attempt is up to `tries` flood fills over the room, on a core the robot's
-  /// processes share). >= 0.
+  /// processes share). >= 0 and < 3600.
   double retry_period_s = 1.0;
   double path_sample_s = 0.02;  ///< The trajectory's base path is sampled this often (s). > 0.
   std::vector<BoxOnRouteEvent> events;

@@ -23,6 +23,11 @@ class BackgroundPlacementTest : public testing::Test {
     route_.robot_index = 0;
     route_.p_WR_m = route_.path_W_m.front();
   }
+  // One attempt from a generator of seed 1, waited for.
+  void StartAndWait(BackgroundPlacement* placement, const RouteBoxOptions& options) {
+    placement->Start(PlacementTag{}, route_, room_, kinematics_, options, Rng(1));
+    placement->Wait();
+  }
   RobotModel model_ = LoadRobotModel(std::string(TOPAY_SOURCE_DIR) + "/config/robot/topay_mm.urdf",
                                      std::string(TOPAY_SOURCE_DIR) + "/config/robot/topay_mm.yaml");
   Kinematics kinematics_{model_};
@@ -64,8 +69,7 @@ TEST_F(BackgroundPlacementTest, OneAttemptAtATime) {
                std::logic_error)
       << "a finished result not taken yet";
   ASSERT_TRUE(placement.TakeIfDone());
-  placement.Start(PlacementTag{}, route_, room_, kinematics_, RouteBoxOptions{}, Rng(1));
-  placement.Wait();
+  StartAndWait(&placement, RouteBoxOptions{});
   EXPECT_TRUE(placement.TakeIfDone());
 }
 
@@ -73,8 +77,7 @@ TEST_F(BackgroundPlacementTest, EveryDrawRejectedIsAResultWithoutABox) {
   RouteBoxOptions options;
   options.min_robot_distance_m = 50.0;
   BackgroundPlacement placement;
-  placement.Start(PlacementTag{}, route_, room_, kinematics_, options, Rng(1));
-  placement.Wait();
+  StartAndWait(&placement, options);
   const std::optional<PlacementResult> result = placement.TakeIfDone();
   ASSERT_TRUE(result);
   EXPECT_FALSE(result->box);
@@ -84,8 +87,7 @@ TEST_F(BackgroundPlacementTest, BadOptionsAreRethrownWhereTheResultIsTaken) {
   RouteBoxOptions options;
   options.tries = 0;
   BackgroundPlacement placement;
-  placement.Start(PlacementTag{}, route_, room_, kinematics_, options, Rng(1));
-  placement.Wait();
+  StartAndWait(&placement, options);
   EXPECT_THROW(placement.TakeIfDone(), std::invalid_argument);
   EXPECT_FALSE(placement.busy());
 }

@@ -66,6 +66,13 @@ class DirectorNodeTest : public testing::Test {
     }
     x_robot_m_ = state.pose.x_m;
   }
+  // The drop-off step runs and the robot drives at 0.8 m/s, `t_s` into the trajectory: the
+  // tick starts a placement attempt.
+  void DriveInTheStep(DirectorNode* node, double t_s) {
+    node->OnMissionStatus(Status(mission_status_t::RUNNING, "goto dropoff"));
+    Drive(node, t_s, 0.8);
+    node->Tick(At(t_s));
+  }
   std::int64_t last_state_utime_ = 0;
   static std::int64_t At(double t_s) { return kT0 + static_cast<std::int64_t>(t_s * 1e6); }
 
@@ -155,9 +162,7 @@ TEST_F(DirectorNodeTest, AnAttemptWithEveryDrawRejectedIsTriedAgainOnlyAfterTheR
   options_.retry_period_s = 1.0;
   options_.events[0].box.min_robot_distance_m = 50.0;  // no box is ever that far from the robot
   DirectorNode node = MakeNode();
-  node.OnMissionStatus(Status(mission_status_t::RUNNING, "goto dropoff"));
-  Drive(&node, 1.0, 0.8);
-  node.Tick(At(1.0));
+  DriveInTheStep(&node, 1.0);
   ASSERT_TRUE(node.placing());
   node.WaitForPlacement();
   node.Tick(At(1.2));  // takes the failed attempt: the next one from 2.2 s
@@ -173,9 +178,7 @@ TEST_F(DirectorNodeTest, AnAttemptWithEveryDrawRejectedIsTriedAgainOnlyAfterTheR
 
 TEST_F(DirectorNodeTest, AStepThatEndsWhileTheAttemptRunsDropsItsBox) {
   DirectorNode node = MakeNode();
-  node.OnMissionStatus(Status(mission_status_t::RUNNING, "goto dropoff"));
-  Drive(&node, 1.0, 0.8);
-  node.Tick(At(1.0));
+  DriveInTheStep(&node, 1.0);
   ASSERT_TRUE(node.placing());
   node.OnMissionStatus(Status(mission_status_t::RUNNING, "gripper open"));
   node.Tick(At(1.2));
@@ -191,9 +194,7 @@ TEST_F(DirectorNodeTest, TheSameDrawsAsAnAttemptOnTheLoopWould) {
   // The worker draws from a copy of the node's generator and hands it back: same seed, same
   // box as PlaceRouteBox called directly with a generator of that seed.
   DirectorNode node = MakeNode();
-  node.OnMissionStatus(Status(mission_status_t::RUNNING, "goto dropoff"));
-  Drive(&node, 1.0, 0.8);
-  node.Tick(At(1.0));
+  DriveInTheStep(&node, 1.0);
   node.WaitForPlacement();
   node.Tick(At(1.0));
   ASSERT_EQ(events_.size(), 1u);
