@@ -158,7 +158,7 @@ tsan-configure: deps
 	  -DTBB_DIR=$(CURDIR)/$(TSAN_BUILD_DIR)/third_party/tbb-tsan/lib/cmake/TBB -DTOPAY_BUILD_BENCHMARKS=OFF >/dev/null
 test-tsan: tsan-configure
 	@cmake --build $(TSAN_BUILD_DIR) -j $(JOBS)
-	@cd $(TSAN_BUILD_DIR) && TSAN_OPTIONS=halt_on_error=1:second_deadlock_stack=1 \
+	@cd $(TSAN_BUILD_DIR) && TSAN_OPTIONS=halt_on_error=1:second_deadlock_stack=1:suppressions=$(CURDIR)/tools/sanitizers/tsan.supp \
 	  ctest --output-on-failure -j $(JOBS) $(CTEST_ARGS)
 # CI's sanitizer run (.ci/run, after make test): TSan over the tests of the code that runs
 # threads (the planner's parallel arm searches, shortcuts and cost chunks on TBB, the planner

@@ -10,7 +10,8 @@ build_dir=$1
 shift
 logs="$build_dir/tsan-logs"
 mkdir -p "$logs"
-export TSAN_OPTIONS="halt_on_error=1:second_deadlock_stack=1${TSAN_OPTIONS:+:$TSAN_OPTIONS}"
+suppressions="$(cd "$(dirname "$0")" && pwd)/tsan.supp"  # third-party libraries only, with reasons
+export TSAN_OPTIONS="halt_on_error=1:second_deadlock_stack=1:suppressions=$suppressions${TSAN_OPTIONS:+:$TSAN_OPTIONS}"
 failed=()
 for test in "$@"; do
   binary="$build_dir/bin/$test"
