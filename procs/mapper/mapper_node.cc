@@ -59,7 +59,7 @@ void MapperNode::OnRobotState(const robot_state_t& msg) {
 void MapperNode::OnCloud(const point_cloud_t& msg) {
   const auto start = std::chrono::steady_clock::now();
   ++stats_.clouds;
-  if (const std::optional<CloudError> error = CheckCloud(msg, options_.filter.input, &cloud_)) {
+  if (const std::optional<msgs::CloudError> error = msgs::CheckCloud(msg, options_.filter.input, &cloud_)) {
     ++stats_.clouds_rejected;
     stats_.last_error = error->ToString();
     spdlog::warn("POINT_CLOUD utime {} skipped: {}", msg.utime, stats_.last_error);

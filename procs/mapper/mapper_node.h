@@ -12,12 +12,12 @@
 #include <string>
 #include <vector>
 
-#include "procs/mapper/cloud_input.h"
+#include "procs/msgs/cloud_input.h"
 #include "procs/mapper/map_journal.h"
 #include "procs/mapper/mapper_options.h"
 #include "procs/mapper/mapper_stats.h"
 #include "procs/mapper/octomap_worker.h"
-#include "procs/mapper/robot_state_history.h"
+#include "core/robot/robot_state_history.h"
 #include "procs/mapper/scan_mapper.h"
 #include "procs/msgs/map_publish_schedule.h"
 #include "procs/msgs/robot_state_intake.h"
@@ -58,7 +58,7 @@ class MapperNode {
   msgs::RobotStateIntake state_intake_{0};  // decode, continuity gate (the history checks joints)
   RobotStateHistory history_;
   msgs::MapPublishSchedule schedule_;
-  CheckedCloud cloud_;
+  msgs::CheckedCloud cloud_;
   std::vector<VoxelChange> pending_;
   std::int64_t last_data_utime_ = 0;
   std::int64_t scans_ = 0;

@@ -6,7 +6,7 @@
 
 #include "core/map/occupancy_map.h"
 #include "procs/mapper/octomap_mirror.h"
-#include "procs/mapper/robot_state_history.h"
+#include "core/robot/robot_state_history.h"
 #include "procs/mapper/scan_filter_options.h"
 #include "procs/msgs/map_codec.h"
 

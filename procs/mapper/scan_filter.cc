@@ -67,7 +67,7 @@ ScanFilter::ScanFilter(const ScanFilterOptions& options, const Kinematics& kinem
 
 ScanFilter::~ScanFilter() = default;
 
-void ScanFilter::CropRange(const CheckedCloud& cloud, std::vector<Eigen::Vector3f>* p_WP,
+void ScanFilter::CropRange(const msgs::CheckedCloud& cloud, std::vector<Eigen::Vector3f>* p_WP,
                            ScanFilterSummary* summary) const {
   const Eigen::Matrix3f R_WS = cloud.X_WS.linear().cast<float>();
   const Eigen::Vector3f p_WS = cloud.X_WS.translation().cast<float>();
@@ -117,7 +117,7 @@ void ScanFilter::RemoveSelf(const std::optional<WholeBodyState>& state, const Ei
   std::erase_if(*p_WP, [&](const Eigen::Vector3f& p) { return (p.head<2>() - p_WS_xy).squaredNorm() < radius * radius; });
 }
 
-ScanFilterSummary ScanFilter::Filter(const CheckedCloud& cloud,
+ScanFilterSummary ScanFilter::Filter(const msgs::CheckedCloud& cloud,
                                      const std::optional<WholeBodyState>& state,
                                      std::vector<Eigen::Vector3f>* p_WP) {
   ScanFilterSummary summary;

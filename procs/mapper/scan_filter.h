@@ -8,8 +8,8 @@
 
 #include "core/robot/kinematics.h"
 #include "core/robot/whole_body_state.h"
-#include "procs/mapper/cloud_input.h"
-#include "procs/mapper/robot_body_filter.h"
+#include "procs/msgs/cloud_input.h"
+#include "core/robot/robot_body_filter.h"
 #include "procs/mapper/scan_filter_options.h"
 #include "procs/mapper/scan_filter_summary.h"
 
@@ -40,7 +40,7 @@ class ScanFilter {
   /// Filters `cloud`, taken with the robot at `state` (the scan's time), into *p_WP (cleared
   /// first; its capacity is reused). A missing state, or one that is not finite or has a
   /// joint count other than the model's, skips the self filter (summary warning).
-  ScanFilterSummary Filter(const CheckedCloud& cloud, const std::optional<WholeBodyState>& state,
+  ScanFilterSummary Filter(const msgs::CheckedCloud& cloud, const std::optional<WholeBodyState>& state,
                            std::vector<Eigen::Vector3f>* p_WP);
 
   const ScanFilterOptions& options() const { return options_; }
@@ -48,7 +48,7 @@ class ScanFilter {
  private:
   struct PclStages;  // PCL's clouds and filters (scan_filter.cc)
 
-  void CropRange(const CheckedCloud& cloud, std::vector<Eigen::Vector3f>* p_WP,
+  void CropRange(const msgs::CheckedCloud& cloud, std::vector<Eigen::Vector3f>* p_WP,
                  ScanFilterSummary* summary) const;
   void RemoveGround(std::vector<Eigen::Vector3f>* p_WP) const;
   void RemoveSelf(const std::optional<WholeBodyState>& state, const Eigen::Vector3d& p_WS,

@@ -4,7 +4,7 @@
 
 #include <yaml-cpp/yaml.h>
 
-#include "procs/mapper/cloud_input.h"
+#include "procs/msgs/cloud_input.h"
 
 namespace topay::mapper {
 
@@ -22,7 +22,7 @@ const char* OutlierMethodName(OutlierMethod method);
 /// of the same name (LoadScanFilterOptions); defaults below.
 struct ScanFilterOptions {
   /// Checks of the incoming message (YAML section `input`).
-  CloudInputOptions input;
+  msgs::CloudInputOptions input;
   /// Points nearer than this to the sensor (m, in S) are dropped: the Mid-360's blind zone.
   double range_min_m = 0.1;
   /// Points farther than this (m, in S) are dropped: 20 m reaches across the 20 x 20 m map

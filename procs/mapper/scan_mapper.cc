@@ -20,7 +20,7 @@ ScanMapper::ScanMapper(const ScanFilterOptions& filter, const OccupancyMapOption
                        const Kinematics& kinematics)
     : filter_(filter, kinematics), map_(map) {}
 
-ScanMapperSummary ScanMapper::Integrate(const CheckedCloud& cloud,
+ScanMapperSummary ScanMapper::Integrate(const msgs::CheckedCloud& cloud,
                                         const std::optional<WholeBodyState>& state,
                                         std::vector<VoxelChange>* changes) {
   const auto start = std::chrono::steady_clock::now();

@@ -11,7 +11,7 @@
 #include "core/map/voxel_state.h"
 #include "core/robot/kinematics.h"
 #include "core/robot/whole_body_state.h"
-#include "procs/mapper/cloud_input.h"
+#include "procs/msgs/cloud_input.h"
 #include "procs/mapper/scan_filter.h"
 
 namespace topay::mapper {
@@ -35,7 +35,7 @@ class ScanMapper {
   /// Filters `cloud` (the robot at `state` at the scan's time; none: no self filter) and
   /// integrates the points into the map from the sensor's origin. Appends every voxel whose
   /// state changed to *changes (may be null).
-  ScanMapperSummary Integrate(const CheckedCloud& cloud, const std::optional<WholeBodyState>& state,
+  ScanMapperSummary Integrate(const msgs::CheckedCloud& cloud, const std::optional<WholeBodyState>& state,
                               std::vector<VoxelChange>* changes);
 
   /// The last scan's filtered points in W (what went into the map).

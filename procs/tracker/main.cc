@@ -1,8 +1,9 @@
 // topay-tracker: the NMPC trajectory tracker of the graph (docs/tracker.md). TRAJECTORY,
 // ROBOT_STATE, GRIPPER_COMMAND, DRIVE_STATUS and the planner's HEARTBEAT in; CONTROL_COMMAND and
-// TRACKER_STATUS out at 50 Hz. Stops within the robot's acceleration limits without a
-// trajectory, after its end, when the robot state is stale or jumps, or when the planner
-// restarted or fell silent. Exit codes: 0, 1 config or file error, 2 usage error.
+// TRACKER_STATUS out at 50 Hz; POINT_CLOUD in for the protective field. Stops within the robot's
+// acceleration limits without a trajectory, after its end, when the robot state is stale or
+// jumps, when the planner restarted or fell silent, or when the LiDAR shows an obstacle on the
+// base's path ahead (the protective field). Exit codes: 0, 1 config or file error, 2 usage error.
 
 #include <CLI/CLI.hpp>
 #include <spdlog/spdlog.h>
@@ -42,7 +43,7 @@ int main(int argc, char** argv) {
   try {
     options = ResolveOptions(process);
     const RobotModel model = LoadRobotModel(options.robot_urdf, options.robot_yaml);
-    node = std::make_unique<TrackerNode>(options, MakeTrackerLimits(model));
+    node = std::make_unique<TrackerNode>(options, model);
   } catch (const std::exception& e) {  // ConfigError, the robot files' and the options' errors
     spdlog::error("{}", e.what());
     return procs::kExitConfigError;
@@ -53,9 +54,11 @@ int main(int argc, char** argv) {
     return procs::kExitConfigError;
   }
   ConnectTrackerNode(&loop, node.get(), options.nmpc.control_period_s);
-  spdlog::info("{}: {:.0f} Hz, horizon {} x {:.3f} s, latency {:.3f} s, stale state after {:.3f} s, budget {:.1f} ms",
+  spdlog::info("{}: {:.0f} Hz, horizon {} x {:.3f} s, latency {:.3f} s, stale state after {:.3f} s, budget {:.1f} ms, "
+               "protective field {}",
                process.name, CycleRateHz(options), options.nmpc.horizon_steps, options.nmpc.step_s,
-               options.nmpc.latency_s, options.nmpc.stale_state_s, options.nmpc.time_budget_s * 1e3);
+               options.nmpc.latency_s, options.nmpc.stale_state_s, options.nmpc.time_budget_s * 1e3,
+               options.protective_field.enabled ? "on" : "off");
   const int code = loop.Run();
   std::printf("%s", node->Report().c_str());
   std::fflush(stdout);

@@ -54,6 +54,13 @@ TrackerNode::TrackerNode(const TrackerOptions& options, const TrackerLimits& lim
   cycle_.command.qdot_radps.assign(num_joints_, 0.0);
 }
 
+TrackerNode::TrackerNode(const TrackerOptions& options, const RobotModel& model)
+    : TrackerNode(options, MakeTrackerLimits(model)) {
+  if (!options.protective_field.enabled) return;
+  field_.emplace(options.protective_field, model.base_cylinder, model.base_limits);
+  field_intake_ = std::make_unique<FieldScanIntake>(model, options.protective_field.self_margin_m);
+}
+
 double TrackerNode::Seconds(std::int64_t utime) {
   if (!origin_utime_) origin_utime_ = utime;
   return static_cast<double>(utime - *origin_utime_) * 1e-6;
@@ -142,6 +149,7 @@ void TrackerNode::OnRobotState(const robot_state_t& msg) {
     spdlog::warn("ROBOT_STATE: {}", state_intake_.gate_reason());
   }
   if (std::isfinite(estimate->gripper)) measured_gripper_ = estimate->gripper;
+  if (field_intake_) field_intake_->AddState(estimate->utime, estimate->state);
   CheckJump(*estimate);
   state_ = std::move(estimate);
 }
@@ -173,6 +181,21 @@ void TrackerNode::OnGripper(const gripper_command_t& msg) {
   }
   ++counts_.grippers;
   gripper_ = msg.position;
+}
+
+void TrackerNode::OnPointCloud(const point_cloud_t& msg) {
+  if (!field_) return;
+  if (const std::optional<std::string> error = field_intake_->Take(msg, &field_points_)) {
+    ++counts_.scans_rejected;
+    if (Every(counts_.scans_rejected)) {
+      spdlog::warn("POINT_CLOUD not used by the protective field (#{}): {}", counts_.scans_rejected, *error);
+    }
+    return;
+  }
+  ++counts_.scans;
+  const Eigen::Vector2d p_WB = state_ ? Eigen::Vector2d(state_->state.x_m, state_->state.y_m)
+                                      : Eigen::Vector2d(msg.p_WS[0], msg.p_WS[1]);
+  field_->SetScan(field_points_, Seconds(msg.utime), p_WB);
 }
 
 void TrackerNode::OnDriveStatus(const drive_status_t& msg) {
@@ -267,6 +290,7 @@ const TrackerCycle& TrackerNode::Step(std::int64_t now_utime) {
     Activate(std::move(pending_.front()));
     pending_.pop_front();
   }
+  if (FieldEntered(now_utime)) return StepLost(now_utime);
   TrackerInput input = StateInput(now_utime);
   if (active_) input.reference = &active_->reference;
   const TrackerOutput& out = tracker_.Step(input);
@@ -313,6 +337,26 @@ TrackerInput TrackerNode::StateInput(std::int64_t now_utime) {
     input.state_time_s = Seconds(state_->utime);
   }
   return input;
+}
+
+bool TrackerNode::FieldEntered(std::int64_t now_utime) {
+  if (!field_ || !active_ || !StateFresh(now_utime) || last_mode_ != TrackerMode::kTrack) return false;
+  // The speed the robot brakes from: the measured one or the last command, the larger.
+  const double speed_mps = std::max(std::abs(state_->v_mps), std::abs(cycle_.command.v_mps));
+  const double v_max = base_limits_.v_max_mps;
+  const ProtectiveFieldOptions& o = field_->options();
+  // Positions at most step_m apart at v_max; for at most the longest stop plus a second (a
+  // reference that turns in place covers no length).
+  BasePathAhead(active_->reference, Seconds(now_utime), field_->LengthM(speed_mps), o.step_m / v_max,
+                o.reaction_s + v_max / base_limits_.a_max_mps2 + 1.0, &field_path_, &field_sample_);
+  const ProtectiveFieldCheck check = field_->Check(field_path_, Seconds(now_utime));
+  if (!check.entered) return false;
+  BrakeOff(&counts_.protective_stops, "obstacle in the protective field, braking",
+           fmt::format("protective field entered: {} LiDAR points inside the base's path {:.2f} m ahead (field "
+                       "{:.2f} m at {:.2f} m/s), the first at ({:.2f}, {:.2f}, {:.2f}) {:.2f} m along it: braking to a stop",
+                       check.num_inside, check.path_length_m, field_->LengthM(speed_mps), speed_mps,
+                       check.p_W_first.x(), check.p_W_first.y(), check.p_W_first.z(), check.distance_ahead_m));
+  return true;
 }
 
 const TrackerCycle& TrackerNode::StepLost(std::int64_t now_utime) {
@@ -399,13 +443,15 @@ std::string TrackerNode::Report() const {
       "held {} times (drives not running), {} times "
       "(at rest on a stale state), {} trajectories dropped held\n"
       "  trajectories: {} received, {} became active, {} rejected, {} ignored (not newer), {} pending superseded\n"
-      "  robot states: {} ({} rejected: {}); gripper commands: {} ({} rejected)\n",
+      "  robot states: {} ({} rejected: {}); gripper commands: {} ({} rejected)\n"
+      "  protective field: {}, {} scans ({} not used), {} stops\n",
       c.cycles, c.solves, solve_ms_.empty() ? 0.0 : Median(solve_ms_),
       solve_ms_.empty() ? 0.0 : NearestRankQuantile(solve_ms_, 0.99),
       solve_ms_.empty() ? 0.0 : *std::max_element(solve_ms_.begin(), solve_ms_.end()),
       summary.num_over_budget + summary.num_failed, summary.num_over_budget, summary.num_failed, c.stops_stale,
       c.stops_ended, c.losses, c.jumps, c.unguarded, c.holds, c.stale_holds, c.trajectories_dropped_held, c.trajectories, c.switches, c.trajectories_rejected, c.trajectories_ignored, c.pending_superseded,
-      c.states, c.states_rejected, state_intake_.Report(), c.grippers, c.grippers_rejected);
+      c.states, c.states_rejected, state_intake_.Report(), c.grippers, c.grippers_rejected,
+      field_ ? "on" : "off", c.scans, c.scans_rejected, c.protective_stops);
 }
 
 void ConnectTrackerNode(procs::ProcessLoop* loop, TrackerNode* node, double period_s) {
@@ -421,6 +467,10 @@ void ConnectTrackerNode(procs::ProcessLoop* loop, TrackerNode* node, double peri
   loop->Subscribe<heartbeat_t>(std::string(channels::HEARTBEAT), [node](const heartbeat_t& msg) {
     node->OnHeartbeat(msg, procs::NowUtime());
   });
+  if (node->protective_field()) {
+    loop->Subscribe<point_cloud_t>(std::string(channels::POINT_CLOUD),
+                                   [node](const point_cloud_t& msg) { node->OnPointCloud(msg); });
+  }
   loop->AddTimer(period_s, [loop, node] {
     const TrackerCycle& cycle = node->Step(procs::NowUtime());
     loop->lcm().publish(std::string(channels::CONTROL_COMMAND), &cycle.command);

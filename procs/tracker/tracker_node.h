@@ -37,6 +37,12 @@
 // restarted (its HEARTBEAT from a new process) or fell silent (options.planner_watch.silence_s):
 // nobody checks them against the map any more, so they are dropped and the robot brakes the same
 // way (HELD until at rest); the planner, restarted, plans anew from rest where it stopped.
+//
+// Protective field (finding 30; core/control/protective_field.h): with a robot model, POINT_CLOUD
+// scans (the robot's own body removed, FieldScanIntake) are kept, and every tracking cycle the
+// base cylinder along the reference ahead, as far as the robot needs to stop, is checked against
+// them; enough points inside drop the trajectory and brake the same way (HELD until at rest; the
+// planner plans anew from rest). It needs no map: the planner cannot avoid what its map lacks.
 
 #include <cstdint>
 #include <deque>
@@ -47,16 +53,19 @@
 #include <vector>
 
 #include "core/control/nmpc_tracker.h"
+#include "core/control/protective_field.h"
 #include "core/control/tracker_limits.h"
 #include "core/trajectory/arc_yaw_trajectory.h"
 #include "procs/msgs/convert_robot_state.h"
 #include "procs/msgs/robot_state_intake.h"
+#include "procs/tracker/field_scan_intake.h"
 #include "procs/tracker/planner_watch.h"
 #include "procs/tracker/tracker_options.h"
 #include "topay/control_command_t.hpp"
 #include "topay/drive_status_t.hpp"
 #include "topay/gripper_command_t.hpp"
 #include "topay/heartbeat_t.hpp"
+#include "topay/point_cloud_t.hpp"
 #include "topay/poly_trajectory_t.hpp"
 #include "topay/robot_state_t.hpp"
 #include "topay/tracker_status_t.hpp"
@@ -87,6 +96,9 @@ struct TrackerCounts {
   std::int64_t unguarded = 0;
   /// times the robot state jumped (options.jump_*) while the robot could move: dropped, braked, held
   std::int64_t jumps = 0;
+  std::int64_t scans = 0, scans_rejected = 0;  ///< POINT_CLOUDs taken by the protective field / refused
+  /// times the protective field was entered while tracking: dropped, braked, held
+  std::int64_t protective_stops = 0;
 };
 
 /// One cycle's messages.
@@ -97,12 +109,18 @@ struct TrackerCycle {
 
 class TrackerNode {
  public:
-  /// Throws std::invalid_argument for bad NMPC options or limits.
+  /// Throws std::invalid_argument for bad NMPC options or limits. Without a robot model: no
+  /// protective field (POINT_CLOUD ignored).
   TrackerNode(const TrackerOptions& options, const TrackerLimits& limits);
+  /// The limits from `model` (MakeTrackerLimits) and, if options.protective_field.enabled, the
+  /// protective field on its base. Throws std::invalid_argument for bad options.
+  TrackerNode(const TrackerOptions& options, const RobotModel& model);
 
   void OnTrajectory(const poly_trajectory_t& msg, std::int64_t now_utime);
   void OnRobotState(const robot_state_t& msg);
   void OnGripper(const gripper_command_t& msg);
+  /// A LiDAR scan for the protective field (ignored without one).
+  void OnPointCloud(const point_cloud_t& msg);
   /// The CAN bridge's state: not RUNNING (REPLAY aside) holds the tracker, RUNNING releases it.
   void OnDriveStatus(const drive_status_t& msg);
   /// Every process's HEARTBEAT, received at now_utime: the planner's restart brakes the robot
@@ -115,6 +133,8 @@ class TrackerNode {
   const TrackerCounts& counts() const { return counts_; }
   const NmpcTracker& tracker() const { return tracker_; }
   const PlannerWatch& planner_watch() const { return planner_watch_; }
+  /// The protective field (nullptr: none).
+  const ProtectiveField* protective_field() const { return field_ ? &*field_ : nullptr; }
   /// The active trajectory's id (0: none) and the next pending one's (0: none).
   std::int64_t active_id() const { return active_ ? active_->id : 0; }
   std::int64_t pending_id() const { return pending_.empty() ? 0 : pending_.front().id; }
@@ -154,6 +174,8 @@ class TrackerNode {
   // A trajectory the robot may still be moving on: active and not FINISHED, or pending.
   bool MayMove() const;
   TrackerInput StateInput(std::int64_t now_utime);
+  // The protective field on the active reference ahead: true if it was entered (braking begun).
+  bool FieldEntered(std::int64_t now_utime);
 
   TrackerOptions options_;
   int num_joints_;
@@ -173,12 +195,18 @@ class TrackerNode {
   bool lost_ = false;        // braking after tracking was lost (or unguarded), until at rest
   std::string lost_reason_;  // ... why, in the status line's words
   PlannerWatch planner_watch_;
+  std::optional<ProtectiveField> field_;
+  std::unique_ptr<FieldScanIntake> field_intake_;
+  std::vector<Eigen::Vector3f> field_points_;  // the last scan's obstacle points (W)
+  std::vector<Eigen::Vector2d> field_path_;    // base positions ahead (W)
+  TrajectorySample field_sample_;
   std::vector<double> solve_ms_;
   TrackerCycle cycle_;
   TrackerCounts counts_;
 };
 
-/// Subscribes `node` to TRAJECTORY, ROBOT_STATE and GRIPPER_COMMAND on *loop (times from the
+/// Subscribes `node` to TRAJECTORY, ROBOT_STATE, GRIPPER_COMMAND, DRIVE_STATUS, HEARTBEAT and
+/// (with a protective field) POINT_CLOUD on *loop (times from the
 /// wall clock, procs::NowUtime) and adds the cycle timer (nmpc.control_period_s) that publishes
 /// CONTROL_COMMAND and TRACKER_STATUS and sets the heartbeat's health. Call before Run.
 void ConnectTrackerNode(procs::ProcessLoop* loop, TrackerNode* node, double period_s);

@@ -72,6 +72,25 @@ void ReadPlannerWatch(YamlSection s, PlannerWatchOptions* o) {
   s.Finish();
 }
 
+void ReadProtectiveField(YamlSection s, ProtectiveFieldOptions* o) {
+  s.Read("enabled", &o->enabled);
+  s.Read("reaction_s", &o->reaction_s);
+  s.Read("lookahead_m", &o->lookahead_m);
+  s.Read("radial_margin_m", &o->radial_margin_m);
+  s.Read("z_min_m", &o->z_min_m);
+  s.Read("z_max_m", &o->z_max_m);
+  s.Read("min_points", &o->min_points);
+  s.Read("max_scan_age_s", &o->max_scan_age_s);
+  s.Read("step_m", &o->step_m);
+  s.Read("self_margin_m", &o->self_margin_m);
+  s.Finish();
+  try {
+    o->Check();
+  } catch (const std::invalid_argument& e) {
+    throw ConfigError(s.source(), "protective_field", e.what());
+  }
+}
+
 }  // namespace
 
 double CycleRateHz(const TrackerOptions& options) { return 1.0 / options.nmpc.control_period_s; }
@@ -97,6 +116,7 @@ TrackerOptions LoadTrackerOptions(const std::string& path) {
     if (!(*value >= 0.0) || !std::isfinite(*value)) throw ConfigError(path, key, "must be finite and >= 0");
   }
   ReadPlannerWatch(top.Section("planner_watch"), &o.planner_watch);
+  ReadProtectiveField(top.Section("protective_field"), &o.protective_field);
   top.Finish();
   return o;
 }

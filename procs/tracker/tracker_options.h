@@ -6,6 +6,7 @@
 #include <string>
 
 #include "core/control/nmpc_options.h"
+#include "core/control/protective_field.h"
 #include "procs/msgs/trajectory_from_message.h"
 #include "procs/tracker/planner_watch.h"
 
@@ -45,6 +46,10 @@ struct TrackerOptions {
   /// The planner's HEARTBEAT (PlannerWatch): its restart, or its silence for silence_s (3 s),
   /// drops the trajectories it published and brakes the robot the same way (finding 24).
   PlannerWatchOptions planner_watch;
+  /// The protective field (core/control/protective_field.h; finding 30): POINT_CLOUD scans
+  /// checked every tracking cycle along the base's path ahead, braking for an obstacle the
+  /// planner's map lacks. On by default; needs the robot model (TrackerNode's model constructor).
+  ProtectiveFieldOptions protective_field;
 };
 
 /// Loads options from YAML (every key optional; relative robot paths from the file's folder).

@@ -22,7 +22,7 @@
 #include "core/map/voxel_map_fields.h"
 #include "core/planning/planner_fields.h"
 #include "core/robot/kinematics.h"
-#include "procs/mapper/cloud_input.h"
+#include "procs/msgs/cloud_input.h"
 #include "procs/mapper/mapper_options.h"
 #include "procs/mapper/octomap_mirror.h"
 #include "procs/mapper/scan_mapper.h"
@@ -80,7 +80,7 @@ void Run(bool with_ceiling, int num_scans, std::uint64_t seed, double clearing_m
   mapper::ScanMapper mapper(options.filter, options.map, kinematics);
   mapper::OctomapMirror octomap(mapper::MirrorOptionsOf(options));
   VoxelMapFields fields(VoxelMapFieldsOptionsFrom(PlannerFieldOptions(kinematics), options.map.bounds_W_m));
-  mapper::CheckedCloud cloud;
+  msgs::CheckedCloud cloud;
   std::vector<VoxelChange> changes;
   Series s;
   WholeBodyState state;
@@ -93,7 +93,7 @@ void Run(bool with_ceiling, int num_scans, std::uint64_t seed, double clearing_m
     const sim::LidarScan scan = lidar.Scan(state, 0.1 * k);
     const point_cloud_t msg = ToMessage(scan, 1'000'000 + 100'000 * k);
     const auto start = Clock::now();
-    if (mapper::CheckCloud(msg, options.filter.input, &cloud)) std::abort();
+    if (msgs::CheckCloud(msg, options.filter.input, &cloud)) std::abort();
     changes.clear();
     const mapper::ScanMapperSummary summary = mapper.Integrate(cloud, state, &changes);
     const auto encode_start = Clock::now();

@@ -70,7 +70,7 @@ struct ScanSet {
   RobotModel model = LoadModel();
   Kinematics kinematics{model};
   std::vector<WholeBodyState> states;
-  std::vector<mapper::CheckedCloud> clouds;
+  std::vector<msgs::CheckedCloud> clouds;
 
   ScanSet() {
     const Scene scene = GenerateBenchmarkScene(SceneKind::kTables, 1).scene;

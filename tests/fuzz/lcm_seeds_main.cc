@@ -3,7 +3,9 @@
 // sample messages (tests/lcm/sample_messages.h) for types the log lacks. Each subscriber
 // target gets windows of the log on its channels in the record format of subscriber_fuzz.h
 // (a tick wherever the receive time moved on by 5 ms or more); lcm_decode one message of every
-// type; trajectory_message the log's trajectories with sample times. Regenerate with
+// type; trajectory_message the log's trajectories with sample times. A scan (POINT_CLOUD, ~240 KB)
+// is too large for a seed record and is thinned to every k-th point (at most kMaxCloudPoints).
+// Regenerate with
 // tools/fuzz/write_seeds.sh.
 //
 //   write_lcm_fuzz_seeds LOG CORPUS_ROOT
@@ -18,6 +20,7 @@
 #include <vector>
 
 #include "procs/msgs/type_registry.h"
+#include "topay/point_cloud_t.hpp"
 #include "tests/lcm/sample_messages.h"
 #include "topay_msgs/channels.h"
 
@@ -54,6 +57,24 @@ void WriteFile(const fs::path& path, const Bytes& bytes) {
                                               static_cast<std::streamsize>(bytes.size()));
 }
 
+constexpr int kMaxCloudPoints = 500;  // 6 KB of points: several scans fit in a seed
+
+// A scan too large for a record keeps every k-th point, k the smallest that leaves at most
+// kMaxCloudPoints (re-encoded; the pose and time as they were).
+void ThinPointCloud(Bytes* data) {
+  topay::point_cloud_t cloud;
+  if (cloud.decode(data->data(), 0, static_cast<int>(data->size())) < 0) return;
+  const int points = cloud.num_coords / 3;
+  const int stride = (points + kMaxCloudPoints - 1) / kMaxCloudPoints;
+  if (stride <= 1) return;
+  std::vector<float> kept;
+  for (int i = 0; i < points; i += stride) kept.insert(kept.end(), {cloud.p_SP[3 * i], cloud.p_SP[3 * i + 1], cloud.p_SP[3 * i + 2]});
+  cloud.p_SP = std::move(kept);
+  cloud.num_coords = static_cast<std::int32_t>(cloud.p_SP.size());
+  data->resize(static_cast<std::size_t>(cloud.getEncodedSize()));
+  cloud.encode(data->data(), 0, static_cast<int>(data->size()));
+}
+
 std::vector<Event> ReadLog(const std::string& path) {
   lcm::LogFile log(path, "r");
   if (!log.good()) throw std::runtime_error("cannot read the LCM log " + path);
@@ -61,6 +82,7 @@ std::vector<Event> ReadLog(const std::string& path) {
   while (const lcm::LogEvent* e = log.readNextEvent()) {
     const auto* p = static_cast<const std::uint8_t*>(e->data);
     events.push_back({e->timestamp, e->channel, Bytes(p, p + e->datalen)});
+    if (events.back().channel == ch::POINT_CLOUD) ThinPointCloud(&events.back().data);
   }
   return events;
 }
@@ -174,7 +196,8 @@ int main(int argc, char** argv) {
     std::vector<std::string_view> all(ch::kAll.begin(), ch::kAll.end());
     const std::vector<SubscriberTarget> targets = {
         {"estimator_inputs", {ch::BASE_POSE, ch::BASE_VELOCITY, ch::JOINT_STATE, ch::GRIPPER_STATE}},
-        {"tracker_inputs", {ch::TRAJECTORY, ch::ROBOT_STATE, ch::GRIPPER_COMMAND, ch::DRIVE_STATUS, ch::HEARTBEAT}},
+        {"tracker_inputs",
+         {ch::TRAJECTORY, ch::ROBOT_STATE, ch::GRIPPER_COMMAND, ch::DRIVE_STATUS, ch::HEARTBEAT, ch::POINT_CLOUD}},
         {"mission_inputs", {ch::ROBOT_STATE, ch::PLANNER_STATUS, ch::TRACKER_STATUS}},
         {"director_inputs", {ch::MISSION_STATUS, ch::TRAJECTORY, ch::ROBOT_STATE}},
         {"planner_intake", {ch::GOAL, ch::ROBOT_STATE, ch::MAP_UPDATE, ch::TRACKER_STATUS}},

@@ -9,9 +9,9 @@
 #include <vector>
 
 #include "core/robot/kinematics.h"
-#include "procs/mapper/cloud_input.h"
+#include "procs/msgs/cloud_input.h"
 #include "procs/mapper/mapper_options.h"
-#include "procs/mapper/robot_state_history.h"
+#include "core/robot/robot_state_history.h"
 #include "procs/mapper/scan_mapper.h"
 #include "procs/msgs/convert_robot_state.h"
 #include "tests/fuzz/subscriber_fuzz.h"
@@ -22,8 +22,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   static const mapper::MapperOptions options = mapper::LoadMapperOptions(ShippedConfig("mapper/mapper.yaml"));
   static const Kinematics kinematics(ShippedRobotModel());
   mapper::ScanMapper scan_mapper(options.filter, options.map, kinematics);
-  mapper::RobotStateHistory history(options.robot_state);
-  mapper::CheckedCloud cloud;
+  RobotStateHistory history(options.robot_state);
+  msgs::CheckedCloud cloud;
   std::vector<VoxelChange> changes;
   FuzzReader in(data, size);
   int clouds = 0;
@@ -41,7 +41,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     const std::optional<point_cloud_t> msg = DecodeFuzzed<point_cloud_t>(op->bytes, op->fix_fingerprint);
     if (!msg) continue;
     if (++clouds > 8) break;
-    if (const auto error = mapper::CheckCloud(*msg, options.filter.input, &cloud)) {
+    if (const auto error = msgs::CheckCloud(*msg, options.filter.input, &cloud)) {
       FuzzCheck(!error->ToString().empty(), "a refused cloud says why");
       continue;
     }

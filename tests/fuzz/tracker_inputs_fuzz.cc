@@ -1,8 +1,9 @@
 // topay-tracker's subscriptions (TRAJECTORY, ROBOT_STATE, GRIPPER_COMMAND, DRIVE_STATUS,
-// HEARTBEAT) and its 50 Hz NMPC step, on the shipped options and robot, with the node's own handlers (TrackerNode) and a
-// clock the input advances. Checked on every CONTROL_COMMAND it would send: finite, and within
+// HEARTBEAT, POINT_CLOUD for the protective field) and its 50 Hz NMPC step, on the shipped
+// options and robot (the field on), with the node's own handlers (TrackerNode) and a clock the
+// input advances. Checked on every CONTROL_COMMAND it would send: finite, and within
 // the robot's velocity limits (|v| <= v_max, |omega| <= omega_max, |qdot_i| <= qd_max_i).
-// Input: subscriber_fuzz.h, 5 channels; at most 64 steps per input (each may solve).
+// Input: subscriber_fuzz.h, 6 channels; at most 64 steps per input (each may solve).
 #include <cmath>
 #include <cstdint>
 
@@ -32,12 +33,12 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   using namespace topay::fuzz;
   static const tracker::TrackerOptions options = tracker::LoadTrackerOptions(ShippedConfig("tracker/tracker.yaml"));
   static const TrackerLimits limits = MakeTrackerLimits(ShippedRobotModel());
-  tracker::TrackerNode node(options, limits);
+  tracker::TrackerNode node(options, ShippedRobotModel());
   FuzzReader in(data, size);
   std::int64_t now = kFuzzT0Utime;
   int steps = 0;
   for (int i = 0; i < kMaxSubscriberOps; ++i) {
-    const std::optional<SubscriberOp> op = NextSubscriberOp(in, 5);
+    const std::optional<SubscriberOp> op = NextSubscriberOp(in, 6);
     if (!op) break;
     if (op->tick) {
       if (++steps > 64) break;
@@ -58,8 +59,11 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
       case 3:
         if (auto m = DecodeFuzzed<drive_status_t>(op->bytes, op->fix_fingerprint)) node.OnDriveStatus(*m);
         break;
-      default:
+      case 4:
         if (auto m = DecodeFuzzed<heartbeat_t>(op->bytes, op->fix_fingerprint)) node.OnHeartbeat(*m, now);
+        break;
+      default:
+        if (auto m = DecodeFuzzed<point_cloud_t>(op->bytes, op->fix_fingerprint)) node.OnPointCloud(*m);
         break;
     }
   }

@@ -24,6 +24,7 @@
 #include "procs/launch/proc_stats.h"
 #include "procs/runtime/net_namespace.h"
 #include "topay/heartbeat_t.hpp"
+#include "topay/sim_event_t.hpp"
 #include "topay_msgs/channels.h"
 #include "topay_msgs/checked_decode.h"
 
@@ -219,6 +220,23 @@ inline std::map<std::string, int> StatusPids(const std::string& run_dir) {
   } catch (const std::exception&) {
   }
   return pids;
+}
+
+/// Publishes a SIM_EVENT that makes a box (id, full size, m) stand on the floor at p_W (x, y)
+/// now, named `name` in the simulator's log.
+inline void AppearBoxNow(lcm::LCM* lcm, std::int32_t id, double x_m, double y_m, const double (&size_m)[3],
+                         const std::string& name) {
+  sim_event_t e{};
+  e.name = name;
+  e.action = sim_event_t::APPEAR;
+  e.box_id = id;
+  e.has_box = true;
+  e.center_m[0] = x_m;
+  e.center_m[1] = y_m;
+  e.center_m[2] = 0.5 * size_m[2];
+  for (int a = 0; a < 3; ++a) e.size_m[a] = size_m[a];
+  e.trigger = sim_event_t::NOW;
+  lcm->publish(std::string(channels::SIM_EVENT), &e);
 }
 
 }  // namespace topay::test

@@ -32,7 +32,7 @@ SensedMap BuildSensedMap(const Scene& exact, const PlanningTask& task, const Kin
   SensedMap out;
   SensedMapFigures& f = out.figures;
   std::vector<VoxelChange> changes;
-  mapper::CheckedCloud cloud;
+  msgs::CheckedCloud cloud;
   const double period_s = 1.0 / settings.lidar.scan_rate_hz;
   for (const WholeBodyState& state : SensingTourStates(exact, task, settings.tour)) {
     const auto scan_start = Clock::now();

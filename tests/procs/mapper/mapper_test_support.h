@@ -9,15 +9,15 @@
 #include "core/collision/scene_clearance.h"
 #include "core/common/random.h"
 #include "core/robot/kinematics.h"
-#include "procs/mapper/cloud_input.h"
+#include "procs/msgs/cloud_input.h"
 #include "sim/lidar/lidar_scanner.h"
 
 namespace topay::mapper::testing {
 
 /// The points of `scan` whose target `keep` accepts, as a checked cloud at the scan's pose.
 template <typename Keep>
-CheckedCloud CloudOf(const sim::LidarScan& scan, Keep keep) {
-  CheckedCloud cloud;
+msgs::CheckedCloud CloudOf(const sim::LidarScan& scan, Keep keep) {
+  msgs::CheckedCloud cloud;
   cloud.utime = static_cast<std::int64_t>(scan.t_s * 1e6);
   cloud.X_WS = scan.X_WS;
   for (std::size_t k = 0; k < scan.p_SP.size(); ++k) {
@@ -26,7 +26,7 @@ CheckedCloud CloudOf(const sim::LidarScan& scan, Keep keep) {
   return cloud;
 }
 
-inline CheckedCloud CloudOf(const sim::LidarScan& scan) {
+inline msgs::CheckedCloud CloudOf(const sim::LidarScan& scan) {
   return CloudOf(scan, [](std::int32_t) { return true; });
 }
 

@@ -32,8 +32,8 @@ ScanFilterOptions AllOff() {
   return o;
 }
 
-CheckedCloud CloudAt(const Eigen::Vector3d& p_WS, std::vector<Eigen::Vector3f> p_SP) {
-  CheckedCloud cloud;
+msgs::CheckedCloud CloudAt(const Eigen::Vector3d& p_WS, std::vector<Eigen::Vector3f> p_SP) {
+  msgs::CheckedCloud cloud;
   cloud.X_WS.translation() = p_WS;
   cloud.p_SP = std::move(p_SP);
   return cloud;
@@ -56,7 +56,7 @@ class ScanFilterTest : public ::testing::Test {
  protected:
   ScanFilterTest() : model_(topay::testing::LoadTopayModel()), kinematics_(model_) {}
 
-  ScanFilterSummary Run(const ScanFilterOptions& options, const CheckedCloud& cloud,
+  ScanFilterSummary Run(const ScanFilterOptions& options, const msgs::CheckedCloud& cloud,
                         const std::optional<WholeBodyState>& state = std::nullopt) {
     ScanFilter filter(options, kinematics_);
     return filter.Filter(cloud, state, &out_);
@@ -71,7 +71,7 @@ TEST_F(ScanFilterTest, RangeCropKeepsPointsWithinTheRangesAndMovesThemToW) {
   ScanFilterOptions o = AllOff();
   o.range_min_m = 0.1;
   o.range_max_m = 20.0;
-  const CheckedCloud cloud =
+  const msgs::CheckedCloud cloud =
       CloudAt({1, 2, 0.3}, {{0.05f, 0, 0}, {0.5f, 0, 0}, {0, 19.9f, 0}, {25.0f, 0, 0}});
   const ScanFilterSummary s = Run(o, cloud);
   EXPECT_EQ(s.num_input, 4);
@@ -84,7 +84,7 @@ TEST_F(ScanFilterTest, RangeCropKeepsPointsWithinTheRangesAndMovesThemToW) {
 TEST_F(ScanFilterTest, NonFinitePointsAreDroppedAndCounted) {
   const float nan = std::numeric_limits<float>::quiet_NaN();
   const float inf = std::numeric_limits<float>::infinity();
-  const CheckedCloud cloud =
+  const msgs::CheckedCloud cloud =
       CloudAt({0, 0, 0.3}, {{nan, 0, 0}, {1, inf, 0}, {1, 0, -inf}, {3, 0, 0}, {nan, nan, nan}});  // 3 m: beyond no_state_radius_m
   const ScanFilterSummary s = Run(ScanFilterOptions{}, cloud);
   EXPECT_EQ(s.num_non_finite, 4);
@@ -130,7 +130,7 @@ TEST_F(ScanFilterTest, NoPointOfTheRobotSurvivesAndFewOthersAreRemoved) {
     if (trial == 1) q = model_.stow_q_rad;
     const WholeBodyState state = testing::ClearState(kinematics_, room.scene, 0.3, &rng, q);
     const sim::LidarScan scan = scanner.Scan(state, 0.1 * trial);
-    const CheckedCloud self_cloud =
+    const msgs::CheckedCloud self_cloud =
         CloudOf(scan, [](int target) { return target == sim::kTargetSelf; });
     const ScanFilterSummary self = Run(o, self_cloud, state);
     EXPECT_EQ(self.num_output, 0) << "trial " << trial << ": " << self.Report();
@@ -165,7 +165,7 @@ TEST_F(ScanFilterTest, NoPointOfTheStandingRobotSurvivesAMissionOfScans) {
   four_sigma.self_margin_m = 0.08;
   int points = 0, survivors = 0, survivors_at_four_sigma = 0;
   for (int scan = 0; scan < 600; ++scan) {
-    const CheckedCloud cloud = CloudOf(scanner.Scan(state, 0.1 * scan));
+    const msgs::CheckedCloud cloud = CloudOf(scanner.Scan(state, 0.1 * scan));
     points += static_cast<int>(cloud.p_SP.size());
     survivors += Run(o, cloud, state).num_after_self;
     survivors_at_four_sigma += Run(four_sigma, cloud, state).num_after_self;
@@ -182,7 +182,7 @@ TEST_F(ScanFilterTest, WithoutAStateThePointsNearTheRobotAreDroppedWithAWarning)
   scanner.SetWorld({});
   WholeBodyState state;
   state.q_rad = Eigen::VectorXd::Zero(model_.num_joints());  // upright: in view
-  const CheckedCloud cloud = CloudOf(scanner.Scan(state, 0.0));
+  const msgs::CheckedCloud cloud = CloudOf(scanner.Scan(state, 0.0));
   ASSERT_GT(cloud.p_SP.size(), 50u);
   ScanFilterOptions o = AllOff();
   o.self_margin_m = 0.08;
@@ -214,7 +214,7 @@ TEST_F(ScanFilterTest, VoxelGridKeepsOnePointPerOccupiedLeaf) {
   ScanFilterOptions o = AllOff();
   o.voxel_leaf_m = 0.05;
   // 1 x 1 m at 2.5 cm: 1600 points, four per 5 cm leaf in the plane.
-  const CheckedCloud cloud = CloudAt({0, 0, 0}, Square(2.0125f, 1.0f, 0.025f));
+  const msgs::CheckedCloud cloud = CloudAt({0, 0, 0}, Square(2.0125f, 1.0f, 0.025f));
   const auto leaf_of = [](const Eigen::Vector3f& p) {
     const float inverse = 1.0f / 0.05f;
     return std::make_tuple(static_cast<int>(std::floor(p.x() * inverse)),
@@ -240,7 +240,7 @@ TEST_F(ScanFilterTest, OutlierRemovalRemovesIsolatedPointsAndKeepsSurfaces) {
   std::vector<Eigen::Vector3f> points = Square(3.0f, 1.0f, 0.02f);  // 2500 points
   const std::vector<Eigen::Vector3f> isolated = {{5, 3, 1}, {1, -2, 0.7f}, {4, 0, 2}};
   points.insert(points.end(), isolated.begin(), isolated.end());
-  const CheckedCloud cloud = CloudAt({0, 0, 0}, points);
+  const msgs::CheckedCloud cloud = CloudAt({0, 0, 0}, points);
   for (OutlierMethod method : {OutlierMethod::kRadius, OutlierMethod::kStatistical}) {
     ScanFilterOptions o = AllOff();
     o.voxel_leaf_m = 0.05;  // as by default: the outliers are removed from the leaves' points
@@ -253,7 +253,7 @@ TEST_F(ScanFilterTest, OutlierRemovalRemovesIsolatedPointsAndKeepsSurfaces) {
 }
 
 TEST_F(ScanFilterTest, EmptyAndHugeCloudsPassWithoutTrouble) {
-  EXPECT_EQ(Run(ScanFilterOptions{}, CheckedCloud{}).num_output, 0);
+  EXPECT_EQ(Run(ScanFilterOptions{}, msgs::CheckedCloud{}).num_output, 0);
   // 200,000 points (the input limit) of noise in a 10 m cube: filtered, bounded output.
   Rng rng(1);
   std::vector<Eigen::Vector3f> points(200000);

@@ -18,6 +18,7 @@
 #include <limits>
 
 #include "graph_test_support.h"
+#include "tests/common/real_time_skip.h"
 #include "tests/procs/planner/unseen_room.h"
 #include "core/collision/scene_clearance.h"
 #include "core/common/random.h"
@@ -80,9 +81,10 @@ struct GraphListener {
   }
 };
 
-class PlannerGraph : public testing::Test {
+class PlannerGraph : public ::testing::Test {
  protected:
   void SetUp() override {
+    TOPAY_SKIP_REAL_TIME_LOOP_IN_SLOW_BUILD();
     std::string why;
     if (!EnterTestNamespace(&why)) GTEST_SKIP() << why;
     dir_ = TestDir("graph");
@@ -162,17 +164,8 @@ class PlannerGraph : public testing::Test {
     return {p.state.x_m, p.state.y_m};
   }
   void AppearBox(const Eigen::Vector2d& p, const Eigen::Vector3d& size) {
-    sim_event_t e{};
-    e.name = "box on the route";
-    e.action = sim_event_t::APPEAR;
-    e.box_id = 1000 + next_box_++;
-    e.has_box = true;
-    e.center_m[0] = p.x();
-    e.center_m[1] = p.y();
-    e.center_m[2] = 0.5 * size.z();
-    for (int a = 0; a < 3; ++a) e.size_m[a] = size(a);
-    e.trigger = sim_event_t::NOW;
-    watcher_->lcm().publish(std::string(channels::SIM_EVENT), &e);
+    const double size_m[3] = {size.x(), size.y(), size.z()};
+    AppearBoxNow(&watcher_->lcm(), 1000 + next_box_++, p.x(), p.y(), size_m, "box on the route");
   }
   std::int64_t Contacts() const { return out_.sim ? out_.sim->contact_events : -1; }
 

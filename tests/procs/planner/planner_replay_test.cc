@@ -16,6 +16,7 @@
 #include <regex>
 
 #include "graph_test_support.h"
+#include "tests/common/real_time_skip.h"
 #include "tests/procs/planner/unseen_room.h"
 #include "tests/procs/planner/planner_replay_support.h"
 #include "core/collision/scene_clearance.h"
@@ -171,9 +172,10 @@ void ExpectSameTrajectories(const std::vector<poly_trajectory_t>& recorded,
   }
 }
 
-class PlannerReplay : public testing::Test {
+class PlannerReplay : public ::testing::Test {
  protected:
   void SetUp() override {
+    TOPAY_SKIP_REAL_TIME_LOOP_IN_SLOW_BUILD();
     std::string why;
     if (!EnterTestNamespace(&why)) GTEST_SKIP() << why;
     dir_ = TestDir("replay");

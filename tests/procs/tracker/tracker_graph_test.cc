@@ -14,6 +14,7 @@
 #include "core/common/angles.h"
 #include "tracker_test_trajectory.h"
 #include "graph_test_support.h"
+#include "tests/common/real_time_skip.h"
 #include "procs/runtime/process_loop.h"
 #include "topay/control_command_t.hpp"
 #include "topay/heartbeat_t.hpp"
@@ -88,6 +89,7 @@ void StopSimAndTracker(const SimAndTracker& p) {
 }
 
 TEST(TrackerGraph, SimDrivenByTheTrackerFollowsATrajectory) {
+  TOPAY_SKIP_REAL_TIME_LOOP_IN_SLOW_BUILD();
   std::string why;
   if (!EnterTestNamespace(&why)) GTEST_SKIP() << why;
   const std::string dir = TestDir("tracker_graph");

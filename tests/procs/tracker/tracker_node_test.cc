@@ -691,5 +691,104 @@ TEST(TrackerNode, ClosedLoopOnAnIdealPlantReachesTheEndAndFinishes) {
   EXPECT_NE(node.Report().find("topay-tracker: 300 cycles"), std::string::npos) << node.Report();
 }
 
+// The protective field (finding 30): a wall of LiDAR points across (or beside) the test
+// trajectory, which turns left 0.5 rad over its 1 m: in W, the sensor at the origin.
+point_cloud_t WallScan(double x_from, double x_to, double y_from, double y_to, std::int64_t utime) {
+  point_cloud_t msg{};
+  msg.utime = utime;
+  msg.sensor_frame = "lidar";
+  msg.quat_WS[0] = 1.0;
+  const int n = 30;
+  for (int i = 0; i <= n; ++i) {
+    for (const double z : {0.1, 0.2, 0.3}) {
+      msg.p_SP.push_back(static_cast<float>(x_from + (x_to - x_from) * i / n));
+      msg.p_SP.push_back(static_cast<float>(y_from + (y_to - y_from) * i / n));
+      msg.p_SP.push_back(static_cast<float>(z));
+    }
+  }
+  msg.num_coords = static_cast<std::int32_t>(msg.p_SP.size());
+  return msg;
+}
+
+struct FieldRun {
+  WholeBodyState state;
+  std::int8_t last_state = -1;
+  double max_speed_step = 0.0;  // largest |v_k - v_k-1|, m/s
+};
+
+// The ideal plant closed around the node for 6 s, a scan of `wall` every 100 ms.
+FieldRun RunWithWall(TrackerNode* node, const point_cloud_t& wall) {
+  FieldRun run;
+  run.state = Start();
+  node->OnTrajectory(Trajectory(1, kT0 + 100'000), kT0);
+  double v_before = 0.0;
+  for (std::int64_t now = kT0; now < kT0 + 6'000'000; now += kCycle) {
+    node->OnRobotState(StateMessage(run.state, now));
+    if ((now - kT0) % 100'000 == 0) {
+      point_cloud_t scan = wall;
+      scan.utime = now;
+      node->OnPointCloud(scan);
+    }
+    const TrackerCycle& c = node->Step(now);
+    run.last_state = c.status.state;
+    run.max_speed_step = std::max(run.max_speed_step, std::abs(c.command.v_mps - v_before));
+    v_before = c.command.v_mps;
+    MoveByCommand(c.command, 0.02, &run.state);
+  }
+  return run;
+}
+
+TEST(TrackerNode, AnObstacleOnThePathAheadBrakesTheRobotShortOfIt) {
+  TrackerOptions options = Options();
+  options.nmpc.latency_s = 0.0;
+  TrackerNode node(options, Robot());
+  ASSERT_NE(node.protective_field(), nullptr);
+  const FieldRun run = RunWithWall(&node, WallScan(0.9, 0.9, -0.6, 0.9, kT0));
+  EXPECT_EQ(node.counts().protective_stops, 1);
+  EXPECT_EQ(node.counts().scans, 60);
+  EXPECT_EQ(node.counts().scans_rejected, 0);
+  // Braked within the limits and stopped with the bumper short of the wall (x = 0.9).
+  EXPECT_LE(run.max_speed_step, Robot().base_limits.a_max_mps2 * 0.02 + 1e-9);
+  EXPECT_LT(run.state.x_m + Robot().base_cylinder.radius_m, 0.9);
+  EXPECT_GT(run.state.x_m, 0.1);  // it drove until the field reached the wall
+  EXPECT_EQ(run.last_state, tracker_status_t::IDLE);  // released at rest, the trajectory dropped
+  EXPECT_EQ(node.active_id(), 0);
+  EXPECT_NE(node.Report().find("protective field: on, 60 scans (0 not used), 1 stops"), std::string::npos)
+      << node.Report();
+}
+
+TEST(TrackerNode, AnObstacleBesideThePathOrAFieldTurnedOffDoesNotStopTheRobot) {
+  TrackerOptions options = Options();
+  options.nmpc.latency_s = 0.0;
+  TrackerNode beside(options, Robot());  // a wall along the path, 0.5 m to its right
+  const FieldRun run_beside = RunWithWall(&beside, WallScan(-0.5, 1.5, -0.5, -0.5, kT0));
+  EXPECT_EQ(beside.counts().protective_stops, 0);
+  EXPECT_EQ(run_beside.last_state, tracker_status_t::FINISHED);
+  EXPECT_GT(beside.counts().scans, 0);
+
+  options.protective_field.enabled = false;
+  TrackerNode off(options, Robot());
+  EXPECT_EQ(off.protective_field(), nullptr);
+  const FieldRun run_off = RunWithWall(&off, WallScan(0.9, 0.9, -0.6, 0.9, kT0));
+  EXPECT_EQ(off.counts().protective_stops, 0);
+  EXPECT_EQ(off.counts().scans, 0);
+  EXPECT_EQ(run_off.last_state, tracker_status_t::FINISHED);  // through the wall: no field
+  EXPECT_GT(run_off.state.x_m + Robot().base_cylinder.radius_m, 0.9);
+  TrackerNode no_model(Options(), MakeTrackerLimits(Robot()));
+  EXPECT_EQ(no_model.protective_field(), nullptr);
+}
+
+TEST(TrackerNode, ScansTheFieldCannotUseAreCounted) {
+  TrackerNode node(Options(), Robot());
+  node.OnPointCloud(WallScan(0.9, 0.9, -0.6, 0.9, kT0));  // no robot state yet
+  point_cloud_t bad = WallScan(0.9, 0.9, -0.6, 0.9, kT0);
+  bad.num_coords = 7;
+  node.OnRobotState(StateMessage(Start(), kT0));
+  node.OnPointCloud(bad);
+  EXPECT_EQ(node.counts().scans_rejected, 2);
+  EXPECT_EQ(node.counts().scans, 0);
+  EXPECT_EQ(node.protective_field()->num_kept(), 0);
+}
+
 }  // namespace
 }  // namespace topay::tracker

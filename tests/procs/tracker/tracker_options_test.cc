@@ -45,6 +45,18 @@ TEST(TrackerOptions, ShippedConfigRestatesTheDefaults) {
   const PlannerWatchOptions watch;
   EXPECT_EQ(o.planner_watch.process_names, watch.process_names);
   EXPECT_DOUBLE_EQ(o.planner_watch.silence_s, watch.silence_s);
+  const ProtectiveFieldOptions field;
+  const ProtectiveFieldOptions& f = o.protective_field;
+  EXPECT_EQ(f.enabled, field.enabled);
+  EXPECT_DOUBLE_EQ(f.reaction_s, field.reaction_s);
+  EXPECT_DOUBLE_EQ(f.lookahead_m, field.lookahead_m);
+  EXPECT_DOUBLE_EQ(f.radial_margin_m, field.radial_margin_m);
+  EXPECT_DOUBLE_EQ(f.z_min_m, field.z_min_m);
+  EXPECT_DOUBLE_EQ(f.z_max_m, field.z_max_m);
+  EXPECT_EQ(f.min_points, field.min_points);
+  EXPECT_DOUBLE_EQ(f.max_scan_age_s, field.max_scan_age_s);
+  EXPECT_DOUBLE_EQ(f.step_m, field.step_m);
+  EXPECT_DOUBLE_EQ(f.self_margin_m, field.self_margin_m);
 }
 
 TEST(TrackerOptions, ReadsValuesAndResolvesRobotPaths) {
@@ -80,6 +92,19 @@ TEST(TrackerOptions, BadValuesAreErrorsNamingTheField) {
                 .find("planner_watch.process_names"),
             std::string::npos);
   EXPECT_FALSE(ErrorOf("/nonexistent/tracker.yaml").empty());
+}
+
+TEST(TrackerOptions, ReadsTheProtectiveFieldAndNamesItsBadValues) {
+  const TrackerOptions o =
+      LoadTrackerOptions(Write("field.yaml", "protective_field:\n  enabled: false\n  min_points: 9\n  z_max_m: 0.3\n"));
+  EXPECT_FALSE(o.protective_field.enabled);
+  EXPECT_EQ(o.protective_field.min_points, 9);
+  EXPECT_DOUBLE_EQ(o.protective_field.z_max_m, 0.3);
+  const std::string bad = ErrorOf(Write("bad_field.yaml", "protective_field:\n  z_max_m: 0.01\n"));
+  EXPECT_NE(bad.find("protective_field"), std::string::npos) << bad;
+  EXPECT_NE(bad.find("z_max_m"), std::string::npos) << bad;
+  EXPECT_NE(ErrorOf(Write("typo_field.yaml", "protective_field:\n  min_point: 3\n")).find("protective_field.min_point"),
+            std::string::npos);
 }
 
 TEST(TrackerOptions, ReadsThePlannerWatch) {

@@ -8,7 +8,7 @@
 #include "core/robot/kinematics.h"
 #include "core/robot/robot_model.h"
 
-namespace topay::mapper {
+namespace topay {
 
 /// The robot's own collision model at one state, inflated by a margin, as a point test: what
 /// the scan filter removes so that the robot does not map itself. The body is the one the
@@ -50,4 +50,4 @@ class RobotBodyFilter {
   Eigen::AlignedBox3f bounds_W_;
 };
 
-}  // namespace topay::mapper
+}  // namespace topay

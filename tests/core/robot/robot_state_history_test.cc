@@ -1,6 +1,6 @@
-// RobotStateHistory (procs/mapper/robot_state_history.h): interpolation at the scan time,
+// RobotStateHistory (core/robot/robot_state_history.h): interpolation at the scan time,
 // gaps, order, bad states.
-#include "procs/mapper/robot_state_history.h"
+#include "core/robot/robot_state_history.h"
 
 #include <cmath>
 #include <limits>
@@ -8,7 +8,7 @@
 
 #include <gtest/gtest.h>
 
-namespace topay::mapper {
+namespace topay {
 namespace {
 
 WholeBodyState StateAt(double x, double yaw, double q0) {
@@ -86,4 +86,4 @@ TEST(RobotStateHistoryTest, NonFiniteOrResizedStatesAreRejected) {
 }
 
 }  // namespace
-}  // namespace topay::mapper
+}  // namespace topay

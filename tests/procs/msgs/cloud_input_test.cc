@@ -1,11 +1,11 @@
-#include "procs/mapper/cloud_input.h"
+#include "procs/msgs/cloud_input.h"
 
 #include <cmath>
 #include <limits>
 
 #include <gtest/gtest.h>
 
-namespace topay::mapper {
+namespace topay::msgs {
 namespace {
 
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
@@ -113,4 +113,4 @@ TEST(CloudInputTest, NonFinitePointsPassForTheFilterToCount) {
 }
 
 }  // namespace
-}  // namespace topay::mapper
+}  // namespace topay::msgs

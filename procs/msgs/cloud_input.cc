@@ -1,9 +1,9 @@
-#include "procs/mapper/cloud_input.h"
+#include "procs/msgs/cloud_input.h"
 
 #include <cmath>
 #include <sstream>
 
-namespace topay::mapper {
+namespace topay::msgs {
 namespace {
 
 std::string Number(double value) {
@@ -73,4 +73,4 @@ std::optional<CloudError> CheckCloud(const point_cloud_t& message,
   return std::nullopt;
 }
 
-}  // namespace topay::mapper
+}  // namespace topay::msgs

@@ -10,7 +10,7 @@
 
 #include "topay/point_cloud_t.hpp"
 
-namespace topay::mapper {
+namespace topay::msgs {
 
 /// Limits on an incoming POINT_CLOUD message (topay::point_cloud_t).
 struct CloudInputOptions {
@@ -48,4 +48,4 @@ struct CloudError {
 std::optional<CloudError> CheckCloud(const point_cloud_t& message,
                                      const CloudInputOptions& options, CheckedCloud* cloud);
 
-}  // namespace topay::mapper
+}  // namespace topay::msgs

@@ -1,10 +1,10 @@
-#include "procs/mapper/robot_body_filter.h"
+#include "core/robot/robot_body_filter.h"
 
 #include <cmath>
 #include <stdexcept>
 #include <string>
 
-namespace topay::mapper {
+namespace topay {
 
 RobotBodyFilter::RobotBodyFilter(double margin_m) : margin_m_(margin_m) {
   if (!std::isfinite(margin_m) || margin_m < 0.0) {
@@ -59,4 +59,4 @@ int RobotBodyFilter::RemoveFrom(std::vector<Eigen::Vector3f>* p_WP) const {
   return removed;
 }
 
-}  // namespace topay::mapper
+}  // namespace topay

@@ -1,11 +1,11 @@
-#include "procs/mapper/robot_state_history.h"
+#include "core/robot/robot_state_history.h"
 
 #include <algorithm>
 #include <cmath>
 
 #include "core/common/angles.h"
 
-namespace topay::mapper {
+namespace topay {
 namespace {
 
 constexpr double kUsPerS = 1e6;
@@ -65,4 +65,4 @@ std::optional<WholeBodyState> RobotStateHistory::At(std::int64_t utime) const {
   return Interpolate(before->state, after->state, a);
 }
 
-}  // namespace topay::mapper
+}  // namespace topay

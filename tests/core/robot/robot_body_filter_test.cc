@@ -1,4 +1,4 @@
-#include "procs/mapper/robot_body_filter.h"
+#include "core/robot/robot_body_filter.h"
 
 #include <limits>
 #include <stdexcept>
@@ -8,7 +8,7 @@
 
 #include "tests/core/robot/robot_test_model.h"
 
-namespace topay::mapper {
+namespace topay {
 namespace {
 
 class RobotBodyFilterTest : public ::testing::Test {
@@ -81,4 +81,4 @@ TEST_F(RobotBodyFilterTest, BadMarginsAreRejected) {
 }
 
 }  // namespace
-}  // namespace topay::mapper
+}  // namespace topay

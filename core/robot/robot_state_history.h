@@ -8,7 +8,7 @@
 
 #include "core/robot/whole_body_state.h"
 
-namespace topay::mapper {
+namespace topay {
 
 struct RobotStateHistoryOptions {
   /// States older than this behind the newest are dropped, s. 2 s holds 200 ROBOT_STATEs at
@@ -46,4 +46,4 @@ class RobotStateHistory {
   std::int64_t rejected_ = 0;
 };
 
-}  // namespace topay::mapper
+}  // namespace topay
