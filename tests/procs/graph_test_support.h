@@ -57,7 +57,7 @@ inline bool EnterTestNamespace(std::string* why) {
 /// A fresh folder under the build tree for one test's files: test_out/procs/<Suite.Test>/<name>
 /// (per test, as ctest runs the tests of a file in parallel).
 inline std::string TestDir(const std::string& name) {
-  const testing::TestInfo* info = testing::UnitTest::GetInstance()->current_test_info();
+  const ::testing::TestInfo* info = ::testing::UnitTest::GetInstance()->current_test_info();
   const std::string test = info != nullptr ? std::string(info->test_suite_name()) + "." + info->name() : "none";
   const std::filesystem::path dir = std::filesystem::path(TOPAY_BINARY_DIR) / "test_out" / "procs" / test / name;
   std::filesystem::remove_all(dir);

@@ -24,6 +24,7 @@
 #include <optional>
 #include <memory>
 
+#include "tests/common/real_time_skip.h"
 #include "core/common/angles.h"
 #include "drivers/can/candump_log.h"
 #include "procs/runtime/process_loop.h"
@@ -60,7 +61,7 @@ Eigen::VectorXd Joints(const robot_state_t& s) {
 }
 
 // The graph of the test: its processes and what they published.
-class CanLoopGraph : public testing::Test {
+class CanLoopGraph : public ::testing::Test {
  protected:
   void StartGraph() {
     dir_ = TestDir("can_loop");
@@ -194,6 +195,7 @@ class CanLoopGraph : public testing::Test {
 };
 
 TEST_F(CanLoopGraph, TheTrackerDrivesThePlantThroughCanFaultsStopItAndItRecovers) {
+  TOPAY_SKIP_REAL_TIME_LOOP_IN_SLOW_BUILD();
   std::string why;
   if (!EnterTestNamespace(&why)) GTEST_SKIP() << why;
   StartGraph();

@@ -14,6 +14,7 @@
 #include <optional>
 
 #include "graph_test_support.h"
+#include "tests/common/real_time_skip.h"
 #include "core/common/random.h"
 #include "core/io/robot_loader.h"
 #include "core/robot/kinematics.h"
@@ -55,9 +56,10 @@ std::string GotoStep(const Kinematics& kinematics, const WholeBodyState& state, 
       state.x_m, state.y_m, state.yaw_rad, q_rad);
 }
 
-class MissionGraph : public testing::Test {
+class MissionGraph : public ::testing::Test {
  protected:
   void SetUp() override {
+    TOPAY_SKIP_REAL_TIME_LOOP_IN_SLOW_BUILD();
     std::string why;
     if (!EnterTestNamespace(&why)) GTEST_SKIP() << why;
     dir_ = TestDir("graph");

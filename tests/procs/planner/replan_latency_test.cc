@@ -33,6 +33,7 @@
 #include <sstream>
 
 #include "graph_test_support.h"
+#include "tests/common/real_time_skip.h"
 #include "tests/procs/planner/unseen_room.h"
 #include "core/collision/scene_clearance.h"
 #include "core/geometry/oriented_box.h"
@@ -292,9 +293,10 @@ struct Listener {
 
 // ---- the benchmark -------------------------------------------------------------------------
 
-class ReplanLatency : public testing::Test {
+class ReplanLatency : public ::testing::Test {
  protected:
   void SetUp() override {
+    TOPAY_SKIP_REAL_TIME_LOOP_IN_SLOW_BUILD();
     std::string why;
     if (!EnterTestNamespace(&why)) GTEST_SKIP() << why;
     dir_ = TestDir("graph");

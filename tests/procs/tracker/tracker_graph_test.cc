@@ -171,6 +171,7 @@ heartbeat_t PlannerHeartbeat(std::int32_t pid, std::int64_t seq) {
 // the tracker reports HELD within two cycles, commands a stop within the limits, and the robot
 // (the simulated plant) comes to rest; then the tracker is IDLE and no contact was seen.
 TEST(TrackerGraph, APlannerRestartBrakesTheRobotOffTheDeadPlannersTrajectory) {
+  TOPAY_SKIP_REAL_TIME_LOOP_IN_SLOW_BUILD();
   std::string why;
   if (!EnterTestNamespace(&why)) GTEST_SKIP() << why;
   const std::string dir = TestDir("tracker_graph_planner_restart");

@@ -14,6 +14,7 @@
 #include "core/common/angles.h"
 #include "core/io/robot_loader.h"
 #include "tracker_test_trajectory.h"
+#include "tests/common/sanitizer_build.h"
 #include "procs/msgs/convert_robot_state.h"
 #include "procs/runtime/process_loop.h"
 #include "topay/heartbeat_t.hpp"
@@ -31,7 +32,13 @@ const RobotModel& Robot() {
   return model;
 }
 
-TrackerOptions Options() { return LoadTrackerOptions(std::string(TOPAY_SOURCE_DIR) + "/config/tracker/tracker.yaml"); }
+// The shipped options, the solve budget scaled by the build's slowdown (these tests check what
+// the node does, not how fast: an over-budget solve falls back, and under ASan every one did).
+TrackerOptions Options() {
+  TrackerOptions o = LoadTrackerOptions(std::string(TOPAY_SOURCE_DIR) + "/config/tracker/tracker.yaml");
+  o.nmpc.time_budget_s *= topay::testing::kBuildSlowdown;
+  return o;
+}
 
 WholeBodyState Start() {
   WholeBodyState s;
