@@ -25,6 +25,7 @@
 #include "core/control/protective_field.h"
 #include "core/io/robot_loader.h"
 #include "core/robot/kinematics.h"
+#include "procs/sim/sim_messages.h"
 #include "procs/tracker/field_scan_intake.h"
 #include "sim/lidar/lidar_scanner.h"
 #include "sim/scenes/benchmark_scene.h"
@@ -58,19 +59,8 @@ struct Scans {
     scanner.SetWorld(scene.boxes);
     for (std::size_t k = 0; k < states.size(); ++k) {
       const sim::LidarScan scan = scanner.Scan(states[k], 0.0);
-      point_cloud_t msg{};
-      msg.utime = kT0 + static_cast<std::int64_t>(k) * 100'000;
-      msg.sensor_frame = "lidar";
-      const Eigen::Vector3d p_WS = scan.X_WS.translation();
-      const Eigen::Quaterniond q_WS(scan.X_WS.rotation());
-      for (int i = 0; i < 3; ++i) msg.p_WS[i] = p_WS[i];
-      msg.quat_WS[0] = q_WS.w();
-      msg.quat_WS[1] = q_WS.x();
-      msg.quat_WS[2] = q_WS.y();
-      msg.quat_WS[3] = q_WS.z();
-      for (const Eigen::Vector3f& p : scan.p_SP) msg.p_SP.insert(msg.p_SP.end(), {p.x(), p.y(), p.z()});
-      msg.num_coords = static_cast<std::int32_t>(msg.p_SP.size());
-      messages.push_back(std::move(msg));
+      messages.push_back(simproc::ToPointCloud({scan.t_s, scan.X_WS, scan.p_SP},
+                                               kT0 + static_cast<std::int64_t>(k) * 100'000, "lidar"));
     }
   }
 };

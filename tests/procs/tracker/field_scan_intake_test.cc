@@ -12,6 +12,7 @@
 #include <Eigen/Geometry>
 
 #include "core/io/robot_loader.h"
+#include "procs/sim/sim_messages.h"
 #include "core/geometry/oriented_box.h"
 #include "sim/lidar/lidar_scanner.h"
 
@@ -41,19 +42,7 @@ class FieldScanIntakeTest : public ::testing::Test {
     sim::LidarScanner scanner(sim::LidarOptions{}, kinematics_, 7);
     scanner.SetWorld({box_});
     *scan_out = scanner.Scan(state_, 0.0);
-    point_cloud_t msg{};
-    msg.utime = kT0;
-    msg.sensor_frame = "lidar";
-    const Eigen::Vector3d p_WS = scan_out->X_WS.translation();
-    const Eigen::Quaterniond q_WS(scan_out->X_WS.rotation());
-    for (int i = 0; i < 3; ++i) msg.p_WS[i] = p_WS[i];
-    msg.quat_WS[0] = q_WS.w();
-    msg.quat_WS[1] = q_WS.x();
-    msg.quat_WS[2] = q_WS.y();
-    msg.quat_WS[3] = q_WS.z();
-    for (const Eigen::Vector3f& p : scan_out->p_SP) msg.p_SP.insert(msg.p_SP.end(), {p.x(), p.y(), p.z()});
-    msg.num_coords = static_cast<std::int32_t>(msg.p_SP.size());
-    return msg;
+    return simproc::ToPointCloud({scan_out->t_s, scan_out->X_WS, scan_out->p_SP}, kT0, "lidar");
   }
 
   RobotModel model_;

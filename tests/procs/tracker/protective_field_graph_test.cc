@@ -96,10 +96,16 @@ BoxRun RunBoxAhead(bool field_on) {
   return run;
 }
 
-TEST(ProtectiveFieldGraph, ABoxAppearingOnThePathWithNoMapIsStoppedShortOf) {
-  TOPAY_SKIP_REAL_TIME_LOOP_IN_SLOW_BUILD();
-  std::string why;
-  if (!EnterTestNamespace(&why)) GTEST_SKIP() << why;
+class ProtectiveFieldGraph : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    TOPAY_SKIP_REAL_TIME_LOOP_IN_SLOW_BUILD();
+    std::string why;
+    if (!EnterTestNamespace(&why)) GTEST_SKIP() << why;
+  }
+};
+
+TEST_F(ProtectiveFieldGraph, ABoxAppearingOnThePathWithNoMapIsStoppedShortOf) {
   const BoxRun run = RunBoxAhead(true);
   ASSERT_TRUE(run.ran);
   EXPECT_EQ(run.contacts, 0) << run.tracker_log;
@@ -108,10 +114,7 @@ TEST(ProtectiveFieldGraph, ABoxAppearingOnThePathWithNoMapIsStoppedShortOf) {
   EXPECT_NE(run.tracker_log.find("protective field entered"), std::string::npos) << run.tracker_log;
 }
 
-TEST(ProtectiveFieldGraph, WithTheFieldOffTheSameBoxIsHit) {
-  TOPAY_SKIP_REAL_TIME_LOOP_IN_SLOW_BUILD();
-  std::string why;
-  if (!EnterTestNamespace(&why)) GTEST_SKIP() << why;
+TEST_F(ProtectiveFieldGraph, WithTheFieldOffTheSameBoxIsHit) {
   const BoxRun run = RunBoxAhead(false);
   ASSERT_TRUE(run.ran);
   EXPECT_GT(run.contacts, 0) << "without the field nothing stops the robot before the box";
