@@ -345,16 +345,18 @@ bool TrackerNode::FieldEntered(std::int64_t now_utime) {
   const double speed_mps = std::max(std::abs(state_->v_mps), std::abs(cycle_.command.v_mps));
   const double v_max = base_limits_.v_max_mps;
   const ProtectiveFieldOptions& o = field_->options();
+  const double now_s = Seconds(now_utime);
+  const double length_m = field_->LengthM(speed_mps);
   // Positions at most step_m apart at v_max; for at most the longest stop plus a second (a
   // reference that turns in place covers no length).
-  BasePathAhead(active_->reference, Seconds(now_utime), field_->LengthM(speed_mps), o.step_m / v_max,
+  BasePathAhead(active_->reference, now_s, length_m, o.step_m / v_max,
                 o.reaction_s + v_max / base_limits_.a_max_mps2 + 1.0, &field_path_, &field_sample_);
-  const ProtectiveFieldCheck check = field_->Check(field_path_, Seconds(now_utime));
+  const ProtectiveFieldCheck check = field_->Check(field_path_, now_s);
   if (!check.entered) return false;
   BrakeOff(&counts_.protective_stops, "obstacle in the protective field, braking",
            fmt::format("protective field entered: {} LiDAR points inside the base's path {:.2f} m ahead (field "
                        "{:.2f} m at {:.2f} m/s), the first at ({:.2f}, {:.2f}, {:.2f}) {:.2f} m along it: braking to a stop",
-                       check.num_inside, check.path_length_m, field_->LengthM(speed_mps), speed_mps,
+                       check.num_inside, check.path_length_m, length_m, speed_mps,
                        check.p_W_first.x(), check.p_W_first.y(), check.p_W_first.z(), check.distance_ahead_m));
   return true;
 }

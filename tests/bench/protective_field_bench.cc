@@ -12,7 +12,6 @@
 // Run (Release build):
 //   build/bin/protective_field_bench
 
-#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <string>
@@ -22,6 +21,7 @@
 
 #include "core/collision/scene_clearance.h"
 #include "core/common/random.h"
+#include "core/common/sample_statistics.h"
 #include "core/control/protective_field.h"
 #include "core/io/robot_loader.h"
 #include "core/robot/kinematics.h"
@@ -70,14 +70,9 @@ const Scans& TheScans() {
   return *scans;
 }
 
-void ReportPercentiles(benchmark::State& state, std::vector<double> ms) {
-  std::sort(ms.begin(), ms.end());
-  const auto at = [&](double q) {
-    const std::size_t rank = static_cast<std::size_t>(std::ceil(q * ms.size()));
-    return ms[std::clamp<std::size_t>(rank, 1, ms.size()) - 1];
-  };
-  state.counters["median_ms"] = at(0.5);
-  state.counters["p95_ms"] = at(0.95);
+void ReportPercentiles(benchmark::State& state, const std::vector<double>& ms) {
+  state.counters["median_ms"] = NearestRankQuantile(ms, 0.5);
+  state.counters["p95_ms"] = NearestRankQuantile(ms, 0.95);
 }
 
 double MsSince(std::chrono::steady_clock::time_point t0) {
