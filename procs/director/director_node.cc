@@ -84,7 +84,7 @@ void DirectorNode::Tick(std::int64_t now_utime) {
     const std::string box = "box " + std::to_string(p.box_id);
     if (StepRunning(p)) {
       p.step_seen = true;
-      if (!placement_.busy() && RobotDriving(p) && now_utime >= next_attempt_utime_) StartPlacement(i, now_utime);
+      if (!placement_.busy() && RobotDriving(p) && now_utime >= p.next_attempt_utime) StartPlacement(i, now_utime);
       status_ = "step " + p.event.during_step + " runs: " + (placement_.busy() ? "checking" : "waiting for") +
                 " a place for " + box;
     } else if (p.step_seen) {
@@ -113,7 +113,7 @@ void DirectorNode::TakePlacement(std::int64_t now_utime) {
   Pending& p = pending_[result->tag.event_index];
   if (p.done) return;  // its step ended meanwhile
   if (!result->box) {
-    next_attempt_utime_ = now_utime + static_cast<std::int64_t>(options_.retry_period_s * 1e6);
+    p.next_attempt_utime = now_utime + static_cast<std::int64_t>(options_.retry_period_s * 1e6);
     return;
   }
   // The robot drove on while the room was checked: the box again against where it is now.

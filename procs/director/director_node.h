@@ -64,6 +64,7 @@ class DirectorNode {
     int box_id = 0;
     bool step_seen = false;
     bool done = false;
+    std::int64_t next_attempt_utime = 0;  // after an attempt for this event whose draws were all rejected
   };
   bool StepRunning(const Pending& p) const;
   bool RobotDriving(const Pending& p) const;
@@ -86,7 +87,6 @@ class DirectorNode {
   double speed_mps_ = 0.0;
   int boxes_placed_ = 0;
   int given_up_ = 0;
-  std::int64_t next_attempt_utime_ = 0;  // after an attempt whose draws were all rejected
   std::string status_ = "waiting for the mission";
   BackgroundPlacement placement_;  // last: its destructor waits for a running attempt
 };

@@ -2,7 +2,8 @@
 // (MapperNode::On*): the robot state read (msgs::FromMessage) into the state history, the cloud
 // checked (CheckCloud) and integrated (ScanMapper::Integrate: the PCL scan filter with the
 // self filter at the interpolated state, then the occupancy map's ray casting), on the shipped
-// options and robot. Checked: refusals say why; every voxel change lies inside the map.
+// options and robot, but with 0.1 m voxels: the room's map then has 8 times fewer voxels, and
+// allocating the shipped 5 million per input was 70 % of an input's time. Checked: refusals say why; every voxel change lies inside the map.
 // Input: subscriber_fuzz.h, 2 channels (ticks are ignored); at most 8 clouds per input.
 #include <cstdint>
 #include <string>
@@ -19,7 +20,11 @@
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   using namespace topay;
   using namespace topay::fuzz;
-  static const mapper::MapperOptions options = mapper::LoadMapperOptions(ShippedConfig("mapper/mapper.yaml"));
+  static const mapper::MapperOptions options = [] {
+    mapper::MapperOptions shipped = mapper::LoadMapperOptions(ShippedConfig("mapper/mapper.yaml"));
+    shipped.map.resolution_m = 0.1;
+    return shipped;
+  }();
   static const Kinematics kinematics(ShippedRobotModel());
   mapper::ScanMapper scan_mapper(options.filter, options.map, kinematics);
   RobotStateHistory history(options.robot_state);

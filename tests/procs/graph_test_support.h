@@ -72,10 +72,14 @@ inline std::string ReadText(const std::string& path) {
   return std::string(std::istreambuf_iterator<char>(file), {});
 }
 
-/// Starts `program args...` with stdout and stderr into `output_path`; returns its pid.
+/// Starts `program args...` with stdout and stderr into `output_path`; returns its pid. The child
+/// is killed when the test process ends, however it ends (PR_SET_PDEATHSIG).
 inline pid_t Spawn(const std::vector<std::string>& argv, const std::string& output_path) {
+  const pid_t test_pid = getpid();
   const pid_t pid = fork();
   if (pid == 0) {
+    prctl(PR_SET_PDEATHSIG, SIGKILL);
+    if (getppid() != test_pid) _exit(127);  // the test process ended before the line above
     const int fd = ::open(output_path.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
     dup2(fd, 1);
     dup2(fd, 2);
@@ -108,6 +112,22 @@ inline void StopProcesses(const std::vector<pid_t>& pids) {
     }
   }
 }
+
+/// Stops its processes (StopProcesses) when it goes out of scope: a test that fails an ASSERT
+/// between starting and stopping them leaves nothing running into the next test.
+class ProcessGuard {
+ public:
+  explicit ProcessGuard(std::vector<pid_t> pids = {}) : pids_(std::move(pids)) {}
+  ProcessGuard(ProcessGuard&& other) noexcept : pids_(std::move(other.pids_)) { other.pids_.clear(); }
+  ProcessGuard(const ProcessGuard&) = delete;
+  ProcessGuard& operator=(const ProcessGuard&) = delete;
+  ProcessGuard& operator=(ProcessGuard&&) = delete;
+  ~ProcessGuard() { StopProcesses(pids_); }
+  void Add(pid_t pid) { pids_.push_back(pid); }
+
+ private:
+  std::vector<pid_t> pids_;
+};
 
 /// Reaps every exited child of this (subreaper) process, orphans included. Call it only after
 /// waiting for the children whose status matters (it would take theirs too).

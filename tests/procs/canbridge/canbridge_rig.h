@@ -13,8 +13,12 @@
 namespace topay::canbridge::test {
 
 inline RobotModel ShippedRobot() {
-  const std::string dir = std::string(TOPAY_SOURCE_DIR) + "/config/robot/";
-  return LoadRobotModel(dir + "topay_mm.urdf", dir + "topay_mm.yaml");
+  // Parsed once per process (the fuzz target builds a rig per input); each rig gets a copy.
+  static const RobotModel model = [] {
+    const std::string dir = std::string(TOPAY_SOURCE_DIR) + "/config/robot/";
+    return LoadRobotModel(dir + "topay_mm.urdf", dir + "topay_mm.yaml");
+  }();
+  return model;
 }
 
 struct Rig {

@@ -90,33 +90,9 @@ class SentFrameLimits {
   /// "" when `frame`, sent at now_s in `state`, keeps the envelope; else what it breaks.
   std::string Check(const can::CanFrame& frame, double now_s, BridgeState state) {
     ++frames_by_state_[state];
-    const std::string what = can::ToString(frame) + " at " + std::to_string(now_s) + " s in " + ToString(state);
-    if (!can::CheckCanFrame(frame).empty() || frame.error || frame.remote || frame.extended) {
-      return what + ": not a valid standard data frame";
-    }
-    const bool stale = last_valid_command_s_ && now_s - *last_valid_command_s_ >= options_.command_timeout_s - 1e-9;
-    if (frame.id == base::FrameId(base::BaseFrameKind::kVelocityCommand, base_node_)) {
-      return Prefixed(what, CheckBaseVelocity(frame, now_s, state, stale));
-    }
-    if (const auto it = rpdo1_channel_.find(frame.id); it != rpdo1_channel_.end()) {
-      return Prefixed(what, CheckRpdo1(frame, &channels_[it->second], now_s, state, stale));
-    }
-    if (frame.id == base::FrameId(base::BaseFrameKind::kModeRequest, base_node_)) {
-      return Prefixed(what, base::DecodeModeRequest(frame, base_node_, nullptr) ? "" : "a malformed mode request");
-    }
-    if (std::find(sdo_request_ids_.begin(), sdo_request_ids_.end(), frame.id) != sdo_request_ids_.end()) {
-      return Prefixed(what, canopen::DecodeSdoClientRequest(frame, nullptr) ? "" : "a malformed SDO request");
-    }
-    if (frame.id == CobId(canopen::CanopenFunction::kNmt, 0)) {
-      return Prefixed(what, canopen::DecodeNmt(frame, nullptr) ? "" : "a malformed NMT command");
-    }
-    if (frame.id == CobId(canopen::CanopenFunction::kSync, 0)) {
-      return Prefixed(what, canopen::DecodeSync(frame, nullptr) ? "" : "a malformed SYNC");
-    }
-    if (frame.id == CobId(canopen::CanopenFunction::kHeartbeat, options_.drives.startup.host_node_id)) {
-      return Prefixed(what, canopen::DecodeHeartbeat(frame, nullptr) ? "" : "a malformed heartbeat");
-    }
-    return what + ": an id the bridge has no business sending";
+    const std::string problem = Problem(frame, now_s, state);
+    if (problem.empty()) return "";  // the frame's description only for a failure: this runs on every frame
+    return can::ToString(frame) + " at " + std::to_string(now_s) + " s in " + ToString(state) + ": " + problem;
   }
 
   /// Frames checked in `state`.
@@ -130,6 +106,36 @@ class SentFrameLimits {
   std::int64_t stops_seen() const { return stops_seen_; }
 
  private:
+  // "" when the frame keeps the envelope; else what it breaks.
+  std::string Problem(const can::CanFrame& frame, double now_s, BridgeState state) {
+    if (!can::CheckCanFrame(frame).empty() || frame.error || frame.remote || frame.extended) {
+      return "not a valid standard data frame";
+    }
+    const bool stale = last_valid_command_s_ && now_s - *last_valid_command_s_ >= options_.command_timeout_s - 1e-9;
+    if (frame.id == base::FrameId(base::BaseFrameKind::kVelocityCommand, base_node_)) {
+      return CheckBaseVelocity(frame, now_s, state, stale);
+    }
+    if (const auto it = rpdo1_channel_.find(frame.id); it != rpdo1_channel_.end()) {
+      return CheckRpdo1(frame, &channels_[it->second], now_s, state, stale);
+    }
+    if (frame.id == base::FrameId(base::BaseFrameKind::kModeRequest, base_node_)) {
+      return base::DecodeModeRequest(frame, base_node_, nullptr) ? "" : "a malformed mode request";
+    }
+    if (std::find(sdo_request_ids_.begin(), sdo_request_ids_.end(), frame.id) != sdo_request_ids_.end()) {
+      return canopen::DecodeSdoClientRequest(frame, nullptr) ? "" : "a malformed SDO request";
+    }
+    if (frame.id == CobId(canopen::CanopenFunction::kNmt, 0)) {
+      return canopen::DecodeNmt(frame, nullptr) ? "" : "a malformed NMT command";
+    }
+    if (frame.id == CobId(canopen::CanopenFunction::kSync, 0)) {
+      return canopen::DecodeSync(frame, nullptr) ? "" : "a malformed SYNC";
+    }
+    if (frame.id == CobId(canopen::CanopenFunction::kHeartbeat, options_.drives.startup.host_node_id)) {
+      return canopen::DecodeHeartbeat(frame, nullptr) ? "" : "a malformed heartbeat";
+    }
+    return "an id the bridge has no business sending";
+  }
+
   struct Channel {
     std::string name;
     double max_abs = 0.0;
@@ -152,10 +158,6 @@ class SentFrameLimits {
     const auto id = canopen::CobIdOf(function, node, nullptr);
     if (!id) throw std::invalid_argument("SentFrameLimits: node id " + std::to_string(node));
     return *id;
-  }
-
-  static std::string Prefixed(const std::string& what, const std::string& problem) {
-    return problem.empty() ? "" : what + ": " + problem;
   }
 
   // The value of one raw unit of v and omega, from the protocol's decoder.

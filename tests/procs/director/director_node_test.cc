@@ -176,6 +176,29 @@ TEST_F(DirectorNodeTest, AnAttemptWithEveryDrawRejectedIsTriedAgainOnlyAfterTheR
   EXPECT_EQ(node.boxes_placed(), 0);
 }
 
+TEST_F(DirectorNodeTest, TheRetryPeriodOfOneEventDoesNotDelayTheNext) {
+  options_.retry_period_s = 10.0;
+  options_.events[0].box.min_robot_distance_m = 50.0;  // the first event's draws are all rejected
+  BoxOnRouteEvent second;
+  second.during_step = "pickup";
+  options_.events.push_back(second);
+  DirectorNode node = MakeNode();
+  DriveInTheStep(&node, 1.0);
+  ASSERT_TRUE(node.placing());
+  node.WaitForPlacement();
+  node.Tick(At(1.2));  // the first event's attempt failed: it would be tried again at 11.2 s
+  EXPECT_FALSE(node.placing());
+  node.OnMissionStatus(Status(mission_status_t::RUNNING, "goto pickup"));
+  node.Tick(At(1.3));  // the drop-off step has ended: the first event is given up
+  EXPECT_EQ(node.events_given_up(), 1);
+  node.Tick(At(1.4));
+  EXPECT_TRUE(node.placing()) << "the second event waited for the first one's retry period";
+  node.WaitForPlacement();
+  node.Tick(At(1.5));
+  ASSERT_EQ(events_.size(), 1u);
+  EXPECT_EQ(node.boxes_placed(), 1);
+}
+
 TEST_F(DirectorNodeTest, AStepThatEndsWhileTheAttemptRunsDropsItsBox) {
   DirectorNode node = MakeNode();
   DriveInTheStep(&node, 1.0);

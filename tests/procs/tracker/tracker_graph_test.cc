@@ -51,6 +51,7 @@ Eigen::VectorXd JointChange() {
 // `dir`; returns once both heartbeat and the robot's state and the tracker's status come.
 struct SimAndTracker {
   pid_t sim = 0, tracker = 0;
+  ProcessGuard guard;  // both stopped on every way out of the test (an ASSERT before StopSimAndTracker)
 };
 SimAndTracker StartSimAndTracker(const std::string& dir, HeartbeatWatcher* watcher, Received* rx) {
   WriteText(dir + "/empty.json", R"({"boxes": [{"center": [30, 30, 0.5], "size": [1, 1, 1], "yaw": 0}]})");
@@ -64,6 +65,8 @@ SimAndTracker StartSimAndTracker(const std::string& dir, HeartbeatWatcher* watch
                 dir + "/sim.txt");
   p.tracker = Spawn({BinDir() + "/topay-tracker", "--config", config + "/tracker/tracker.yaml", "--name", "tracker"},
                     dir + "/tracker.txt");
+  p.guard.Add(p.sim);
+  p.guard.Add(p.tracker);
   watcher->lcm().subscribe(std::string(channels::ROBOT_STATE), &Received::OnState, rx);
   watcher->lcm().subscribe(std::string(channels::TRACKER_STATUS), &Received::OnStatus, rx);
   watcher->lcm().subscribe(std::string(channels::SIM_STATUS), &Received::OnSim, rx);
