@@ -33,6 +33,7 @@ class RobotStateHistory {
   /// The state at utime, or nullopt if the buffer is empty or no state lies within max_gap_s.
   std::optional<WholeBodyState> At(std::int64_t utime) const;
 
+  const RobotStateHistoryOptions& options() const { return options_; }
   std::size_t size() const { return states_.size(); }
   std::int64_t rejected() const { return rejected_; }
 

@@ -12,8 +12,12 @@ constexpr int kNiceIncrement = 10;
 
 }  // namespace
 
-ScanWorker::ScanWorker(std::unique_ptr<ScanSensor> sensor, std::function<void(ScanResult&&)> on_done)
-    : sensor_(std::move(sensor)), on_done_(std::move(on_done)), thread_([this] { Run(); }) {}
+ScanWorker::ScanWorker(std::unique_ptr<ScanSensor> sensor, std::function<void(ScanResult&&)> on_done,
+                       bool latest_scan_only)
+    : sensor_(std::move(sensor)),
+      on_done_(std::move(on_done)),
+      latest_scan_only_(latest_scan_only),
+      thread_([this] { Run(); }) {}
 
 ScanWorker::~ScanWorker() {
   {
@@ -35,6 +39,12 @@ void ScanWorker::SetWorld(std::vector<OrientedBox> boxes) {
 void ScanWorker::Request(const WholeBodyState& state, double t_s) {
   {
     std::lock_guard lock(mutex_);
+    if (latest_scan_only_) {
+      const auto waiting = [](const Job& job) { return std::holds_alternative<ScanJob>(job); };
+      const std::size_t before = jobs_.size();
+      std::erase_if(jobs_, waiting);
+      dropped_ += static_cast<std::int64_t>(before - jobs_.size());
+    }
     jobs_.emplace_back(ScanJob{state, t_s});
   }
   wake_.notify_one();
@@ -55,6 +65,11 @@ void ScanWorker::Drain() {
 int ScanWorker::backlog() const {
   std::lock_guard lock(mutex_);
   return static_cast<int>(jobs_.size()) + running_;
+}
+
+std::int64_t ScanWorker::dropped() const {
+  std::lock_guard lock(mutex_);
+  return dropped_;
 }
 
 void ScanWorker::Run() {

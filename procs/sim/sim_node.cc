@@ -30,7 +30,8 @@ SimNode::SimNode(procs::ProcessLoop* loop, SimCore* core, const SimNodeOptions& 
     cloud_lcm_ = std::make_unique<lcm::LCM>(loop_->options().lcm_url);
     std::function<void(ScanResult&&)> publish;
     if (cloud_lcm_->good()) publish = [this](ScanResult&& scan) { OnScan(scan); };
-    scan_worker_ = std::make_unique<ScanWorker>(core_->ReleaseScanSensor(), std::move(publish));
+    // In real time a scan thread that falls behind skips scans rather than queueing them.
+    scan_worker_ = std::make_unique<ScanWorker>(core_->ReleaseScanSensor(), std::move(publish), options.rate > 0.0);
   }
   loop_->Subscribe<control_command_t>(std::string(channels::CONTROL_COMMAND),
                                       [this](const control_command_t& msg) { OnCommand(msg); });
@@ -176,6 +177,19 @@ void SimNode::OnScan(const ScanResult& scan) {
   ++scans_published_;
 }
 
+std::int64_t SimNode::ScansDropped() const { return scan_worker_ ? scan_worker_->dropped() : 0; }
+
+void SimNode::ReportDroppedScans() {
+  const std::int64_t dropped = ScansDropped();
+  if (dropped == scans_dropped_reported_) return;
+  scans_dropped_reported_ = dropped;
+  if (Every(++scan_drop_reports_)) {
+    spdlog::warn("the LiDAR thread fell behind (a loaded machine): {} scans dropped unscanned in all, so that the "
+                 "published ones stay at most a scan time late",
+                 dropped);
+  }
+}
+
 void SimNode::OnScanDue(const WholeBodyState& state, double t_s) { scan_worker_->Request(state, t_s); }
 
 void SimNode::OnWorldChanged(const std::vector<OrientedBox>& boxes) { scan_worker_->SetWorld(boxes); }
@@ -226,7 +240,8 @@ void SimNode::OnStatusTimer() {
     s.max_depth_m = c.max_depth_m;
     s.in_contact = monitor->active() > 0;
   }
-  s.scans = core_->counts().scans;
+  s.scans = core_->counts().scans - ScansDropped();
+  ReportDroppedScans();
   s.events_applied = core_->counts().events_applied;
   s.boxes_present = core_->world().num_present();
   last_status_ = s;
@@ -276,12 +291,12 @@ std::string SimNode::FinalReport() const {
       "final: sim time {:.3f} s in {:.3f} s wall (real-time factor {:.3f}, target {}), plant steps {}\n"
       "final: step lateness p50 {:.0f} us, p99 {:.0f} us, max {:.0f} us over {} steps; late steps (> 1 period) {}, "
       "schedule resets {}\n"
-      "final: commands {} accepted / {} rejected / {} timeouts, scans {} requested / {} published, events {} "
-      "applied / {} failed / {} bad SIM_EVENT",
+      "final: commands {} accepted / {} rejected / {} timeouts, scans {} requested / {} published / {} dropped "
+      "(the scan thread behind), events {} applied / {} failed / {} bad SIM_EVENT",
       core_->time_s(), wall_s, started_ ? (core_->time_s() - started_sim_s_) / wall_s : 0.0, options_.rate,
       plant.steps, lateness.p50_us, lateness.p99_us, lateness.max_us, lateness.count, pacer_.late_steps(),
       pacer_.schedule_resets(), plant.commands_accepted, plant.commands_rejected, plant.command_timeouts,
-      core_->counts().scans, scans_published_.load(), core_->counts().events_applied, core_->counts().events_failed,
+      core_->counts().scans, scans_published_.load(), ScansDropped(), core_->counts().events_applied, core_->counts().events_failed,
       bad_events_);
   if (follower_) text += "\nfinal: " + FollowReport();
   if (options_.actuator_input) {

@@ -70,6 +70,8 @@ class SimNode : public SimListener {
   /// Runs the steps due; returns when the next one is due.
   RealTimePacer::Clock::time_point OnPlantTimer();
   void OnStatusTimer();
+  std::int64_t ScansDropped() const;
+  void ReportDroppedScans();  // a warning when the scan thread dropped scans since the last one
   /// The plant's checkpoint (options_.checkpoint_file), if one is kept.
   void WriteCheckpoint(std::int64_t utime);
   /// One plant step: to the follower's state at the step's time (follow), else Step.
@@ -103,6 +105,8 @@ class SimNode : public SimListener {
   std::int64_t plant_states_published_ = 0;
   std::atomic<std::int64_t> scans_published_{0};
   std::int64_t checkpoint_failures_ = 0;
+  std::int64_t scans_dropped_reported_ = 0;  // the scan thread's drops at the last warning
+  std::int64_t scan_drop_reports_ = 0;
   // Status period bookkeeping.
   RealTimePacer::Clock::time_point last_status_wall_{};
   double last_status_sim_s_ = 0.0;

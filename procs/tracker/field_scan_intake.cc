@@ -19,7 +19,7 @@ std::optional<std::string> FieldScanIntake::Take(const point_cloud_t& msg, std::
   if (!state) {
     return fmt::format("no robot state within {:.2f} s of the scan's capture time: its points cannot be told "
                        "from the robot's own",
-                       RobotStateHistoryOptions{}.max_gap_s);
+                       history_.options().max_gap_s);
   }
   if (state->num_joints() != kinematics_.num_joints()) {
     return fmt::format("robot state with {} joints, the model has {}", state->num_joints(), kinematics_.num_joints());

@@ -92,7 +92,7 @@ std::vector<FaultSpec> LcmFaults() {
 }
 
 std::vector<FaultSpec> GoalFaults() {
-  return {
+  std::vector<FaultSpec> faults = {
       Make("goal-nan", FaultFamily::kGoal, "a GOAL with a NaN position", "refused with a reason; the mission goes on",
            0.0, false),
       Make("goal-unreachable", FaultFamily::kGoal, "a GOAL 100 m outside the room",
@@ -104,6 +104,8 @@ std::vector<FaultSpec> GoalFaults() {
       Make("goal-every-50ms", FaultFamily::kGoal, "for 5 s a new random GOAL in the room every 50 ms",
            "the planner supersedes plans safely; the mission's goal is taken up again", 5.0, false),
   };
+  for (FaultSpec& f : faults) f.refusal_expected = f.name != "goal-every-50ms";
+  return faults;
 }
 
 }  // namespace

@@ -31,6 +31,9 @@ struct FaultSpec {
   bool from_last_command = false;
   bool ends_mission = false;   ///< the mission cannot go on (kill of the mission process)
   bool operator_reset = false; ///< needs FAULT_RESET on DRIVE_COMMAND (sent by the tool, as an operator)
+  /// The planner must fail the tool's goal with a reason (PLANNER_STATUS FAILED): no recovery
+  /// counts before it has (on a loaded machine the robot may drive on before the status comes).
+  bool refusal_expected = false;
 };
 
 /// Every fault, in the order of the report.

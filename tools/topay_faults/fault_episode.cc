@@ -172,6 +172,7 @@ bool FaultEpisode::Recovered(const GraphView& view) {
     AddReaction("planner: " + view.planner_failure);
     planner_failure_noted_ = true;
   }
+  if (fault_.refusal_expected && !planner_failure_noted_) return false;  // its reaction has not come yet
   if (view.mission_state == mission_status_t::SUCCEEDED) return true;
   if (fault_.stop_expected && result_.safe_ms < 0.0) return false;  // no recovery before the stop
   // Moving again after the fault was cleared and after the stop it caused, if it caused one.

@@ -18,9 +18,11 @@
 #include "tools/topay_faults/fault_episode.h"
 #include "topay/control_command_t.hpp"
 #include "topay/drive_status_t.hpp"
+#include "topay/goal_t.hpp"
 #include "topay/heartbeat_t.hpp"
 #include "topay/mission_status_t.hpp"
 #include "topay/motorsim_fault_t.hpp"
+#include "topay/planner_status_t.hpp"
 #include "topay/tracker_status_t.hpp"
 
 namespace topay::tools {
@@ -229,6 +231,47 @@ TEST_F(FaultEpisodeTest, AKillIsTimedFromTheLastCommandAndTheRestartIsSeen) {
   EXPECT_NE(r.reaction.find("restarted as pid " + std::to_string(second)), std::string::npos) << r.reaction;
   EXPECT_EQ(r.other_restarts, 0) << r.reaction;
   if (second > 0) kill(second, SIGKILL), waitpid(second, nullptr, 0);
+}
+
+// A refused goal stops nothing, so the robot "moves again" at once; the episode must still wait
+// for the planner's refusal (it came late under load once, and the episode had ended without it).
+TEST_F(FaultEpisodeTest, ARefusedGoalRecoversOnlyOnceThePlannerHasSaidWhy) {
+  GraphMonitor monitor(kUrl);
+  FaultInjector injector(InjectorOptions(), &monitor);
+  PlayedGraph graph(false);
+  lcm::LCM listener(kUrl);
+  struct GoalSeen {
+    std::mutex mutex;
+    std::optional<Clock::time_point> at;
+    std::int64_t id = 0;
+    void On(const lcm::ReceiveBuffer*, const std::string&, const goal_t* g) {
+      std::lock_guard<std::mutex> lock(mutex);
+      if (!at) at = Clock::now(), id = g->goal_id;
+    }
+  } goal;
+  listener.subscribe("GOAL", &GoalSeen::On, &goal);
+  std::thread listen([&] {
+    for (int k = 0; k < 500; ++k) listener.handleTimeout(10);
+  });
+  FaultEpisode episode(SelectFaults({"goal-nan"})[0], 3, &injector, getpid(), QuickOptions());
+  bool refused = false;
+  RunEpisode(&episode, &monitor, [&](const GraphView&) {
+    std::lock_guard<std::mutex> lock(goal.mutex);
+    if (refused || !goal.at || SecondsSince(*goal.at) < 1.0) return;
+    planner_status_t status{};  // the planner's answer, 1 s after the goal
+    status.state = planner_status_t::FAILED;
+    status.goal_id = goal.id;
+    status.failure_reason = "bad goal: goal_t.p_WE: not finite";
+    listener.publish("PLANNER_STATUS", &status);
+    refused = true;
+  });
+  listen.join();
+  const EpisodeResult& r = episode.Result();
+  ASSERT_TRUE(r.injected) << r.notes;
+  EXPECT_TRUE(refused);
+  EXPECT_TRUE(r.recovered) << r.reaction;
+  EXPECT_NE(r.reaction.find("planner: bad goal: goal_t.p_WE: not finite"), std::string::npos) << r.reaction;
+  EXPECT_GE(r.recover_s, 1.0) << "recovered before the planner refused the goal";
 }
 
 TEST_F(FaultEpisodeTest, ARobotThatNeverMovesIsNotInjected) {
