@@ -30,6 +30,9 @@ class RealTimePacer {
   std::int64_t late_steps() const { return late_steps_; }
   /// Times the schedule was moved because more than max_catch_up steps were due.
   std::int64_t schedule_resets() const { return resets_; }
+  /// The steps the schedule was moved by in those resets, in all (steps the world did not run:
+  /// it paused while the process stalled).
+  std::int64_t slipped_steps() const { return -offset_steps_; }
   /// Lateness of the steps recorded since the last call, microseconds: p50, p99, max; clears.
   struct Lateness {
     double p50_us = 0.0, p99_us = 0.0, max_us = 0.0;

@@ -68,6 +68,7 @@ RealTimePacer::Clock::time_point SimNode::OnPlantTimer() {
     started_sim_s_ = core_->time_s();
   }
   const int due = pacer_.StepsDue(now, core_->steps() - steps_at_start_);
+  KeepTheWallClock();
   for (int i = 0; i < due; ++i) {
     StepOnce();
     pacer_.RecordStep(RealTimePacer::Clock::now(), core_->steps() - steps_at_start_);
@@ -175,6 +176,21 @@ void SimNode::OnScan(const ScanResult& scan) {
   lcm::LCM& lcm = cloud_lcm_ && cloud_lcm_->good() ? *cloud_lcm_ : loop_->lcm();
   lcm.publish(std::string(channels::POINT_CLOUD), &cloud);
   ++scans_published_;
+}
+
+void SimNode::KeepTheWallClock() {
+  const std::int64_t slipped_us = std::llround(static_cast<double>(pacer_.slipped_steps()) * core_->plant().step_s() * 1e6);
+  if (slipped_us == slipped_us_) return;
+  // The process stalled longer than the pacer catches up: the world paused meanwhile, and its
+  // clock (start + sim time) would stay behind the wall clock the other processes stamp with
+  // for good (the estimator then took every BASE_POSE for too old and held the robot). The
+  // stamps jump forward by the stall instead.
+  start_utime_ += slipped_us - slipped_us_;
+  spdlog::warn("the simulator stalled: {:.3f} s of sim time skipped to keep the wall clock ({:.3f} s in all, {} "
+               "resets); the world paused meanwhile",
+               1e-6 * static_cast<double>(slipped_us - slipped_us_), 1e-6 * static_cast<double>(slipped_us),
+               pacer_.schedule_resets());
+  slipped_us_ = slipped_us;
 }
 
 std::int64_t SimNode::ScansDropped() const { return scan_worker_ ? scan_worker_->dropped() : 0; }

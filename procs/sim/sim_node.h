@@ -70,6 +70,8 @@ class SimNode : public SimListener {
   /// Runs the steps due; returns when the next one is due.
   RealTimePacer::Clock::time_point OnPlantTimer();
   void OnStatusTimer();
+  /// Moves the stamps' origin forward by what the pacer skipped (a stall): the sim's clock stays the wall clock.
+  void KeepTheWallClock();
   std::int64_t ScansDropped() const;
   void ReportDroppedScans();  // a warning when the scan thread dropped scans since the last one
   /// The plant's checkpoint (options_.checkpoint_file), if one is kept.
@@ -95,7 +97,9 @@ class SimNode : public SimListener {
   double started_sim_s_ = 0.0;
   bool started_ = false;
   bool stopping_ = false;
-  std::int64_t start_utime_ = 0;
+  // utime of sim time 0; read by the LiDAR's thread too (its clouds' stamps), moved by KeepTheWallClock.
+  std::atomic<std::int64_t> start_utime_{0};
+  std::int64_t slipped_us_ = 0;  // the pacer's skipped time, already added to start_utime_
   std::int64_t steps_at_start_ = 0;
   std::int64_t bad_events_ = 0;
   std::unique_ptr<TrajectoryFollower> follower_;  // follow mode only

@@ -21,6 +21,7 @@ TEST(RealTimePacer, RunsTheStepsDueAtTheRateAndCapsTheCatchUp) {
   // 1 s late: 500 due, only 50 run, the schedule moves by the rest.
   EXPECT_EQ(pacer.StepsDue(t0 + microseconds(1'010'000), 5), 50);
   EXPECT_EQ(pacer.schedule_resets(), 1);
+  EXPECT_EQ(pacer.slipped_steps(), 450);  // 505 due at 1.01 s, 5 done, 50 run now
   EXPECT_EQ(pacer.StepsDue(t0 + microseconds(1'010'000), 55), 0);
   EXPECT_EQ(pacer.StepsDue(t0 + microseconds(1'012'000), 55), 1);
 }

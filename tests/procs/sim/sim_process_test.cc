@@ -125,6 +125,25 @@ TEST_F(SimProcess, PublishesStateAt100HzAndStatusAt10Hz) {
   EXPECT_NE(ReadText(dir_ + "/out.txt").find("final: sim time"), std::string::npos);
 }
 
+// A stall longer than the pacer catches up (1 s) used to leave the sim's clock behind the wall
+// clock for good: the estimator then took every BASE_POSE for too old and held the robot.
+TEST_F(SimProcess, AfterAStallItsStampsKeepTheWallClock) {
+  watcher_->Spin(0.5);
+  kill(pid_, SIGSTOP);
+  std::this_thread::sleep_for(std::chrono::seconds(3));
+  kill(pid_, SIGCONT);
+  listener_.states.clear();
+  watcher_->Spin(1.5);
+  ASSERT_GT(listener_.states.size(), 2u);
+  for (std::size_t k = 1; k < listener_.states.size(); ++k) {
+    ASSERT_GT(listener_.states[k].utime, listener_.states[k - 1].utime) << "state " << k;
+  }
+  EXPECT_LT(std::abs(listener_.states.back().utime - procs::NowUtime()), 200'000)
+      << "the stamps stayed behind the wall clock after the stall";
+  EXPECT_EQ(Stop(), 0);
+  EXPECT_NE(ReadText(dir_ + "/out.txt").find("the simulator stalled"), std::string::npos) << ReadText(dir_ + "/out.txt");
+}
+
 TEST_F(SimProcess, RejectsANaNCommandAndBrakes) {
   Drive(0.5, 1.5);
   ASSERT_FALSE(listener_.states.empty());
