@@ -10,7 +10,7 @@ namespace {
 
 std::vector<std::uint8_t> Bytes(int n) {
   std::vector<std::uint8_t> bytes(n);
-  for (int i = 0; i < n; ++i) bytes[i] = static_cast<std::uint8_t>((i * i) % 7);
+  for (int i = 0; i < n; ++i) bytes[i] = static_cast<std::uint8_t>((std::int64_t{i} * i) % 7);  // i * i overflows int beyond 46,340
   return bytes;
 }
 
