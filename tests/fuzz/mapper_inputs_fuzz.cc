@@ -3,7 +3,8 @@
 // checked (CheckCloud) and integrated (ScanMapper::Integrate: the PCL scan filter with the
 // self filter at the interpolated state, then the occupancy map's ray casting), on the shipped
 // options and robot, but with 0.1 m voxels: the room's map then has 8 times fewer voxels, and
-// allocating the shipped 5 million per input was 70 % of an input's time. Checked: refusals say why; every voxel change lies inside the map.
+// allocating the shipped 5 million per input was 70 % of an input's time. Checked: refusals
+// say why; every voxel change lies inside the map.
 // Input: subscriber_fuzz.h, 2 channels (ticks are ignored); at most 8 clouds per input.
 #include <cstdint>
 #include <string>

@@ -117,7 +117,7 @@ inline void StopProcesses(const std::vector<pid_t>& pids) {
 /// between starting and stopping them leaves nothing running into the next test.
 class ProcessGuard {
  public:
-  explicit ProcessGuard(std::vector<pid_t> pids = {}) : pids_(std::move(pids)) {}
+  ProcessGuard() = default;
   ProcessGuard(ProcessGuard&& other) noexcept : pids_(std::move(other.pids_)) { other.pids_.clear(); }
   ProcessGuard(const ProcessGuard&) = delete;
   ProcessGuard& operator=(const ProcessGuard&) = delete;
