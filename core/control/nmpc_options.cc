@@ -36,6 +36,7 @@ void NmpcOptions::Check() const {
   CheckOptionPositive(kNmpcOptions, "limit_weight", limit_weight);
   CheckOptionPositive(kNmpcOptions, "stale_state_s", stale_state_s);
   CheckOptionNonNegative(kNmpcOptions, "end_settle_s", end_settle_s);
+  arm_pacing.Check();
 }
 
 }  // namespace topay

@@ -1,5 +1,7 @@
 #pragma once
 
+#include "core/control/arm_pacing.h"
+
 namespace topay {
 
 /// Options of the NMPC tracker (core/control/nmpc_solver.h), Ceres style: every field has a
@@ -41,6 +43,9 @@ struct NmpcOptions {
   // Safe behaviour (core/control/safe_stop.h).
   double stale_state_s = 0.1;  ///< A state older than this -> stop.
   double end_settle_s = 0.5;   ///< Keep tracking the end point this long after the end, then stop.
+
+  /// The arm's reference waits for a base that lags (core/control/arm_pacing.h).
+  ArmPacingOptions arm_pacing;
 
   /// Throws std::invalid_argument naming the first field out of range.
   void Check() const;

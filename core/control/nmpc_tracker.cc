@@ -41,6 +41,7 @@ const TrackerOutput& NmpcTracker::Step(const TrackerInput& input) {
   output_.t_along_s = situation.t_along_s;
   output_.trajectory_id = has_reference ? input.reference->trajectory_id : 0;
   output_.solve_ms = 0.0;
+  output_.arm_lag_s = 0.0;
   if (mode == TrackerMode::kTrack) {
     Track(input);
   } else {
@@ -75,6 +76,10 @@ void NmpcTracker::Track(const TrackerInput& input) {
     solver_.ResetWarmStart();  // continuity comes from the last command's rate terms
     active_id_ = reference.trajectory_id;
   }
+  if (reference.trajectory_id != arm_paced_id_) {  // a new trajectory: the arm on its clock
+    arm_paced_id_ = reference.trajectory_id;
+    arm_time_s_ = -std::numeric_limits<double>::infinity();
+  }
   // Latency compensation: the state when the command will act.
   const double act_time_s = input.now_s + options.latency_s;
   predicted_.x_m = input.state->x_m;
@@ -82,9 +87,19 @@ void NmpcTracker::Track(const TrackerInput& input) {
   predicted_.yaw_rad = input.state->yaw_rad;
   predicted_.q_rad = input.state->q_rad;
   PredictState(history_, options.latency_s, input.state_time_s, act_time_s, &predicted_);
-  SampleReferenceHorizon(reference.sampler, reference.duration_s,
-                         act_time_s - reference.start_time_s, options.step_s, &scratch_,
-                         &horizon_);
+  const double clock_t_s = act_time_s - reference.start_time_s;
+  SampleReferenceHorizon(reference.sampler, reference.duration_s, clock_t_s, options.step_s,
+                         &scratch_, &horizon_);
+  // Arm pacing: while the base lags, the arm holds the configuration of the base's progress
+  // (never back on one trajectory); it moves on only to configurations whose base pose the
+  // robot has reached, within the slack.
+  const double paced_s = ArmPacedTime(reference.sampler, reference.duration_s, clock_t_s,
+                                      predicted_, options.arm_pacing, &scratch_);
+  arm_time_s_ = std::min(clock_t_s, std::max(arm_time_s_, paced_s));
+  output_.arm_lag_s = clock_t_s - arm_time_s_;
+  if (output_.arm_lag_s > 0.0) {
+    HoldArmReference(reference.sampler, reference.duration_s, arm_time_s_, &scratch_, &horizon_);
+  }
   const InputSequence& inputs = solver_.Solve(predicted_, horizon_, last_);
   inputs.CommandAt(0, &output_.command);
   output_.solve_ms = solver_.summary().solve_ms;

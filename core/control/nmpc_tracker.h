@@ -41,6 +41,9 @@ struct TrackerOutput {
   double yaw_error_rad = 0.0;      ///< Wrapped.
   double joint_error_rad = 0.0;    ///< Largest joint error.
   double solve_ms = 0.0;           ///< This cycle's NMPC solve (0 when stopping).
+  /// How far the arm's reference time is behind the clock, waiting for a base that lags (s; 0
+  /// on the clock or when not tracking; NmpcOptions::arm_pacing).
+  double arm_lag_s = 0.0;
 };
 
 /// The tracker's cycle, pure logic around NmpcSolver (the process in procs/tracker calls
@@ -51,7 +54,9 @@ struct TrackerOutput {
 ///      one control period's rate of the last command (no jump);
 ///   3. latency compensation: the measured state is predicted from its time to now +
 ///      latency_s with the commands already sent (PredictState), and the reference is
-///      sampled from that time on;
+///      sampled from that time on; while the base lags its reference by more than the slack,
+///      the arm's reference is held at the configuration of the base's progress (ArmPacedTime,
+///      at most the window behind the clock, never back on one trajectory; HoldArmReference);
 ///   4. the solve; its first input is the command, remembered with its time.
 /// Allocation-free after construction apart from Ceres's own solve and the sampler.
 class NmpcTracker {
@@ -77,6 +82,8 @@ class NmpcTracker {
   CommandHistory history_;
   ControlCommand last_;
   std::int64_t active_id_ = 0;
+  std::int64_t arm_paced_id_ = 0;  ///< The trajectory arm_time_s_ belongs to.
+  double arm_time_s_ = 0.0;        ///< The arm's reference time on it (never back).
   ReferenceHorizon horizon_;
   TrajectorySample scratch_;
   WholeBodyState predicted_;

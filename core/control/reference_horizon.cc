@@ -34,4 +34,11 @@ void SampleReferenceHorizon(const TrajectorySampler& sampler, double duration_s,
   }
 }
 
+void HoldArmReference(const TrajectorySampler& sampler, double duration_s, double arm_t_s,
+                      TrajectorySample* scratch, ReferenceHorizon* horizon) {
+  sampler(std::clamp(arm_t_s, 0.0, duration_s), scratch);
+  horizon->q_rad.colwise() = scratch->state.q_rad;
+  horizon->qd_radps.setZero();
+}
+
 }  // namespace topay

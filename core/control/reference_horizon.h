@@ -27,4 +27,10 @@ struct ReferenceHorizon {
 void SampleReferenceHorizon(const TrajectorySampler& sampler, double duration_s, double t0_s,
                             double step_s, TrajectorySample* scratch, ReferenceHorizon* horizon);
 
+/// Holds the joints of *horizon at the trajectory's joints at arm_t_s (clamped to [0,
+/// duration]) on every node, with zero feed-forward: the arm waiting for a base that lags
+/// (core/control/arm_pacing.h). The base's nodes are left as they are.
+void HoldArmReference(const TrajectorySampler& sampler, double duration_s, double arm_t_s,
+                      TrajectorySample* scratch, ReferenceHorizon* horizon);
+
 }  // namespace topay

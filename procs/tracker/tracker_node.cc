@@ -298,6 +298,7 @@ const TrackerCycle& TrackerNode::Step(std::int64_t now_utime) {
     ++counts_.solves;
     solve_ms_.push_back(out.solve_ms);
   }
+  NoteArmPacing(out);
   const std::int8_t previous = cycle_.status.state;
   Fill(out, now_utime);
   if (out.mode != last_mode_ && out.mode == TrackerMode::kStopStaleState && active_) {
@@ -327,6 +328,19 @@ const TrackerCycle& TrackerNode::Step(std::int64_t now_utime) {
                          out.position_error_m, options_.lost_position_m));
   }
   return cycle_;
+}
+
+void TrackerNode::NoteArmPacing(const TrackerOutput& out) {
+  if (out.arm_lag_s > 0.0) {
+    ++counts_.arm_paced_cycles;
+    if (arm_lag_s_ == 0.0) {
+      ++counts_.arm_pacings;
+      spdlog::debug("trajectory {}: the base lags its reference by {:.2f} m: the arm waits for it",
+                    out.trajectory_id, out.position_error_m);
+    }
+  }
+  arm_lag_s_ = out.arm_lag_s;
+  arm_lag_max_s_ = std::max(arm_lag_max_s_, out.arm_lag_s);
 }
 
 TrackerInput TrackerNode::StateInput(std::int64_t now_utime) {
@@ -446,14 +460,16 @@ std::string TrackerNode::Report() const {
       "(at rest on a stale state), {} trajectories dropped held\n"
       "  trajectories: {} received, {} became active, {} rejected, {} ignored (not newer), {} pending superseded\n"
       "  robot states: {} ({} rejected: {}); gripper commands: {} ({} rejected)\n"
-      "  protective field: {}, {} scans ({} not used), {} stops\n",
+      "  protective field: {}, {} scans ({} not used), {} stops\n"
+      "  arm pacing: {}, {} cycles waiting for the base in {} waits, at most {:.2f} s behind the clock\n",
       c.cycles, c.solves, solve_ms_.empty() ? 0.0 : Median(solve_ms_),
       solve_ms_.empty() ? 0.0 : NearestRankQuantile(solve_ms_, 0.99),
       solve_ms_.empty() ? 0.0 : *std::max_element(solve_ms_.begin(), solve_ms_.end()),
       summary.num_over_budget + summary.num_failed, summary.num_over_budget, summary.num_failed, c.stops_stale,
       c.stops_ended, c.losses, c.jumps, c.unguarded, c.holds, c.stale_holds, c.trajectories_dropped_held, c.trajectories, c.switches, c.trajectories_rejected, c.trajectories_ignored, c.pending_superseded,
       c.states, c.states_rejected, state_intake_.Report(), c.grippers, c.grippers_rejected,
-      field_ ? "on" : "off", c.scans, c.scans_rejected, c.protective_stops);
+      field_ ? "on" : "off", c.scans, c.scans_rejected, c.protective_stops,
+      options_.nmpc.arm_pacing.window_s > 0.0 ? "on" : "off", c.arm_paced_cycles, c.arm_pacings, arm_lag_max_s_);
 }
 
 void ConnectTrackerNode(procs::ProcessLoop* loop, TrackerNode* node, double period_s) {

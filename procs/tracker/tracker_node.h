@@ -99,6 +99,9 @@ struct TrackerCounts {
   std::int64_t scans = 0, scans_rejected = 0;  ///< POINT_CLOUDs taken by the protective field / refused
   /// times the protective field was entered while tracking: dropped, braked, held
   std::int64_t protective_stops = 0;
+  /// cycles whose arm reference waited for a lagging base (NmpcOptions::arm_pacing), and the
+  /// times such a wait began
+  std::int64_t arm_paced_cycles = 0, arm_pacings = 0;
 };
 
 /// One cycle's messages.
@@ -173,6 +176,8 @@ class TrackerNode {
   void CheckJump(const msgs::RobotStateEstimate& next);
   // A trajectory the robot may still be moving on: active and not FINISHED, or pending.
   bool MayMove() const;
+  // Counts the cycles whose arm waited for the base (report).
+  void NoteArmPacing(const TrackerOutput& out);
   TrackerInput StateInput(std::int64_t now_utime);
   // The protective field on the active reference ahead: true if it was entered (braking begun).
   bool FieldEntered(std::int64_t now_utime);
@@ -201,6 +206,7 @@ class TrackerNode {
   std::vector<Eigen::Vector2d> field_path_;    // base positions ahead (W)
   TrajectorySample field_sample_;
   std::vector<double> solve_ms_;
+  double arm_lag_s_ = 0.0, arm_lag_max_s_ = 0.0;  ///< the arm's lag: the last cycle's, the largest
   TrackerCycle cycle_;
   TrackerCounts counts_;
 };

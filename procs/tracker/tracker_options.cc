@@ -10,6 +10,14 @@
 namespace topay::tracker {
 namespace {
 
+void ReadArmPacing(YamlSection s, ArmPacingOptions* o) {
+  s.Read("window_s", &o->window_s);
+  s.Read("slack_m", &o->slack_m);
+  s.Read("yaw_m_per_rad", &o->yaw_m_per_rad);
+  s.Read("resolution_s", &o->resolution_s);
+  s.Finish();
+}
+
 void ReadNmpc(YamlSection s, NmpcOptions* o) {
   s.Read("horizon_steps", &o->horizon_steps);
   s.Read("step_s", &o->step_s);
@@ -30,6 +38,7 @@ void ReadNmpc(YamlSection s, NmpcOptions* o) {
   s.Read("limit_weight", &o->limit_weight);
   s.Read("stale_state_s", &o->stale_state_s);
   s.Read("end_settle_s", &o->end_settle_s);
+  ReadArmPacing(s.Section("arm_pacing"), &o->arm_pacing);
   s.Finish();
   try {
     o->Check();

@@ -7,6 +7,7 @@
 #include <string>
 
 #include "guest_runner.h"
+#include "tests/common/real_time_skip.h"
 
 namespace topay::test {
 namespace {
@@ -36,6 +37,9 @@ TEST(SocketCanGuest, TheSocketCanBusTestsPassOnARealVcan0) {
 // topay-canbridge and topay-motorsim over vcan0 move topay-sim's plant as commanded; candump sees
 // the bridge's frames; an EMCY sent with cansend faults the bridge.
 TEST(SocketCanGuest, BridgeAndMotorsimOverVcan0WithCanUtils) {
+  // The bridge's 100 Hz cycle and the motors' command timeouts in an emulated guest: under
+  // ASan + UBSan (2026-12-06) the robot did not move its 0.3 m.
+  TOPAY_SKIP_REAL_TIME_LOOP_IN_SLOW_BUILD();
   const std::string why = GuestUnavailableReason();
   if (!why.empty()) GTEST_SKIP() << why;
   const std::string out = OutDir("can_over_vcan");

@@ -4,6 +4,8 @@
 #include "core/control/nmpc_tracker.h"
 
 #include <cmath>
+#include <cstdio>
+#include <limits>
 
 #include <gtest/gtest.h>
 
@@ -117,6 +119,89 @@ TEST(NmpcTrackerTest, TracksWithLatencyCompensation) {
   EXPECT_LT(out.yaw_error_rad, 0.01);
   EXPECT_LT(out.joint_error_rad, 0.03);
   EXPECT_GT(out.solve_ms, 0.0);
+  EXPECT_EQ(out.arm_lag_s, 0.0);  // the base keeps up: the arm on the clock
+}
+
+// Cruising straight along x at 0.8 m/s, the joints at 1 rad/s (Cruise), through a disturbed
+// plant; what the arm did.
+enum class Disturbance {
+  // The base cannot move (wheels spinning on the spot; the plant moves only the joints).
+  kStuckBase,
+  // The plant frozen for 0.5 s from 2 s (a simulator that stalls on a loaded machine: no motion
+  // and no new state, so the tracker brakes on the stale state), then running again 0.4 m and
+  // 0.5 rad behind the clock; the joints catch up faster than the base (6.28 rad/s^2 against
+  // 0.9 m/s^2).
+  kFrozenPlant,
+};
+struct ArmOutcome {
+  double joint_rad = 0.0;       ///< Joint 0 at the end.
+  double arm_lag_s = 0.0;       ///< The arm's lag behind the clock at the end.
+  double largest_lead_m = 0.0;  ///< After the freeze: the reference's base position at the time
+                                ///< whose joints the arm has reached, minus the base's position.
+};
+
+ArmOutcome RunOnADisturbedPlant(const NmpcOptions& options, Disturbance disturbance, double run_s) {
+  NmpcTracker tracker(options, TopayLimits());
+  CommandHistory history(64, kJoints);
+  const SyntheticReference cruise = Cruise(0.8, 1.0);
+  const TrackerReference reference{3, 0.0, cruise.duration_s(), cruise.Sampler()};
+  WholeBodyState state = StateAt(0, 0, 0, 0);
+  double state_time_s = 0.0;
+  ArmOutcome outcome;
+  for (int i = 0; i * 0.02 <= run_s + 1e-9; ++i) {
+    const double now_s = i * 0.02;
+    const bool frozen = disturbance == Disturbance::kFrozenPlant && now_s >= 2.0 && now_s < 2.5;
+    if (!frozen) state_time_s = now_s;
+    const TrackerInput input{now_s, &state, state_time_s, &reference};
+    const TrackerOutput& out = tracker.Step(input);
+    history.Push(now_s, out.command);
+    outcome.arm_lag_s = out.arm_lag_s;
+    if (frozen) continue;  // the tracker stops on the stale state
+    EXPECT_EQ(out.mode, TrackerMode::kTrack);
+    PredictState(history, 0.02, now_s, now_s + 0.02, &state);
+    if (disturbance == Disturbance::kStuckBase) state.x_m = state.y_m = state.yaw_rad = 0.0;
+    if (disturbance == Disturbance::kFrozenPlant && now_s >= 2.5) {
+      double arm_t_s = 0.0;  // the reference's joints rise monotonically: the last time below q
+      while (arm_t_s < cruise.duration_s() && cruise.At(arm_t_s + 0.001).state.q_rad(0) <= state.q_rad(0)) {
+        arm_t_s += 0.001;
+      }
+      outcome.largest_lead_m = std::max(outcome.largest_lead_m, cruise.At(arm_t_s).state.x_m - state.x_m);
+    }
+  }
+  outcome.joint_rad = state.q_rad(0);
+  return outcome;
+}
+
+NmpcOptions WithoutArmPacing() {
+  NmpcOptions options = Untimed();
+  options.arm_pacing.window_s = 0.0;
+  return options;
+}
+
+// The base stuck: the arm holds the configuration of the base's progress plus the slack
+// (ArmPacedTime); without pacing it runs on with the clock, onto a base pose nobody checked.
+TEST(NmpcTrackerTest, AStuckBaseHoldsTheArmBack) {
+  // The reference's base passes 0.05 m (the slack) at 0.41 s, where its joints are at 0.25 rad;
+  // at 1 s they are at 0.83 rad.
+  const ArmOutcome paced = RunOnADisturbedPlant(Untimed(), Disturbance::kStuckBase, 1.0);
+  EXPECT_LT(paced.joint_rad, 0.3);
+  EXPECT_GT(paced.arm_lag_s, 0.5);
+  const ArmOutcome clocked = RunOnADisturbedPlant(WithoutArmPacing(), Disturbance::kStuckBase, 1.0);
+  EXPECT_GT(clocked.joint_rad, 0.6);
+  EXPECT_EQ(clocked.arm_lag_s, 0.0);
+}
+
+// The plant frozen for 0.5 s: after it the arm does not run ahead of the base along the plan, and
+// once the base has caught up (1 m/s at most against the plan's 0.8: by 7 s) the arm is on the
+// clock again.
+TEST(NmpcTrackerTest, AfterAStallTheArmDoesNotRunAheadOfTheBase) {
+  const ArmOutcome paced = RunOnADisturbedPlant(Untimed(), Disturbance::kFrozenPlant, 7.0);
+  const ArmOutcome clocked = RunOnADisturbedPlant(WithoutArmPacing(), Disturbance::kFrozenPlant, 7.0);
+  std::printf("[ figure ] the arm ahead of the base after a 0.5 s stall, at most: paced %.3f m, on the clock %.3f m\n",
+              paced.largest_lead_m, clocked.largest_lead_m);
+  EXPECT_LT(paced.largest_lead_m, 0.08);  // the slack (0.05 m) and a cycle's motion
+  EXPECT_EQ(paced.arm_lag_s, 0.0);
+  EXPECT_GT(clocked.largest_lead_m, 0.15);
 }
 
 TEST(NmpcTrackerTest, StaleStateStops) {

@@ -6,16 +6,17 @@
 #include <gtest/gtest.h>
 
 #include "graph_test_support.h"
+#include "tests/common/real_time_skip.h"
 
 namespace topay::test {
 namespace {
 
-class LaunchRestart : public testing::Test {
+class LaunchRestart : public ::testing::Test {
  protected:
   void SetUp() override {
     std::string why;
     if (!EnterTestNamespace(&why)) GTEST_SKIP() << why;
-    dir_ = TestDir(testing::UnitTest::GetInstance()->current_test_info()->name());
+    dir_ = TestDir(::testing::UnitTest::GetInstance()->current_test_info()->name());
     graph_ = dir_ + "/graph.yaml";
     WriteText(graph_, GraphYaml("three", ModelProcess("robot-model") +
                                              "  - name: commands\n    command: ${BIN_DIR}/topay-command-pattern\n"
@@ -43,6 +44,10 @@ class LaunchRestart : public testing::Test {
 };
 
 TEST_F(LaunchRestart, KilledProcessIsBackWithinTwoSecondsOthersUntouched) {
+  // Under ASan + UBSan (2026-12-06) a process's restart took longer and a second process's
+  // heartbeats came late enough for the launcher to restart it too: the 2 s and the untouched
+  // heartbeats are rates. HungProcessIsDetectedAndRestarted runs there (its budget is generous).
+  TOPAY_SKIP_IN_SLOW_BUILD("the 2 s restart and the other processes' 1 Hz heartbeats");
   HeartbeatWatcher watcher;
   ASSERT_TRUE(watcher.good());
   const double startup_s = StartAndWaitForAll(watcher);
