@@ -6,7 +6,7 @@
 // X_WB(t), the same t. When the base falls behind its reference (wheels that slip, drives that
 // lag, a simulator that steps late), tracking both on the clock puts q(t) on a base still near
 // X_WB(t - lag): a pair nobody checked. Under overload the arm touched a table top that way (the
-// base 0.18 m behind its reference, the joints within 0.005 rad of theirs). So the arm's
+// base 0.18 m off its reference, the joints within 0.005 rad of theirs). So the arm's
 // reference time is the latest time, no earlier than `window_s` before the clock, whose base pose
 // is within `slack_m` of the pose nearest the measured base: on the clock while the base keeps up
 // (within the slack), waiting for it while it lags. The base's own reference stays on the clock
