@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <limits>
 
 #include "core/common/angles.h"
 #include "core/common/option_checks.h"
@@ -36,18 +35,22 @@ double ArmPacedTime(const TrajectorySampler& sampler, double duration_s, double 
   const double earliest_s = std::clamp(clock_t_s - options.window_s, 0.0, latest_s);
   const int steps = std::min(ArmPacingOptions::kMaxSamples - 1,
                              static_cast<int>(std::ceil((latest_s - earliest_s) / options.resolution_s)));
+  const auto time_of = [&](int j) { return std::max(earliest_s, latest_s - j * options.resolution_s); };
+  // The base within the slack of the clock's pose (normal driving) is on the clock whatever the
+  // window's nearest pose (it is >= 0 away): the search is spared on the hot path.
   // Distances at tau_j = latest - j resolution (the last one at the window's start).
   std::array<double, ArmPacingOptions::kMaxSamples> distance_m;
-  double nearest_m = std::numeric_limits<double>::infinity();
-  for (int j = 0; j <= steps; ++j) {
-    sampler(std::max(earliest_s, latest_s - j * options.resolution_s), scratch);
+  sampler(latest_s, scratch);
+  distance_m[0] = BasePoseDistance(scratch->state, base, options.yaw_m_per_rad);
+  if (distance_m[0] <= options.slack_m) return clock_t_s;
+  double nearest_m = distance_m[0];
+  for (int j = 1; j <= steps; ++j) {
+    sampler(time_of(j), scratch);
     distance_m[j] = BasePoseDistance(scratch->state, base, options.yaw_m_per_rad);
     nearest_m = std::min(nearest_m, distance_m[j]);
   }
   for (int j = 0; j <= steps; ++j) {
-    if (distance_m[j] <= nearest_m + options.slack_m) {
-      return j == 0 ? clock_t_s : std::max(earliest_s, latest_s - j * options.resolution_s);
-    }
+    if (distance_m[j] <= nearest_m + options.slack_m) return j == 0 ? clock_t_s : time_of(j);
   }
   return clock_t_s;  // not reached: the nearest sample is within the slack of itself
 }
