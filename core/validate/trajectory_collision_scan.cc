@@ -27,14 +27,24 @@ std::optional<PredictedCollision> FirstPredictedCollision(
   CheckScanInput(options, t_from_s, t_to_s);
   const double t_begin = std::clamp(t_from_s, 0.0, trajectory.duration_s());
   const double t_end = std::clamp(t_to_s, t_begin, trajectory.duration_s());
-  TrajectorySample point = trajectory.MakePoint();
+  const MotionSampler along = [&trajectory](double t_s, TrajectorySample* sample) { trajectory.Evaluate(t_s, sample); };
+  return FirstPredictedCollisionOf(along, trajectory.MakePoint(), t_begin, t_end, checker, options);
+}
+
+std::optional<PredictedCollision> FirstPredictedCollisionOf(const MotionSampler& motion, TrajectorySample point,
+                                                            double t_begin_s, double t_end_s,
+                                                            const SceneClearanceChecker& checker,
+                                                            const TrajectoryCollisionScanOptions& options) {
+  CheckScanInput(options, t_begin_s, t_end_s);
   SceneClearanceWorkspace workspace = checker.MakeWorkspace();
   // Boxes farther than the margin cannot make a sample collide: the cutoff skips them.
   const double cutoff_m = options.obstacle_margin_m + 1e-9;
-  const int n = static_cast<int>(std::ceil((t_end - t_begin) / options.sample_period_s));
+  const double steps = std::ceil((t_end_s - t_begin_s) / options.sample_period_s);
+  if (!(steps < 1e7)) throw std::invalid_argument("FirstPredictedCollision: more than 1e7 samples asked for");
+  const int n = std::max(0, static_cast<int>(steps));
   for (int k = 0; k <= n; ++k) {
-    const double t = std::min(t_begin + k * options.sample_period_s, t_end);
-    trajectory.Evaluate(t, &point);
+    const double t = std::min(t_begin_s + k * options.sample_period_s, t_end_s);
+    motion(t, &point);
     checker.kinematics().Update(point.state, &workspace.cache);
     SceneClearance clearance;
     checker.ComputeObstacleParts(workspace.cache, cutoff_m, &clearance);

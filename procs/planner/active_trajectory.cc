@@ -38,17 +38,31 @@ Drift MeasureDrift(const ActiveTrajectory& active, const msgs::RobotStateEstimat
   return drift;
 }
 
+DriftedRobot::DriftedRobot(const ActiveTrajectory& active, const msgs::RobotStateEstimate& robot)
+    : active_(active), state_time_s_(active.TimeAt(robot.utime)) {
+  const TrajectorySample now = active.SampleAt(robot.utime);
+  yaw_ref_rad_ = now.state.yaw_rad;
+  p_offset_W_m_ = Eigen::Vector2d(robot.state.x_m - now.state.x_m, robot.state.y_m - now.state.y_m);
+  yaw_offset_rad_ = WrapAngle(robot.state.yaw_rad - now.state.yaw_rad);
+  if (robot.state.q_rad.size() == now.state.q_rad.size()) q_offset_rad_ = robot.state.q_rad - now.state.q_rad;
+}
+
+void DriftedRobot::Evaluate(double t_s, TrajectorySample* sample) const {
+  const ArcYawTrajectory& trajectory = *active_.trajectory;
+  trajectory.Evaluate(std::clamp(t_s, 0.0, trajectory.duration_s()), sample);
+  // The base offset turns with the trajectory: a robot beside a bend stays beside it.
+  const double turn_rad = WrapAngle(sample->state.yaw_rad - yaw_ref_rad_);
+  const Eigen::Vector2d moved_W = Eigen::Rotation2Dd(turn_rad) * p_offset_W_m_;
+  sample->state.x_m += moved_W.x();
+  sample->state.y_m += moved_W.y();
+  sample->state.yaw_rad += yaw_offset_rad_;
+  if (q_offset_rad_.size() == sample->state.q_rad.size()) sample->state.q_rad += q_offset_rad_;
+}
+
 TrajectorySample PredictDriftedStart(const ActiveTrajectory& active, const msgs::RobotStateEstimate& robot,
                                      std::int64_t t0_utime) {
-  const TrajectorySample now = active.SampleAt(robot.utime);
-  TrajectorySample start = active.SampleAt(t0_utime);
-  const double turn_rad = WrapAngle(start.state.yaw_rad - now.state.yaw_rad);
-  const Eigen::Vector2d offset_W(robot.state.x_m - now.state.x_m, robot.state.y_m - now.state.y_m);
-  const Eigen::Vector2d moved_W = Eigen::Rotation2Dd(turn_rad) * offset_W;
-  start.state.x_m += moved_W.x();
-  start.state.y_m += moved_W.y();
-  start.state.yaw_rad += WrapAngle(robot.state.yaw_rad - now.state.yaw_rad);
-  if (robot.state.q_rad.size() == start.state.q_rad.size()) start.state.q_rad += robot.state.q_rad - now.state.q_rad;
+  TrajectorySample start = active.trajectory->MakePoint();
+  DriftedRobot(active, robot).Evaluate(active.TimeAt(t0_utime), &start);
   return start;
 }
 

@@ -53,14 +53,36 @@ struct Drift {
 };
 Drift MeasureDrift(const ActiveTrajectory& active, const msgs::RobotStateEstimate& robot);
 
-/// Where a robot that drifted off `active` will be at t0_utime: the tracker keeps following
-/// the trajectory until a new one starts, so the robot moves as the trajectory does and keeps
-/// its error. The trajectory's state at t0 with the robot's error at its state's time added:
-/// the base offset rotated by the trajectory's turn over [robot.utime, t0], the yaw and joint
-/// offsets as they are; the rates and accelerations the trajectory's at t0 (a replan joins
-/// them). Not the measured state extrapolated at constant rates: that runs straight off a
-/// turning trajectory (1 s at 0.5 rad/s puts it ~0.12 m off the arc), and drift replans that
-/// started there drove the demo's robot into a box. Joint offsets are not clamped to limits.
+/// The robot carried along `active` with its error at robot.utime: the trajectory's state at
+/// a time with that error added (the base offset rotated by the trajectory's turn since the
+/// state's time, the yaw and joint offsets as they are; the rates and accelerations the
+/// trajectory's). The tracker keeps following the trajectory until a new one starts, so a
+/// robot that drifted off it moves as it does and keeps its error. Not the measured state
+/// extrapolated at constant rates: that runs straight off a turning trajectory (1 s at
+/// 0.5 rad/s puts it ~0.12 m off the arc), and drift replans that started there drove the
+/// demo's robot into a box. Joint offsets are not clamped to limits. Holds a reference to
+/// `active`, which must outlive it.
+class DriftedRobot {
+ public:
+  DriftedRobot(const ActiveTrajectory& active, const msgs::RobotStateEstimate& robot);
+  /// The drifted robot at t_s along the trajectory (clamped to it) into `sample` (made by the
+  /// trajectory's MakePoint).
+  void Evaluate(double t_s, TrajectorySample* sample) const;
+  /// Time along the trajectory (s) of the robot's state (not clamped).
+  double state_time_s() const { return state_time_s_; }
+  const ActiveTrajectory& active() const { return active_; }
+
+ private:
+  const ActiveTrajectory& active_;
+  double state_time_s_ = 0.0;
+  double yaw_ref_rad_ = 0.0;       // the trajectory's yaw at the state's time
+  Eigen::Vector2d p_offset_W_m_;   // robot minus trajectory, base position, at the state's time
+  double yaw_offset_rad_ = 0.0;    // wrapped
+  Eigen::VectorXd q_offset_rad_;   // empty when the joint counts differ
+};
+
+/// Where a robot that drifted off `active` will be at t0_utime (DriftedRobot at t0): where a
+/// drift replan starts.
 TrajectorySample PredictDriftedStart(const ActiveTrajectory& active, const msgs::RobotStateEstimate& robot,
                                      std::int64_t t0_utime);
 

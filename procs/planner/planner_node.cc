@@ -74,6 +74,7 @@ const char* ToString(PlanTrigger trigger) {
     case PlanTrigger::kGoal: return "goal";
     case PlanTrigger::kMapCollision: return "map_collision";
     case PlanTrigger::kDrift: return "drift";
+    case PlanTrigger::kDriftCollision: return "drift_collision";
     case PlanTrigger::kRetry: return "retry";
     case PlanTrigger::kResume: return "resume";
   }
@@ -211,6 +212,9 @@ void PlannerNode::OnRobotState(const robot_state_t& msg) {
                 fmt::format("drift from trajectory {}: {:.3f} m, {:.3f} rad yaw, {:.3f} rad joint",
                             on.trajectory_id, d.position_m, d.yaw_rad, d.joint_rad));
   }
+  if (DriftWorthChecking(d, t.drift_check) && clock_.Now() - last_drift_check_utime_ >= Micros(t.drift_check.period_s)) {
+    CheckActiveAgainstMap(clock_.Now());  // the drifted robot too
+  }
 }
 
 void PlannerNode::OnMap(const map_update_t& msg) {
@@ -280,28 +284,61 @@ void PlannerNode::Hold(const tracker_status_t& msg) {
   }
 }
 
+Scene PlannerNode::BoxesNear(const Eigen::AlignedBox3d& region, const std::optional<StandingRobot>& standing) const {
+  Scene scene;
+  scene.boxes = standing ? map_.BlockedBoxesNear(region, kinematics_, *standing) : map_.BlockedBoxesNear(region);
+  return scene;
+}
+
 std::optional<PredictedCollision> PlannerNode::CheckAhead(const ArcYawTrajectory& trajectory, double t_from_s,
                                                            const std::optional<StandingRobot>& standing) const {
   const double height_m = GridBounds(map_.receiver().geometry()).max().z();
-  const Eigen::AlignedBox3d region =
-      SweptRegion(trajectory, t_from_s, trajectory.duration_s(), options_.triggers.check_reach_m, height_m);
-  Scene scene;
-  scene.boxes = standing ? map_.BlockedBoxesNear(region, kinematics_, *standing) : map_.BlockedBoxesNear(region);
+  const Scene scene = BoxesNear(
+      SweptRegion(trajectory, t_from_s, trajectory.duration_s(), options_.triggers.check_reach_m, height_m), standing);
   if (scene.boxes.empty()) return std::nullopt;
   const SceneClearanceChecker checker(kinematics_, scene);
   return FirstPredictedCollision(trajectory, t_from_s, trajectory.duration_s(), checker,
                                  options_.triggers.check);
 }
 
+std::optional<PlannerNode::DriftedCollision> PlannerNode::CheckDriftedAhead(std::int64_t now) {
+  if (!robot_ || active_->stopping || OnAt(robot_->utime) != &*active_ ||
+      robot_->state.num_joints() != active_->trajectory->num_joints() ||
+      !(std::abs(1e-6 * StampDifferenceUs(now, robot_->utime)) <= options_.timing.max_state_age_s)) {
+    return std::nullopt;
+  }
+  const ReplanTriggerOptions& t = options_.triggers;
+  const Drift drift = MeasureDrift(*active_, *robot_);
+  if (!DriftWorthChecking(drift, t.drift_check)) return std::nullopt;
+  last_drift_check_utime_ = now;
+  ++counts_.drift_checks;
+  const DriftedRobot drifted(*active_, *robot_);
+  const double t_from_s = drifted.state_time_s();
+  const double height_m = GridBounds(map_.receiver().geometry()).max().z();
+  // The region of the trajectory, wider by the drift (the offset turns with the trajectory).
+  const Scene scene = BoxesNear(SweptRegion(*active_->trajectory, t_from_s, t_from_s + t.drift_check.horizon_s,
+                                            t.check_reach_m + drift.position_m, height_m),
+                                active_->standing);
+  if (scene.boxes.empty()) return std::nullopt;
+  const SceneClearanceChecker checker(kinematics_, scene);
+  const std::optional<PredictedCollision> hit = FirstDriftedCollision(drifted, t.drift_check.horizon_s, checker, t.check);
+  if (!hit) return std::nullopt;
+  ++counts_.drift_collisions;
+  return DriftedCollision{*hit, drift};
+}
+
 void PlannerNode::CheckActiveAgainstMap(std::int64_t now) {
   if (!active_ || active_->EndedBy(now) || !map_.has_map()) return;
   const Stopwatch watch;
-  const std::optional<PredictedCollision> hit =
+  std::optional<PredictedCollision> hit =
       CheckAhead(*active_->trajectory, active_->TimeAt(now), active_->standing);
+  const std::optional<DriftedCollision> drifted = CheckDriftedAhead(now);
   const double ms = watch.ElapsedMs();
   ++counts_.map_checks;
   counts_.map_check_ms_sum += ms;
   counts_.map_check_ms_max = std::max(counts_.map_check_ms_max, ms);
+  const bool by_drift = drifted && (!hit || drifted->hit.t_s < hit->t_s);
+  if (by_drift) hit = drifted->hit;
   if (!hit) {
     ClearPredictedCollision();
     return;
@@ -317,11 +354,17 @@ void PlannerNode::CheckActiveAgainstMap(std::int64_t now) {
   RememberCollision(*active_->trajectory, hit->t_s);
   if (active_->stopping) return;  // braking already; the replans go on (retry)
   const std::string reason =
-      fmt::format("map seq {}: trajectory {} collides {:.2f} s ahead (clearance {:.3f} m)",
-                  map_.receiver().map_seq(), active_->trajectory_id, 1e-6 * (at - now),
-                  hit->clearance.obstacle_m());
+      by_drift ? fmt::format("the robot, {:.3f} m, {:.3f} rad yaw, {:.3f} rad joint off trajectory {}, collides "
+                             "{:.2f} s ahead as it drifts (clearance {:.3f} m, map seq {})",
+                             drifted->drift.position_m, drifted->drift.yaw_rad, drifted->drift.joint_rad,
+                             active_->trajectory_id, 1e-6 * (at - now), hit->clearance.obstacle_m(),
+                             map_.receiver().map_seq())
+               : fmt::format("map seq {}: trajectory {} collides {:.2f} s ahead (clearance {:.3f} m)",
+                             map_.receiver().map_seq(), active_->trajectory_id, 1e-6 * (at - now),
+                             hit->clearance.obstacle_m());
   if (first || sooner) spdlog::info("{}", reason);
-  RequestPlan(PlanTrigger::kMapCollision, reason, /*preempt=*/first || sooner);
+  RequestPlan(by_drift ? PlanTrigger::kDriftCollision : PlanTrigger::kMapCollision, reason,
+              /*preempt=*/first || sooner);
 }
 
 bool PlannerNode::FillStart(PlanTrigger trigger, std::int64_t now, PlanJob* job, std::string* error) const {
@@ -337,7 +380,8 @@ bool PlannerNode::FillStart(PlanTrigger trigger, std::int64_t now, PlanJob* job,
   // A drift replan while the robot follows the trajectory it drifted from until t0: where that
   // trajectory will be, with the robot's error carried along (a newer one starting before t0:
   // planned on that one, as any replan; the drift check looks again once it runs).
-  const ActiveTrajectory* drifted_from = trigger == PlanTrigger::kDrift && robot_ ? OnAt(robot_->utime) : nullptr;
+  const bool drift = trigger == PlanTrigger::kDrift || trigger == PlanTrigger::kDriftCollision;
+  const ActiveTrajectory* drifted_from = drift && robot_ ? OnAt(robot_->utime) : nullptr;
   if (running && drifted_from == on) {
     job->start = PredictDriftedStart(*on, *robot_, t0);
     job->from_rest = false;
@@ -882,11 +926,13 @@ std::string PlannerNode::Report() const {
                      d.confirmed, d.resent, d.given_up);
   out += "  triggers:";
   for (const auto& [trigger, n] : counts_.triggers) out += fmt::format(" {} {}", ToString(trigger), n);
-  out += fmt::format("\n  map: {} checks of the trajectory ahead (mean {:.2f} ms, max {:.2f} ms), {} rejected; "
+  out += fmt::format("\n  map: {} checks of the trajectory ahead (mean {:.2f} ms, max {:.2f} ms; {} of the drifted robot, "
+                     "{} colliding), {} rejected; "
                      "{} background field updates (last {:.0f} ms, max {:.0f} ms), before a plan max {:.0f} ms\n",
                      counts_.map_checks,
                      counts_.map_checks > 0 ? counts_.map_check_ms_sum / counts_.map_checks : 0.0,
-                     counts_.map_check_ms_max, counts_.maps_rejected, w.flushes, w.last_flush_ms,
+                     counts_.map_check_ms_max, counts_.drift_checks, counts_.drift_collisions,
+                     counts_.maps_rejected, w.flushes, w.last_flush_ms,
                      w.max_flush_ms, w.max_fresh_ms);
   if (clock_.message_time()) {
     const auto& n = counts_.inbox_handled_by_channel;

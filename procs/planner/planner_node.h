@@ -53,7 +53,8 @@
 namespace topay::planner {
 
 /// Why a plan was asked for.
-enum class PlanTrigger { kGoal, kMapCollision, kDrift, kRetry, kResume };
+/// kDriftCollision: the robot, off the trajectory, collides as it drifts (drifted_collision.h).
+enum class PlanTrigger { kGoal, kMapCollision, kDrift, kDriftCollision, kRetry, kResume };
 const char* ToString(PlanTrigger trigger);
 
 /// What the node counted since its start (the heartbeat and the exit report).
@@ -66,6 +67,8 @@ struct PlannerNodeCounts {
   std::int64_t plans_failed = 0, results_dropped_late = 0, results_colliding = 0;
   std::int64_t escapes = 0;  ///< plans from rest planned again with the arm's escape allowance (finding 18)
   std::int64_t maps_rejected = 0, map_checks = 0;
+  /// Checks of the drifted robot (triggers.drift_check), and how many found a collision.
+  std::int64_t drift_checks = 0, drift_collisions = 0;
   double map_check_ms_max = 0.0, map_check_ms_sum = 0.0;
   /// Deterministic mode: messages handled from the inbox (all, and by PlannerInput's
   /// alternative: GOAL, ROBOT_STATE, MAP_UPDATE, TRACKER_STATUS), and the most that waited.
@@ -141,7 +144,19 @@ class PlannerNode {
   // of `standing`: a plan from rest).
   std::optional<PredictedCollision> CheckAhead(const ArcYawTrajectory& trajectory, double t_from_s,
                                                const std::optional<StandingRobot>& standing) const;
+  // The map's blocked voxels in `region` as boxes (without those of `standing`).
+  Scene BoxesNear(const Eigen::AlignedBox3d& region, const std::optional<StandingRobot>& standing) const;
+  // The first collision ahead of the trajectory and, while the robot is off it by more than
+  // triggers.drift_check's tolerances, of the drifted robot (CheckDriftedAhead); the earlier
+  // one replans (and is stopped for by MaybeSafeStop), none clears the prediction.
   void CheckActiveAgainstMap(std::int64_t now);
+  struct DriftedCollision {
+    PredictedCollision hit;  // t_s along active_
+    Drift drift;
+  };
+  // The drifted robot's first collision within triggers.drift_check.horizon_s (nullopt: none,
+  // or not checked: no fresh state, drift within the tolerances, not on active_).
+  std::optional<DriftedCollision> CheckDriftedAhead(std::int64_t now);
   // Keeps the base position at t_s on `trajectory` (a predicted collision) for FreshRegions.
   void RememberCollision(const ArcYawTrajectory& trajectory, double t_s);
   // Where a plan from `start` needs the newest map in its fields: around its start and the
@@ -211,6 +226,7 @@ class PlannerNode {
   std::deque<ActiveTrajectory> replaced_;
   std::optional<std::int64_t> collision_utime_;  // predicted collision on active_, if any
   std::optional<std::int64_t> collision_seen_utime_;  // ... when it was first predicted
+  std::int64_t last_drift_check_utime_ = 0;  // the drifted robot's last check (drift_check.period_s)
   std::vector<Eigen::Vector2d> collision_points_;  // base xy at the newest predicted collisions
   std::optional<double> last_stop_duration_s_;   // of the last stopping trajectory made for it
   std::int64_t last_stop_made_utime_ = 0;         // ... and when

@@ -58,6 +58,11 @@ void ReadTriggers(YamlSection s, ReplanTriggerOptions* o) {
   s.Read("drift_position_m", &o->drift_position_m);
   s.Read("drift_yaw_rad", &o->drift_yaw_rad);
   s.Read("drift_joint_rad", &o->drift_joint_rad);
+  s.Read("drift_check_position_m", &o->drift_check.position_m);
+  s.Read("drift_check_yaw_rad", &o->drift_check.yaw_rad);
+  s.Read("drift_check_joint_rad", &o->drift_check.joint_rad);
+  s.Read("drift_check_horizon_s", &o->drift_check.horizon_s);
+  s.Read("drift_check_period_s", &o->drift_check.period_s);
   s.Read("check_reach_m", &o->check_reach_m);
   s.Finish();
 }
@@ -165,6 +170,11 @@ void CheckPlannerProcessOptions(const PlannerProcessOptions& o, const std::strin
   RequirePositive(o.triggers.drift_position_m, source, "triggers.drift_position_m");
   RequirePositive(o.triggers.drift_yaw_rad, source, "triggers.drift_yaw_rad");
   RequirePositive(o.triggers.drift_joint_rad, source, "triggers.drift_joint_rad");
+  RequirePositive(o.triggers.drift_check.position_m, source, "triggers.drift_check_position_m");
+  RequirePositive(o.triggers.drift_check.yaw_rad, source, "triggers.drift_check_yaw_rad");
+  RequirePositive(o.triggers.drift_check.joint_rad, source, "triggers.drift_check_joint_rad");
+  RequirePositive(o.triggers.drift_check.horizon_s, source, "triggers.drift_check_horizon_s");
+  RequirePositive(o.triggers.drift_check.period_s, source, "triggers.drift_check_period_s");
   RequirePositive(o.triggers.check_reach_m, source, "triggers.check_reach_m");
   RequireNonNegative(o.stop.latency_s, source, "stop.latency_s");
   RequireNonNegative(o.stop.margin_s, source, "stop.margin_s");

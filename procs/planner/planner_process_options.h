@@ -11,6 +11,7 @@
 #include "core/planner/whole_body_planner_options.h"
 #include "core/robot/robot_model.h"
 #include "core/validate/trajectory_collision_scan.h"
+#include "procs/planner/drifted_collision.h"
 #include "procs/planner/trajectory_delivery.h"
 
 namespace topay::planner {
@@ -117,6 +118,11 @@ struct ReplanTriggerOptions {
   double drift_position_m = 0.3;
   double drift_yaw_rad = 0.35;
   double drift_joint_rad = 0.35;
+  /// Below those, a robot off the trajectory by more than drift_check's tolerances is checked
+  /// against the map as it drifts (the trajectory ahead with its error carried along, with
+  /// `check`'s sampling and margin): a collision replans from the drifted robot and stops it if
+  /// no plan comes in time (procs/planner/drifted_collision.h, finding 34).
+  DriftCheckOptions drift_check;
   /// The map check looks at the blocked voxels within this distance (m) of the base axis
   /// along the rest of the trajectory: the robot's whole extent (arm stretched out over the
   /// base) with room to spare. > 0.

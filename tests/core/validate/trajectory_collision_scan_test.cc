@@ -56,6 +56,25 @@ TEST_F(TrajectoryCollisionScanTest, BoxOnTheRouteIsFoundWhereTheBaseFirstTouches
   EXPECT_FALSE(FirstPredictedCollision(drive_, 0.0, hit->t_s - 0.05, checker).has_value());
 }
 
+// Any motion, not only a trajectory's: the drive moved 1 m to the side from t = 4 s on (as a
+// robot carried along it with an error would be) meets a box the drive itself passes.
+TEST_F(TrajectoryCollisionScanTest, AnyMotionIsScannedAtItsOwnTimes) {
+  Scene scene;
+  scene.boxes.push_back(MakeBox({3.0, 1.0, 0.5}, {0.4, 0.4, 1.0}));  // 1 m to the left of the route
+  const SceneClearanceChecker checker(kinematics_, scene);
+  ASSERT_FALSE(FirstPredictedCollision(drive_, 0.0, drive_.duration_s(), checker).has_value());
+  const MotionSampler beside = [&](double t_s, TrajectorySample* sample) {
+    drive_.Evaluate(t_s, sample);
+    if (t_s >= 4.0) sample->state.y_m += 1.0;
+  };
+  const auto hit = FirstPredictedCollisionOf(beside, drive_.MakePoint(), 0.0, drive_.duration_s(), checker);
+  ASSERT_TRUE(hit.has_value());
+  EXPECT_GE(hit->t_s, 4.0);
+  EXPECT_LE(hit->clearance.obstacle_m(), 0.0);
+  EXPECT_FALSE(FirstPredictedCollisionOf(beside, drive_.MakePoint(), 0.0, 3.98, checker).has_value());
+  EXPECT_THROW(FirstPredictedCollisionOf(beside, drive_.MakePoint(), 0.0, 1e6, checker), std::invalid_argument);
+}
+
 TEST_F(TrajectoryCollisionScanTest, RejectsBadOptions) {
   const SceneClearanceChecker checker(kinematics_, Scene{});
   TrajectoryCollisionScanOptions bad;

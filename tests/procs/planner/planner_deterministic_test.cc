@@ -50,11 +50,13 @@ class PlannerDeterministic : public testing::Test {
     std::string why;
     if (!EnterTestNamespace(&why)) GTEST_SKIP() << why;
     dir_ = TestDir("deterministic");
-    // No drift trigger: the test's robot stays at its start while the trajectories run; no
-    // stale-map stop: one snapshot plays the mapper.
+    // No drift trigger or drift check: the test's robot stays at its start while the
+    // trajectories run; no stale-map stop: one snapshot plays the mapper.
     WriteText(dir_ + "/planner.yaml", "planner_config: " + std::string(TOPAY_SOURCE_DIR) +
                                           "/config/planner/topay.yaml\ndeterministic: {enabled: true}\nmap: {stale_stop_s: 0}\n"
-                                          "triggers: {drift_position_m: 100, drift_yaw_rad: 100, drift_joint_rad: 100}\n");
+                                          "triggers: {drift_position_m: 100, drift_yaw_rad: 100, drift_joint_rad: 100, "
+                                          "drift_check_position_m: 100, drift_check_yaw_rad: 100, "
+                                          "drift_check_joint_rad: 100}\n");
     watcher_ = std::make_unique<HeartbeatWatcher>(kLcmUrl);
     watcher_->lcm().subscribe(std::string(channels::TRAJECTORY), &PlannerDeterministic::OnTrajectory, this);
     sequence_ = Sequence();

@@ -22,6 +22,11 @@ TEST(PlannerProcessOptionsTest, ShippedFileLoadsWithTheDefaults) {
   EXPECT_EQ(o.map.unknown, d.map.unknown);
   EXPECT_EQ(o.timing.replan_budget_s, d.timing.replan_budget_s);
   EXPECT_EQ(o.triggers.drift_position_m, d.triggers.drift_position_m);
+  EXPECT_EQ(o.triggers.drift_check.position_m, d.triggers.drift_check.position_m);
+  EXPECT_EQ(o.triggers.drift_check.yaw_rad, d.triggers.drift_check.yaw_rad);
+  EXPECT_EQ(o.triggers.drift_check.joint_rad, d.triggers.drift_check.joint_rad);
+  EXPECT_EQ(o.triggers.drift_check.horizon_s, d.triggers.drift_check.horizon_s);
+  EXPECT_EQ(o.triggers.drift_check.period_s, d.triggers.drift_check.period_s);
   EXPECT_EQ(o.stop.margin_s, d.stop.margin_s);
   EXPECT_EQ(o.stop.replan_grace_s, d.stop.replan_grace_s);
   EXPECT_EQ(o.map.flush_all_from_rest, d.map.flush_all_from_rest);
@@ -38,6 +43,7 @@ TEST(PlannerProcessOptionsTest, ValuesAreReadAndBadOnesNamed) {
   const PlannerProcessOptions o = LoadPlannerProcessOptions(
       WriteYaml("good", "map: {unknown: occupied, field_update_period_s: 0.5, flush_all_from_rest: false}\n"
                         "timing: {replan_budget_s: 0.4, max_failed_plans_from_rest: 4}\n"
+                        "triggers: {drift_check_position_m: 0.07, drift_check_horizon_s: 3.0}\n"
                         "goals: {reached_position_m: 0.01, reached_orientation_rad: 0.02}\nstop: {replan_grace_s: 0.6, grace_reach_m: 3.0}\n"));
   EXPECT_EQ(o.map.unknown, UnknownVoxelPolicy::kOccupied);
   EXPECT_FALSE(o.map.flush_all_from_rest);
@@ -46,6 +52,8 @@ TEST(PlannerProcessOptionsTest, ValuesAreReadAndBadOnesNamed) {
   EXPECT_EQ(o.map.field_update_period_s, 0.5);
   EXPECT_EQ(o.timing.replan_budget_s, 0.4);
   EXPECT_EQ(o.timing.max_failed_plans_from_rest, 4);
+  EXPECT_EQ(o.triggers.drift_check.position_m, 0.07);
+  EXPECT_EQ(o.triggers.drift_check.horizon_s, 3.0);
   EXPECT_EQ(o.goals.reached_position_m, 0.01);
   EXPECT_EQ(o.goals.reached_orientation_rad, 0.02);
   const auto expect_error = [](const std::string& text, const std::string& field) {
@@ -59,6 +67,9 @@ TEST(PlannerProcessOptionsTest, ValuesAreReadAndBadOnesNamed) {
   expect_error("map: {unknown: maybe}\n", "map.unknown");
   expect_error("timing: {replan_budget_s: 0.01}\n", "replan_budget_s");
   expect_error("triggers: {drift_position_m: -1}\n", "drift_position_m");
+  expect_error("triggers: {drift_check_yaw_rad: 0}\n", "triggers.drift_check_yaw_rad");
+  expect_error("triggers: {drift_check_horizon_s: .inf}\n", "triggers.drift_check_horizon_s");
+  expect_error("triggers: {drift_check_period_s: -0.1}\n", "triggers.drift_check_period_s");
   expect_error("timing: {max_failed_plans_from_rest: 0}\n", "timing.max_failed_plans_from_rest");
   expect_error("timing: {max_state_age_s: 0}\n", "timing.max_state_age_s");
   expect_error("timing: {max_state_age_s: .nan}\n", "timing.max_state_age_s");

@@ -50,10 +50,13 @@ class PlannerProcess : public testing::Test {
     if (!EnterTestNamespace(&why)) GTEST_SKIP() << why;
     dir_ = TestDir("planner");
     // Generous plan time: the tests share two cores with the rest of the suite. No drift
-    // trigger: the test's robot stays at its start while the planner's trajectories run.
+    // trigger or drift check: the test's robot stays at its start while the planner's
+    // trajectories run.
     WriteText(dir_ + "/planner.yaml", "planner_config: " + std::string(TOPAY_SOURCE_DIR) +
                                           "/config/planner/topay.yaml\ntiming: {from_rest_time_limit_s: 20.0}\n"
-                                          "triggers: {drift_position_m: 100, drift_yaw_rad: 100, drift_joint_rad: 100}\n"
+                                          "triggers: {drift_position_m: 100, drift_yaw_rad: 100, drift_joint_rad: 100, "
+                                          "drift_check_position_m: 100, drift_check_yaw_rad: 100, "
+                                          "drift_check_joint_rad: 100}\n"
                                           "map: {stale_stop_s: 0}\n");  // one snapshot plays the mapper
     watcher_ = std::make_unique<HeartbeatWatcher>(kLcmUrl);
     watcher_->lcm().subscribe(std::string(channels::TRAJECTORY), &PlannerListener::OnTrajectory, &out_);
@@ -217,13 +220,13 @@ class PlannerProcess : public testing::Test {
   static Eigen::Vector2d BaseAt(const msgs::PolyTrajectory& t, double t_s) { return BasePath(t, t_s, 2000).back(); }
   // A 0.3 x 0.3 x 1.0 m pillar at p, as a map delta with sequence number `seq`.
   void SendPillar(const Eigen::Vector2d& p, std::int64_t seq) { SendPillars({p}, seq); }
-  // Such pillars at every point, as one map delta.
-  void SendPillars(const std::vector<Eigen::Vector2d>& points, std::int64_t seq) {
+  // Such pillars (height_m tall) at every point, as one map delta.
+  void SendPillars(const std::vector<Eigen::Vector2d>& points, std::int64_t seq, double height_m = 1.0) {
     const GridGeometry3 g = planner::testing::RoomGeometry();
     std::vector<VoxelChange> pillar;
     for (const Eigen::Vector2d& p : points) {
       const CellBox cells = VoxelsOverlapping(g, {Eigen::Vector3d(p.x() - kPillarHalf_m, p.y() - kPillarHalf_m, 0.0),
-                                                  Eigen::Vector3d(p.x() + kPillarHalf_m, p.y() + kPillarHalf_m, 1.0)});
+                                                  Eigen::Vector3d(p.x() + kPillarHalf_m, p.y() + kPillarHalf_m, height_m)});
       for (int iz = cells.begin.z(); iz < cells.end.z(); ++iz)
         for (int iy = cells.begin.y(); iy < cells.end.y(); ++iy)
           for (int ix = cells.begin.x(); ix < cells.end.x(); ++ix) pillar.push_back({{ix, iy, iz}, VoxelState::kOccupied});
@@ -748,6 +751,78 @@ TEST_F(PlannerProcess, AGoalFloodLeavesTheLoopResponsiveAndTheLastGoalPlanned) {
   EXPECT_GE(cancelled, 1);
   ASSERT_FALSE(out_.trajectories.empty());
   EXPECT_EQ(out_.trajectories.back().goal_id, 199);
+}
+
+// Finding 34: a robot off its trajectory by more than the trajectory's clearance can touch what
+// the trajectory passes. A low block (only the base can touch it) 0.1 m beside the route: the
+// trajectory clears it, a robot 0.2 m off it on the other side is checked and clears it too, a
+// robot 0.2 m off towards it is seen colliding as it drifts, and the planner replans from the
+// drifted robot (or stops it) before it gets there.
+TEST_F(PlannerProcess, ARobotDriftingTowardsAnObstacleTheTrajectoryClearsIsReplannedOrStopped) {
+  std::string yaml = ReadText(dir_ + "/planner.yaml");  // the drift check at its defaults
+  const std::string no_check = ", drift_check_position_m: 100, drift_check_yaw_rad: 100, drift_check_joint_rad: 100";
+  const std::size_t at = yaml.find(no_check);
+  ASSERT_NE(at, std::string::npos) << yaml;
+  yaml.erase(at, no_check.size());
+  WriteText(dir_ + "/planner.yaml", yaml);
+  RestartPlanner();
+  Send(ReachableGoal(71));
+  ASSERT_TRUE(SpinWithRobot([&] { return !out_.trajectories.empty(); }, 60.0)) << ReadText(dir_ + "/planner.txt");
+  std::string error;
+  const auto first = msgs::FromMessage(out_.trajectories.back(), &error);
+  ASSERT_TRUE(first.has_value()) << error;
+  const double duration_s = first->durations_s.sum();
+  // The block beside the base at 70 % of the way, 0.1 m from the base's outline.
+  const double t_block_s = 0.7 * duration_s;
+  const double yaw = first->Evaluate(t_block_s)(1);
+  const Eigen::Vector2d n_W(-std::sin(yaw), std::cos(yaw));  // to the left of the route there
+  const double radius_m = model_.base_cylinder.radius_m;
+  const Eigen::Vector2d p = BaseAt(*first, t_block_s) + (radius_m + kPillarHalf_m + 0.1) * n_W;
+  ASSERT_GT(BaseDistanceToPillar(*first, p), radius_m + 0.05) << "the route bends towards the block";
+  SendPillars({p}, 2, 0.1);
+  // Plays the robot on `first` at the wall clock (its start until then), off it by offset_W.
+  const auto follow = [&](const Eigen::Vector2d& offset_W, const auto& pred, double timeout_s) {
+    const Clock::time_point begin = Clock::now();
+    while (!pred() && SecondsSince(begin) < timeout_s) {
+      msgs::RobotStateEstimate robot;
+      robot.utime = procs::NowUtime();
+      const double t_s = std::clamp(1e-6 * static_cast<double>(robot.utime - first->start_utime), 0.0, duration_s);
+      const Eigen::VectorXd value = first->Evaluate(t_s);
+      const Eigen::Vector2d p_W = BaseAt(*first, t_s) + offset_W;
+      robot.state = start_;
+      robot.state.x_m = p_W.x();
+      robot.state.y_m = p_W.y();
+      robot.state.yaw_rad = value(1);
+      robot.state.q_rad = value.tail(7);
+      robot.qdot_radps = Eigen::VectorXd::Zero(7);
+      const robot_state_t msg = msgs::ToMessage(robot);
+      watcher_->lcm().publish(std::string(channels::ROBOT_STATE), &msg);
+      const Clock::time_point sent = Clock::now();
+      while (SecondsSince(sent) < 0.02) watcher_->lcm().handleTimeout(5);
+    }
+    return pred();
+  };
+  const auto said_drifts = [&] {
+    for (const planner_status_t& s : out_.statuses) {
+      if (s.detail.find("as it drifts") != std::string::npos) return true;
+    }
+    return false;
+  };
+  // Away from the block, up to 3 s before the block: checked, clear.
+  const double away_s = std::max(0.5, t_block_s - 1e-6 * static_cast<double>(procs::NowUtime() - first->start_utime) - 3.0);
+  EXPECT_FALSE(follow(-0.2 * n_W, said_drifts, away_s)) << ReadText(dir_ + "/planner.txt");
+  const std::size_t before = out_.trajectories.size();
+  // Towards it: a collision as it drifts, then a new trajectory (a replan or a stop).
+  ASSERT_TRUE(follow(0.2 * n_W, [&] { return said_drifts() && out_.trajectories.size() > before; }, duration_s))
+      << ReadText(dir_ + "/planner.txt");
+  const poly_trajectory_t& next = out_.trajectories.back();
+  EXPECT_EQ(next.goal_id, 71);
+  EXPECT_GT(next.trajectory_id, first->trajectory_id);
+  // It starts where the drifted robot will be (a replan) or brakes from the trajectory (a stop):
+  // either way no later than the robot would reach the block.
+  EXPECT_LT(1e-6 * static_cast<double>(next.start_utime - first->start_utime), t_block_s);
+  const std::string log = StopPlannerAndReadLog();
+  EXPECT_NE(log.find("drift_collision"), std::string::npos) << log;
 }
 
 }  // namespace
