@@ -27,11 +27,11 @@ std::optional<PredictedCollision> FirstPredictedCollision(
   CheckScanInput(options, t_from_s, t_to_s);
   const double t_begin = std::clamp(t_from_s, 0.0, trajectory.duration_s());
   const double t_end = std::clamp(t_to_s, t_begin, trajectory.duration_s());
-  const MotionSampler along = [&trajectory](double t_s, TrajectorySample* sample) { trajectory.Evaluate(t_s, sample); };
+  const TrajectorySampler along = [&trajectory](double t_s, TrajectorySample* sample) { trajectory.Evaluate(t_s, sample); };
   return FirstPredictedCollisionOf(along, trajectory.MakePoint(), t_begin, t_end, checker, options);
 }
 
-std::optional<PredictedCollision> FirstPredictedCollisionOf(const MotionSampler& motion, TrajectorySample point,
+std::optional<PredictedCollision> FirstPredictedCollisionOf(const TrajectorySampler& motion, TrajectorySample point,
                                                             double t_begin_s, double t_end_s,
                                                             const SceneClearanceChecker& checker,
                                                             const TrajectoryCollisionScanOptions& options) {

@@ -4,7 +4,6 @@
 // the map's voxel boxes), sampled densely in time; obstacles only (self collision and limits
 // were validated when the trajectory was planned and do not change with the map).
 
-#include <functional>
 #include <optional>
 
 #include "core/collision/scene_clearance.h"
@@ -36,14 +35,11 @@ std::optional<PredictedCollision> FirstPredictedCollision(
     const ArcYawTrajectory& trajectory, double t_from_s, double t_to_s,
     const SceneClearanceChecker& checker, const TrajectoryCollisionScanOptions& options = {});
 
-/// The robot's state at a time (s) written into a sample made by the trajectory's MakePoint.
-using MotionSampler = std::function<void(double t_s, TrajectorySample* sample)>;
-
 /// The same scan over any motion of the robot (e.g. the robot carried along a trajectory with
 /// its tracking error): `motion` sampled at t_begin_s, + period, ... and at t_end_s (no
-/// clamping: the caller's times). `point` is the sample the motion writes into. Throws
-/// std::invalid_argument for bad options or non-finite times.
-std::optional<PredictedCollision> FirstPredictedCollisionOf(const MotionSampler& motion, TrajectorySample point,
+/// clamping: the caller's times), each sample written into `point` (made by the trajectory's
+/// MakePoint). Throws std::invalid_argument for bad options or non-finite times.
+std::optional<PredictedCollision> FirstPredictedCollisionOf(const TrajectorySampler& motion, TrajectorySample point,
                                                             double t_begin_s, double t_end_s,
                                                             const SceneClearanceChecker& checker,
                                                             const TrajectoryCollisionScanOptions& options = {});

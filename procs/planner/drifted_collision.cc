@@ -20,7 +20,7 @@ std::optional<PredictedCollision> FirstDriftedCollision(const DriftedRobot& robo
   const ArcYawTrajectory& trajectory = *robot.active().trajectory;
   const double t_begin = std::clamp(robot.state_time_s(), 0.0, trajectory.duration_s());
   const double t_end = std::clamp(robot.state_time_s() + horizon_s, t_begin, trajectory.duration_s());
-  const MotionSampler drifted = [&robot](double t_s, TrajectorySample* sample) { robot.Evaluate(t_s, sample); };
+  const TrajectorySampler drifted = [&robot](double t_s, TrajectorySample* sample) { robot.Evaluate(t_s, sample); };
   return FirstPredictedCollisionOf(drifted, trajectory.MakePoint(), t_begin, t_end, checker, scan);
 }
 

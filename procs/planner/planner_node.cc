@@ -10,6 +10,7 @@
 #include "core/collision/scene_clearance.h"
 #include "core/common/stamp_difference.h"
 #include "core/common/stopwatch.h"
+#include "core/trajectory/offset_trajectory.h"
 #include "procs/msgs/convert_trajectory.h"
 #include "procs/planner/paths_message.h"
 #include "topay/heartbeat_t.hpp"
@@ -350,6 +351,7 @@ void PlannerNode::CheckActiveAgainstMap(std::int64_t now) {
   const bool first = !collision_utime_;
   const bool sooner = collision_utime_ && at < *collision_utime_ - Micros(kSooner_s);
   collision_utime_ = at;
+  collision_by_drift_ = by_drift;
   if (first || sooner) collision_seen_utime_ = now;  // the grace of the safe stop counts from here
   RememberCollision(*active_->trajectory, hit->t_s);
   if (active_->stopping) return;  // braking already; the replans go on (retry)
@@ -718,6 +720,7 @@ void PlannerNode::PublishActive(const char* what) {
 
 void PlannerNode::ClearPredictedCollision() {
   collision_utime_.reset();
+  collision_by_drift_ = false;
   collision_seen_utime_.reset();
   last_stop_duration_s_.reset();
   stop_error_logged_ = false;
@@ -754,8 +757,20 @@ std::optional<ArcYawTrajectory> PlannerNode::MakeStop(std::int64_t begin, std::s
   // started yet (a replan waits for its t0), and braking from its start put the stop 0.7 s of
   // travel away from the robot (0.7 m of drift in the demo).
   const ActiveTrajectory& on = OnAt(begin) != nullptr ? *OnAt(begin) : *active_;
-  return stop_planner_.Make(*on.trajectory, on.TimeAt(begin), why,
-                            blind ? std::optional(options_.stop.blind_duration_per_rate_ratio) : std::nullopt);
+  std::optional<ArcYawTrajectory> stop = stop_planner_.Make(
+      *on.trajectory, on.TimeAt(begin), why, blind ? std::optional(options_.stop.blind_duration_per_rate_ratio) : std::nullopt);
+  if (stop && collision_by_drift_ && !blind) return StopWhereTheRobotIs(on, begin, std::move(*stop));
+  return stop;
+}
+
+ArcYawTrajectory PlannerNode::StopWhereTheRobotIs(const ActiveTrajectory& on, std::int64_t begin,
+                                                  ArcYawTrajectory stop) const {
+  if (!robot_ || robot_->state.num_joints() != on.trajectory->num_joints()) return stop;
+  TrajectorySample robot = on.trajectory->MakePoint();
+  DriftedRobot(on, *robot_).Evaluate(on.TimeAt(begin), &robot);
+  const TrajectorySample reference = on.SampleAt(begin);
+  return OffsetTrajectory(stop, {robot.state.x_m, robot.state.y_m}, robot.state.yaw_rad - reference.state.yaw_rad,
+                          robot.state.q_rad - reference.state.q_rad);
 }
 
 void PlannerNode::PublishStop(ArcYawTrajectory stop, std::int64_t begin, const std::string& detail) {

@@ -170,6 +170,11 @@ class PlannerNode {
   // *why when none can be made), and its publication (STOPPING with `detail`).
   // `blind`: the stale map's stop, shorter (stop.blind_duration_per_rate_ratio).
   std::optional<ArcYawTrajectory> MakeStop(std::int64_t begin, std::string* why, bool blind = false) const;
+  // A stop for a robot that collides as it drifts off `on` (collision_by_drift_): `stop` (made
+  // from `on` at `begin`) moved to where the robot will be then (DriftedRobot). Braking along
+  // the trajectory, the tracker would first close the robot's error, driving it through what
+  // the drift check found (finding 34); from where it is, it only brakes.
+  ArcYawTrajectory StopWhereTheRobotIs(const ActiveTrajectory& on, std::int64_t begin, ArcYawTrajectory stop) const;
   void PublishStop(ArcYawTrajectory stop, std::int64_t begin, const std::string& detail);
   // A new trajectory id: the clock's microseconds, or one more than the last id when that is
   // later. Unique and increasing across restarts of the planner: the tracker takes only a
@@ -227,6 +232,7 @@ class PlannerNode {
   std::optional<std::int64_t> collision_utime_;  // predicted collision on active_, if any
   std::optional<std::int64_t> collision_seen_utime_;  // ... when it was first predicted
   std::int64_t last_drift_check_utime_ = 0;  // the drifted robot's last check (drift_check.period_s)
+  bool collision_by_drift_ = false;  // collision_utime_ is the drifted robot's (CheckDriftedAhead)
   std::vector<Eigen::Vector2d> collision_points_;  // base xy at the newest predicted collisions
   std::optional<double> last_stop_duration_s_;   // of the last stopping trajectory made for it
   std::int64_t last_stop_made_utime_ = 0;         // ... and when

@@ -63,7 +63,7 @@ TEST_F(TrajectoryCollisionScanTest, AnyMotionIsScannedAtItsOwnTimes) {
   scene.boxes.push_back(MakeBox({3.0, 1.0, 0.5}, {0.4, 0.4, 1.0}));  // 1 m to the left of the route
   const SceneClearanceChecker checker(kinematics_, scene);
   ASSERT_FALSE(FirstPredictedCollision(drive_, 0.0, drive_.duration_s(), checker).has_value());
-  const MotionSampler beside = [&](double t_s, TrajectorySample* sample) {
+  const TrajectorySampler beside = [&](double t_s, TrajectorySample* sample) {
     drive_.Evaluate(t_s, sample);
     if (t_s >= 4.0) sample->state.y_m += 1.0;
   };

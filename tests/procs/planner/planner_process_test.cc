@@ -818,9 +818,14 @@ TEST_F(PlannerProcess, ARobotDriftingTowardsAnObstacleTheTrajectoryClearsIsRepla
   const poly_trajectory_t& next = out_.trajectories.back();
   EXPECT_EQ(next.goal_id, 71);
   EXPECT_GT(next.trajectory_id, first->trajectory_id);
-  // It starts where the drifted robot will be (a replan) or brakes from the trajectory (a stop):
-  // either way no later than the robot would reach the block.
-  EXPECT_LT(1e-6 * static_cast<double>(next.start_utime - first->start_utime), t_block_s);
+  // It starts before the robot would reach the block, where the robot will be then (a replan
+  // from the drifted robot, or a stop braking from there rather than from the trajectory).
+  const double t_next_s = 1e-6 * static_cast<double>(next.start_utime - first->start_utime);
+  EXPECT_LT(t_next_s, t_block_s);
+  const auto next_t = msgs::FromMessage(next, &error);
+  ASSERT_TRUE(next_t.has_value()) << error;
+  EXPECT_LT((next_t->p0_W_m - (BaseAt(*first, t_next_s) + 0.2 * n_W)).norm(), 0.05)
+      << "it starts at " << next_t->p0_W_m.transpose() << ", not where the robot is";
   const std::string log = StopPlannerAndReadLog();
   EXPECT_NE(log.find("drift_collision"), std::string::npos) << log;
 }
