@@ -53,6 +53,10 @@ MincoBoundary BoundaryOf(const PolyTrajectory& poly) {
 }
 
 double RelativeCoefficientError(const PolyTrajectory& poly, const Eigen::MatrixXd& coefficients) {
+  // A re-solve that overflowed to NaN somewhere compares as no difference (every comparison
+  // with NaN is false; found by tests/fuzz/trajectory_message_fuzz.cc: coefficients of 3e304
+  // re-solved to NaN in one joint, were accepted, and sampled to NaN joints).
+  if (!coefficients.allFinite()) return std::numeric_limits<double>::infinity();
   double difference = 0.0, size = 1.0;
   for (int j = 0; j < poly.num_pieces(); ++j) {
     double power = 1.0;  // T_j^k

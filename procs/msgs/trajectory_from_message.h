@@ -46,7 +46,8 @@ MincoBoundary BoundaryOf(const PolyTrajectory& poly);
 
 /// The relative coefficient difference of `coefficients` from poly's (see
 /// TrajectoryRebuildOptions::coefficient_tolerance); shapes must agree. +inf when a weighted
-/// coefficient of poly exceeds max double / 1024 (its values would overflow when evaluated).
+/// coefficient of poly exceeds max double / 1024 (its values would overflow when evaluated) or
+/// one of `coefficients` is not finite (a re-solve that overflowed).
 double RelativeCoefficientError(const PolyTrajectory& poly, const Eigen::MatrixXd& coefficients);
 
 /// The core trajectory the message carries: BoundaryOf, ArcYawTrajectory::Update from

@@ -122,6 +122,21 @@ TEST(TrajectoryFromMessage, RejectsCoefficientsTooLargeToEvaluate) {
   EXPECT_EQ(RelativeCoefficientError(poly, poly.coefficients), std::numeric_limits<double>::infinity());
 }
 
+// Found by tests/fuzz/trajectory_message_fuzz.cc (regressions/trajectory_message/, sixteenth
+// session): coefficients of 3e304 (their weighted size just under the evaluable bound) re-solved
+// to NaN in one joint; every comparison with NaN being false, the difference came out finite and
+// the trajectory was accepted, though it sampled to NaN joints. A re-solve with a non-finite
+// coefficient differs infinitely.
+TEST(TrajectoryFromMessage, AReSolveWithANonFiniteCoefficientDiffersInfinitely) {
+  const PolyTrajectory poly = MakePoly(Eigen::Vector2d::Zero());
+  Eigen::MatrixXd resolved = poly.coefficients;
+  EXPECT_EQ(RelativeCoefficientError(poly, resolved), 0.0);
+  resolved(6 * 2 + 3, 5) = std::numeric_limits<double>::quiet_NaN();
+  EXPECT_EQ(RelativeCoefficientError(poly, resolved), std::numeric_limits<double>::infinity());
+  resolved(6 * 2 + 3, 5) = -std::numeric_limits<double>::infinity();
+  EXPECT_EQ(RelativeCoefficientError(poly, resolved), std::numeric_limits<double>::infinity());
+}
+
 // Found by tests/fuzz/trajectory_message_fuzz.cc (regressions/trajectory_message/): with a
 // 9e-20 s or a 135,001 s piece an accepted trajectory, sent again, no longer re-solved to itself.
 TEST(TrajectoryFromMessage, RejectsPiecesOutsideTheDurationBounds) {
