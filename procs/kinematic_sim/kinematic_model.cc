@@ -73,9 +73,12 @@ KinematicModel::KinematicModel(const KinematicModelOptions& options) : max_step_
 bool KinematicModel::Apply(const control_command_t& cmd) {
   const int n = state_.state.num_joints();
   if (cmd.num_joints != n || static_cast<int>(cmd.qdot_radps.size()) != n) return false;
-  if (!std::isfinite(cmd.v_mps) || !std::isfinite(cmd.omega_radps) || !std::isfinite(cmd.gripper)) return false;
+  // Finite is not enough: integrating a rate of 1e308 overflows the state to inf (found by
+  // tests/fuzz/sim_inputs_fuzz.cc). No robot moves at kMaxRate.
+  const auto plausible = [](double rate) { return std::isfinite(rate) && std::abs(rate) <= kMaxRate; };
+  if (!plausible(cmd.v_mps) || !plausible(cmd.omega_radps) || !std::isfinite(cmd.gripper)) return false;
   for (const double qdot : cmd.qdot_radps) {
-    if (!std::isfinite(qdot)) return false;
+    if (!plausible(qdot)) return false;
   }
   if (last_utime_ >= 0 && cmd.utime > last_utime_) {
     const double dt = std::min(static_cast<double>(cmd.utime - last_utime_) * 1e-6, max_step_s_);

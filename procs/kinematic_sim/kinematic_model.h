@@ -30,10 +30,14 @@ class KinematicModel {
  public:
   explicit KinematicModel(const KinematicModelOptions& options);
 
+  /// Largest accepted |rate| of a command (m/s, rad/s): far above any robot's, far below what
+  /// overflows the state when integrated.
+  static constexpr double kMaxRate = 1e3;
+
   /// Advances to cmd.utime under the previous command (min(dt, max_step_s); nothing before the
   /// first command or for a command older than the last), then holds `cmd`. Returns false
-  /// (state unchanged) for a command whose joint count differs from the model's or that is not
-  /// finite.
+  /// (state unchanged) for a command whose joint count differs from the model's, that is not
+  /// finite, or with a rate beyond kMaxRate.
   bool Apply(const control_command_t& cmd);
 
   /// The state at the last command's time (or `utime` before any command).

@@ -43,7 +43,8 @@ int main(int argc, char** argv) {
   loop.Subscribe<control_command_t>(std::string(channels::CONTROL_COMMAND), [&](const control_command_t& cmd) {
     if (!model.Apply(cmd)) {
       ++rejected;
-      spdlog::warn("ignored a command with {} joints or non-finite values", cmd.num_joints);
+      spdlog::warn("ignored a command with {} joints, non-finite values or rates beyond {} (m/s, rad/s)", cmd.num_joints,
+                   kinsim::KinematicModel::kMaxRate);
       return;
     }
     last_command = procs::ProcessLoop::Clock::now();

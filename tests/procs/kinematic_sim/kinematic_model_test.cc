@@ -75,6 +75,24 @@ TEST(KinematicModel, RefusesWrongJointCountsAndNonFiniteCommands) {
   EXPECT_EQ(model.commands_applied(), 0);
 }
 
+// Found by tests/fuzz/sim_inputs_fuzz.cc (regressions/sim_inputs/, sixteenth session): finite
+// but absurd rates (1e308) integrated to an infinite state. They are refused; the state stays
+// finite and where the last plausible command left it.
+TEST(KinematicModel, RefusesRatesNoRobotHas) {
+  KinematicModel model({});
+  ASSERT_TRUE(model.Apply(Command(1'000'000, 1.0, 0.5)));
+  EXPECT_FALSE(model.Apply(Command(1'100'000, 1e308, 0.0)));
+  EXPECT_FALSE(model.Apply(Command(1'100'000, 0.0, -2e3)));
+  control_command_t joints = Command(1'100'000, 0.0, 0.0);
+  joints.qdot_radps[3] = 1e300;
+  EXPECT_FALSE(model.Apply(joints));
+  ASSERT_TRUE(model.Apply(Command(1'200'000, KinematicModel::kMaxRate, KinematicModel::kMaxRate)));
+  for (int k = 3; k < 100; ++k) ASSERT_TRUE(model.Apply(Command(k * 100'000, KinematicModel::kMaxRate, 0.0)));
+  const WholeBodyState& s = model.state().state;
+  EXPECT_TRUE(std::isfinite(s.x_m) && std::isfinite(s.y_m) && std::isfinite(s.yaw_rad) && s.q_rad.allFinite());
+  EXPECT_EQ(model.commands_applied(), 99);
+}
+
 TEST(KinematicModelOptions, LoadsTheShippedConfigAndNamesBadKeys) {
   const KinematicModelOptions o =
       LoadKinematicModelOptions(std::string(TOPAY_SOURCE_DIR) + "/config/sim/kinematic_sim.yaml");
