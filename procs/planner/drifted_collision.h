@@ -27,8 +27,10 @@ struct DriftCheckOptions {
   double position_m = 0.05;
   double yaw_rad = 0.05;
   double joint_rad = 0.05;
-  /// How far ahead (s) of the state's time the drifted robot is checked: a stop from full
-  /// speed (1.3 s at the planned 85 % of 0.9 m/s^2) and its latency, with margin. > 0.
+  /// How far ahead (s) of the state's time the drifted robot is checked: an error carried
+  /// this long is taken as lasting (the tracker closes its normal errors within about a
+  /// second). A collision found within it is nearer than a stopping trajectory lasts (3-4 s
+  /// from speed), so the robot is stopped at once and replanned from the stop. > 0.
   double horizon_s = 2.0;
   /// On ROBOT_STATE (50 Hz), the check runs at most this often (s) while the drift exceeds
   /// the tolerances. > 0.
