@@ -46,19 +46,31 @@ bool BaseTrackingCost::Evaluate(double const* const* parameters, double* residua
     RolloutJacobian(states_, u, dt, &pose_rows);
   }
 
-  const double sqrt_p = std::sqrt(options_.position_weight);
+  const double sqrt_along = std::sqrt(options_.position_weight);
+  const double sqrt_cross = std::sqrt(options_.cross_track_weight);
   const double sqrt_yaw = std::sqrt(options_.yaw_weight);
   for (int j = 1; j <= N; ++j) {
     const double factor = j == N ? std::sqrt(options_.terminal_weight_factor) : 1.0;
     const int row = 3 * (j - 1);
-    // Position error, world frame: sqrt(w_p f_j) (p_WB,j - p_WB,ref,j).
-    r(row + 0) = factor * sqrt_p * (states_(0, j) - reference_->pose(0, j));
-    r(row + 1) = factor * sqrt_p * (states_(1, j) - reference_->pose(1, j));
+    // Position error in the reference's frame (along its heading t and across it n):
+    //   sqrt(w_p f_j) t . (p_WB,j - p_WB,ref,j),  sqrt(w_n f_j) n . (p_WB,j - p_WB,ref,j),
+    // t = (cos yaw_ref, sin yaw_ref), n = (-sin yaw_ref, cos yaw_ref). Equal weights give the
+    // world-frame |p - p_ref|^2; a heavier cross-track weight closes a lag along the path
+    // instead of across a bend.
+    const double c = std::cos(reference_->pose(2, j));
+    const double s = std::sin(reference_->pose(2, j));
+    const double dx = states_(0, j) - reference_->pose(0, j);
+    const double dy = states_(1, j) - reference_->pose(1, j);
+    r(row + 0) = factor * sqrt_along * (c * dx + s * dy);
+    r(row + 1) = factor * sqrt_cross * (-s * dx + c * dy);
     // Yaw error wrapped to (-pi, pi] (d wrap / d yaw = 1 away from the cut).
     r(row + 2) = factor * sqrt_yaw * WrapAngle(states_(2, j) - reference_->pose(2, j));
     if (with_jacobian) {
-      J.row(row + 0) *= factor * sqrt_p;
-      J.row(row + 1) *= factor * sqrt_p;
+      for (int col = 0; col < 2 * j; ++col) {  // state j depends on inputs 0..j-1 only
+        const double d_x = J(row + 0, col), d_y = J(row + 1, col);
+        J(row + 0, col) = factor * sqrt_along * (c * d_x + s * d_y);
+        J(row + 1, col) = factor * sqrt_cross * (-s * d_x + c * d_y);
+      }
       J.row(row + 2) *= factor * sqrt_yaw;
     }
   }

@@ -12,8 +12,11 @@ namespace topay {
 /// The base's NMPC residuals over the whole horizon as one Ceres cost function with an
 /// analytic Jacobian: one parameter block u = (v_0, omega_0, ..., v_N-1, omega_N-1) (2N),
 /// 8 N residuals, in row blocks:
-///   [0, 3N)   pose:   sqrt(w_p f_j) (x_j - x_ref,j), same for y, sqrt(w_yaw f_j) wrap(yaw_j - yaw_ref,j)
-///                     (j = 1..N, f_N = terminal_weight_factor, else 1; states by RolloutUnicycle)
+///   [0, 3N)   pose:   sqrt(w_p f_j) t_j . (p_j - p_ref,j) (along the reference's heading),
+///                     sqrt(w_n f_j) n_j . (p_j - p_ref,j) (across it), sqrt(w_yaw f_j) wrap(yaw_j - yaw_ref,j)
+///                     (t_j = (cos, sin) yaw_ref,j, n_j = (-sin, cos) yaw_ref,j; w_p = position_weight,
+///                     w_n = cross_track_weight; j = 1..N, f_N = terminal_weight_factor, else 1;
+///                     states by RolloutUnicycle)
 ///   [3N, 5N)  input:  sqrt(w_v) (v_k - v_ref,k), sqrt(w_omega) (omega_k - omega_ref,k)
 ///   [5N, 7N)  rate and rate limit, rate = (u_k - u_k-1) / dt_k, for v (w_a, a_max) and omega
 ///             (w_beta, beta_max):  sqrt(w) rate + sqrt(w_lim) sign(rate) max(0, |rate| - max)

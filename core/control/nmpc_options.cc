@@ -22,6 +22,7 @@ void NmpcOptions::Check() const {
   CheckOptionPositive(kNmpcOptions, "time_budget_s", time_budget_s);
   if (max_iterations < 1) FailOption(kNmpcOptions, "max_iterations", max_iterations, ">= 1");
   CheckOptionPositive(kNmpcOptions, "position_weight", position_weight);
+  CheckOptionPositive(kNmpcOptions, "cross_track_weight", cross_track_weight);
   CheckOptionPositive(kNmpcOptions, "yaw_weight", yaw_weight);
   CheckOptionPositive(kNmpcOptions, "joint_weight", joint_weight);
   if (!std::isfinite(terminal_weight_factor) || terminal_weight_factor < 1.0) {

@@ -9,7 +9,9 @@ namespace topay {
 /// config/tracker/tracker.yaml lists the same defaults (loaded by the process, not by core/).
 ///
 /// Costs (all squared, summed over the horizon's steps k = 0..N-1, states at k + 1):
-///   position_weight |p_WB,k+1 - p_WB,ref|^2 + yaw_weight wrap(yaw_k+1 - yaw_ref)^2
+///   position_weight (t . e_k+1)^2 + cross_track_weight (n . e_k+1)^2, e = p_WB - p_WB,ref
+///     (t along the reference's heading, n across it; equal weights: |e|^2)
+///   + yaw_weight wrap(yaw_k+1 - yaw_ref)^2
 ///   + joint_weight |q_k+1 - q_ref|^2           (x terminal_weight_factor at k + 1 = N)
 ///   + v_weight (v_k - v_ref)^2 + omega_weight (omega_k - omega_ref)^2
 ///   + qd_weight |qd_k - qd_ref|^2               (deviation from the feed-forward)
@@ -28,8 +30,10 @@ struct NmpcOptions {
   int max_iterations = 10;         ///< Levenberg-Marquardt iterations per solve (base and joints).
 
   // Cost weights (> 0 unless said otherwise).
-  double position_weight = 100.0;       ///< Base position error (1/m^2).
-  double yaw_weight = 50.0;             ///< Base yaw error, wrapped (1/rad^2).
+  double position_weight = 100.0;       ///< Base position error along the reference's heading (1/m^2).
+  double cross_track_weight = 1000.0;   ///< Base position error across the reference's heading (1/m^2):
+                                        ///< heavier, so that a lag is closed along the path, not across a bend.
+  double yaw_weight = 200.0;            ///< Base yaw error, wrapped (1/rad^2).
   double joint_weight = 100.0;          ///< Joint position errors (1/rad^2).
   double terminal_weight_factor = 5.0;  ///< Factor on the last step's pose and joint errors (>= 1).
   double v_weight = 1.0;                ///< v - v_ref (s^2/m^2).

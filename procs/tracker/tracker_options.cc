@@ -26,6 +26,7 @@ void ReadNmpc(YamlSection s, NmpcOptions* o) {
   s.Read("time_budget_s", &o->time_budget_s);
   s.Read("max_iterations", &o->max_iterations);
   s.Read("position_weight", &o->position_weight);
+  s.Read("cross_track_weight", &o->cross_track_weight);
   s.Read("yaw_weight", &o->yaw_weight);
   s.Read("joint_weight", &o->joint_weight);
   s.Read("terminal_weight_factor", &o->terminal_weight_factor);

@@ -64,6 +64,7 @@ ReferenceHorizon RandomReference(int steps, Rng* rng) {
 TEST(TrackingCostJacobianTest, BaseResidualsMatchCentralDifferences) {
   NmpcOptions options;
   options.horizon_steps = 12;
+  options.cross_track_weight = 700.0;  // unlike position_weight: the rows in the reference's frame
   const TrackerLimits limits = TopayLimits();
   Rng rng(19);
   int active_hinges = 0;
@@ -87,6 +88,36 @@ TEST(TrackingCostJacobianTest, BaseResidualsMatchCentralDifferences) {
     EXPECT_LT(error, 1e-5 * std::max(1.0, numeric.cwiseAbs().maxCoeff())) << "trial " << trial;
   }
   EXPECT_GT(active_hinges, 0);  // the hinge rows were exercised
+}
+
+// The position rows measure the error in the reference's frame: along its heading with
+// position_weight, across it with cross_track_weight; equal weights give the world-frame error.
+TEST(TrackingCostJacobianTest, PositionErrorIsWeightedAlongAndAcrossTheReferenceHeading) {
+  NmpcOptions options;
+  options.horizon_steps = 2;
+  options.position_weight = 100.0;
+  options.cross_track_weight = 400.0;
+  ReferenceHorizon reference = ReferenceHorizon::Zero(2, kJoints);
+  const double yaw_ref = 0.7;
+  for (int k = 0; k <= 2; ++k) reference.pose.col(k) << 1.0, 2.0, yaw_ref;
+  const Eigen::Vector2d along(std::cos(yaw_ref), std::sin(yaw_ref));
+  const Eigen::Vector2d across(-std::sin(yaw_ref), std::cos(yaw_ref));
+  const Eigen::VectorXd u = Eigen::VectorXd::Zero(4);  // standing still at x0
+  const auto position_cost = [&](const NmpcOptions& o, const Eigen::Vector2d& offset) {
+    BaseTrackingCost cost(o, TopayLimits());
+    const Eigen::Vector2d p = reference.pose.block<2, 1>(0, 1) + offset;
+    cost.SetProblem(Eigen::Vector3d(p.x(), p.y(), yaw_ref), &reference, Eigen::Vector2d::Zero());
+    Eigen::VectorXd r(cost.num_residuals());
+    const double* x = u.data();
+    cost.Evaluate(&x, r.data(), nullptr);
+    return r(0) * r(0) + r(1) * r(1);  // the first node's position rows (factor 1)
+  };
+  EXPECT_NEAR(position_cost(options, 0.1 * along), 100.0 * 0.01, 1e-12);
+  EXPECT_NEAR(position_cost(options, 0.1 * across), 400.0 * 0.01, 1e-12);
+  NmpcOptions equal = options;
+  equal.cross_track_weight = equal.position_weight;
+  const Eigen::Vector2d offset(0.03, -0.08);
+  EXPECT_NEAR(position_cost(equal, offset), 100.0 * offset.squaredNorm(), 1e-12);
 }
 
 TEST(TrackingCostJacobianTest, RolloutJacobianMatchesCentralDifferences) {
