@@ -207,8 +207,13 @@ TEST(NmpcTrackerTest, AfterAStallTheArmDoesNotRunAheadOfTheBase) {
 
 // Driving 0.6 m/s into a bend of radius 1 m (0.6 rad/s from 2 s for 3 s), the plant frozen for
 // freeze_s from freeze_at_s (the tracker brakes on the stale state), then catching up: how far
-// the base strayed from the reference's path (its nearest point) after the freeze.
-double LargestOffPathAfterAFreeze(const NmpcOptions& options, double freeze_at_s, double freeze_s) {
+// the base strayed from the reference's path (its nearest point) after the freeze, and its largest
+// error against the reference on the clock (the lag, which the tracker's lost_position_m bounds).
+struct AfterAFreeze {
+  double off_path_m = 0.0;
+  double error_m = 0.0;
+};
+AfterAFreeze LargestOffPathAfterAFreeze(const NmpcOptions& options, double freeze_at_s, double freeze_s) {
   NmpcTracker tracker(options, TopayLimits());
   CommandHistory history(64, kJoints);
   const SyntheticReference bend(
@@ -221,7 +226,8 @@ double LargestOffPathAfterAFreeze(const NmpcOptions& options, double freeze_at_s
       12.0, StateAt(0, 0, 0, 0));
   const TrackerReference reference{5, 0.0, bend.duration_s(), bend.Sampler()};
   WholeBodyState state = StateAt(0, 0, 0, 0);
-  double state_time_s = 0.0, largest_m = 0.0;
+  double state_time_s = 0.0;
+  AfterAFreeze largest;
   for (int i = 0; i * 0.02 <= 10.0; ++i) {
     const double now_s = i * 0.02;
     const bool frozen = now_s >= freeze_at_s && now_s < freeze_at_s + freeze_s;
@@ -236,9 +242,11 @@ double LargestOffPathAfterAFreeze(const NmpcOptions& options, double freeze_at_s
       const WholeBodyState& on_path = bend.At(t).state;
       nearest_m = std::min(nearest_m, std::hypot(state.x_m - on_path.x_m, state.y_m - on_path.y_m));
     }
-    largest_m = std::max(largest_m, nearest_m);
+    largest.off_path_m = std::max(largest.off_path_m, nearest_m);
+    const WholeBodyState& on_clock = bend.At(now_s + 0.02).state;
+    largest.error_m = std::max(largest.error_m, std::hypot(state.x_m - on_clock.x_m, state.y_m - on_clock.y_m));
   }
-  return largest_m;
+  return largest;
 }
 
 // After a stall the reference is ahead in the bend: a world-frame position cost pulls the base
@@ -251,10 +259,12 @@ TEST(NmpcTrackerTest, CatchingUpInABendStaysOnThePath) {
   world_frame.yaw_weight = 50.0;
   double worst_path_frame_m = 0.0, worst_world_frame_m = 0.0;
   for (const auto& [at_s, for_s] : {std::pair{1.5, 0.3}, std::pair{2.0, 0.3}, std::pair{3.0, 0.5}}) {
-    const double path_frame_m = LargestOffPathAfterAFreeze(Untimed(), at_s, for_s);
-    const double world_frame_m = LargestOffPathAfterAFreeze(world_frame, at_s, for_s);
-    std::printf("[ figure ] frozen %.1f s at %.1f s: off the path by at most %.3f m (%.3f m world frame)\n", for_s,
-                at_s, path_frame_m, world_frame_m);
+    const AfterAFreeze path_frame = LargestOffPathAfterAFreeze(Untimed(), at_s, for_s);
+    const AfterAFreeze world = LargestOffPathAfterAFreeze(world_frame, at_s, for_s);
+    const double path_frame_m = path_frame.off_path_m, world_frame_m = world.off_path_m;
+    std::printf("[ figure ] frozen %.1f s at %.1f s: off the path by at most %.3f m (%.3f m world frame); largest "
+                "error on the clock %.3f m (%.3f m)\n",
+                for_s, at_s, path_frame_m, world_frame_m, path_frame.error_m, world.error_m);
     EXPECT_LT(path_frame_m, 0.1);
     worst_path_frame_m = std::max(worst_path_frame_m, path_frame_m);
     worst_world_frame_m = std::max(worst_world_frame_m, world_frame_m);
