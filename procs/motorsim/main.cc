@@ -49,6 +49,7 @@ int main(int argc, char** argv) {
   sim::motors::MotorSim sim(options, 0.0);
   motorsim::MotorSimNodeOptions node_options;
   node_options.step_period_s = options.step_period_s;
+  node_options.stalled_plant = options.stalled_plant;
   motorsim::MotorSimNode node(&loop, bus.get(), &sim, node_options);
   spdlog::info("{}: bus {}, base node {}, {} drives (nodes {}..{}), step {} ms, {} scripted faults", process.name,
                bus->url(), options.base.node_id, sim.num_joints(), options.joint_node_ids.front(),

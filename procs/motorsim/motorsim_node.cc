@@ -17,7 +17,12 @@ bool Every(std::int64_t n) { return n <= 10 || n % 1000 == 0; }  // log the firs
 
 MotorSimNode::MotorSimNode(procs::ProcessLoop* loop, can::CanBus* bus, sim::motors::MotorSim* sim,
                            const MotorSimNodeOptions& options)
-    : loop_(loop), bus_(bus), sim_(sim), options_(options), start_(procs::ProcessLoop::Clock::now()) {
+    : loop_(loop),
+      bus_(bus),
+      sim_(sim),
+      options_(options),
+      start_(procs::ProcessLoop::Clock::now()),
+      plant_(options.stalled_plant) {
   loop_->Subscribe<robot_state_t>(std::string(channels::SIM_PLANT_STATE),
                                   [this](const robot_state_t& msg) { OnPlantState(msg); });
   loop_->Subscribe<motorsim_fault_t>(std::string(channels::MOTORSIM_FAULT),
@@ -34,7 +39,7 @@ procs::ProcessLoop::Clock::time_point MotorSimNode::OnStep() {
   const double now_s = NowS();
   DrainBus(now_s);
   std::vector<can::CanFrame> out;
-  sim_->Step(now_s, plant_ ? &*plant_ : nullptr, &out);
+  sim_->Step(now_s, plant_.At(now_s, sim_->command()), &out);
   for (const can::CanFrame& frame : out) Send(frame);
   const control_command_t command = ToActuatorMessage(sim_->command(), procs::NowUtime());
   loop_->lcm().publish(std::string(channels::ACTUATOR_COMMAND), &command);
@@ -80,8 +85,8 @@ void MotorSimNode::OnPlantState(const robot_state_t& msg) {
     if (Every(++counts_.bad_plant_states)) spdlog::warn("ignored SIM_PLANT_STATE: {}", error);
     return;
   }
-  plant_ = std::move(*state);
   plant_received_s_ = NowS();
+  plant_.OnPlantState(*state, plant_received_s_);
   ++counts_.plant_states;
 }
 
@@ -105,13 +110,18 @@ void MotorSimNode::UpdateHealth(double now_s) {
   const bool degraded = !plant_fresh || sim_->faults().bus_off() || counts_.send_failures > 0;
   std::string status = sim_->StatusLine();
   if (!plant_fresh) status += ", NO PLANT STATE";
+  if (plant_fresh && plant_.stale()) status += ", the simulator stalled: state carried on the command";
   if (counts_.send_failures > 0) status += ", send failures " + std::to_string(counts_.send_failures);
   loop_->SetHealth(degraded ? heartbeat_t::WARN : heartbeat_t::OK, status);
 }
 
 std::string MotorSimNode::FinalReport() const {
   const can::CanBusStatus& bus = bus_->status();
+  const sim::motors::StalledPlantCounts& stalled = plant_.counts();
   return sim_->Report() + "\n" +
+         fmt::format("motorsim: simulator stalls {} (longest {:.3f} s): the state carried on the command {:.3f} s, held "
+                     "{:.3f} s\n",
+                     stalled.stalls, stalled.longest_stall_s, stalled.carried_s, stalled.held_s) +
          fmt::format("motorsim: plant states {} (bad {}), MOTORSIM_FAULT {} (rejected {}), ACTUATOR_COMMAND {}, "
                      "send failures {}{}, receive errors {}\n"
                      "motorsim: bus {}: state {}, sent {}, received {}, error frames {}, malformed {}, lost {}",

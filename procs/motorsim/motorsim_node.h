@@ -2,7 +2,9 @@
 // topay-motorsim on the bus and LCM (docs/motorsim.md): every step (5 ms) it drains the CAN bus
 // into the MotorSim, steps it with the plant's latest state (SIM_PLANT_STATE from topay-sim in
 // CAN mode), sends the frames it gives and publishes ACTUATOR_COMMAND (200 Hz); MOTORSIM_FAULT
-// injects faults at run time. Heartbeat health: WARN without a plant state (none yet or none
+// injects faults at run time. While SIM_PLANT_STATE is stale (the simulator's process not
+// running) the drives answer with the last state carried on their own command (StalledPlant).
+// Heartbeat health: WARN without a plant state (none yet or none
 // for plant_state_timeout_s), while injected bus-off lasts or after send errors, else OK.
 
 #include <cstdint>
@@ -12,6 +14,7 @@
 #include "drivers/can/can_bus.h"
 #include "procs/runtime/process_loop.h"
 #include "sim/motors/motor_sim.h"
+#include "sim/motors/stalled_plant.h"
 #include "topay/motorsim_fault_t.hpp"
 #include "topay/robot_state_t.hpp"
 
@@ -21,6 +24,7 @@ struct MotorSimNodeOptions {
   double step_period_s = 0.005;          ///< the step (200 Hz): bus drained, frames sent, ACTUATOR_COMMAND
   double plant_state_timeout_s = 0.5;    ///< no SIM_PLANT_STATE for this long: health WARN
   double status_period_s = 1.0;          ///< heartbeat status line update, s
+  sim::motors::StalledPlantOptions stalled_plant;  ///< a stalled simulator: the state carried on
 };
 
 struct MotorSimNodeCounts {
@@ -59,7 +63,7 @@ class MotorSimNode {
   MotorSimNodeOptions options_;
   procs::ProcessLoop::Clock::time_point start_;
   std::int64_t step_ = 0;
-  std::optional<sim::PlantState> plant_;
+  sim::motors::StalledPlant plant_;
   double plant_received_s_ = -1.0;
   double next_status_s_ = 0.0;
   std::string last_send_error_;

@@ -87,6 +87,17 @@ ProcessLoop::Clock::time_point ProcessLoop::NextDeadline() const {
   return next;
 }
 
+int ProcessLoop::HandlePending(int max_messages) {
+  int handled = 0;
+  while (handled < max_messages) {
+    const int result = lcm_->handleTimeout(0);
+    if (result < 0) return -1;
+    if (result == 0) break;
+    ++handled;
+  }
+  return handled;
+}
+
 int ProcessLoop::Run() { return RunUntil(Clock::time_point::max()); }
 
 int ProcessLoop::RunUntil(Clock::time_point deadline) {

@@ -55,6 +55,11 @@ class ProcessLoop {
   template <class Msg>
   lcm::Subscription* Subscribe(const std::string& channel, std::function<void(const Msg&)> handler);
 
+  /// Handles the LCM messages already received, at most max_messages, without waiting (from a
+  /// timer about to act on what arrived: the simulator after a stall). Returns how many were
+  /// handled, or -1 if LCM failed.
+  int HandlePending(int max_messages);
+
   /// Health and status text of the next heartbeats (heartbeat_t::OK/WARN/ERROR).
   void SetHealth(std::int8_t health, std::string status);
 

@@ -15,6 +15,8 @@ namespace topay::simproc {
 namespace {
 
 bool Every(std::int64_t n) { return n <= 10 || n % 1000 == 0; }  // log the first 10, then every 1000th
+constexpr int kCommandQueueCapacity = 1000;    // commands LCM keeps until handled: 5 s at 200 Hz
+constexpr int kMaxMessagesBeforeSteps = 2000;  // handled before a plant wake-up runs its steps
 
 }  // namespace
 
@@ -34,13 +36,17 @@ SimNode::SimNode(procs::ProcessLoop* loop, SimCore* core, const SimNodeOptions& 
     scan_worker_ = std::make_unique<ScanWorker>(core_->ReleaseScanSensor(), std::move(publish), options.rate > 0.0);
   }
   loop_->Subscribe<control_command_t>(std::string(channels::CONTROL_COMMAND),
-                                      [this](const control_command_t& msg) { OnCommand(msg); });
+                                      [this](const control_command_t& msg) { OnCommand(msg); })
+      ->setQueueCapacity(kCommandQueueCapacity);
   if (options.actuator_input) {
     gripper_target_ = core_->plant().state().gripper;
     plant_state_every_steps_ =
         std::max<std::int64_t>(1, std::llround(1.0 / (options.plant_state_rate_hz * core_->plant().step_s())));
+    // After a stall the commands of the whole stall are waiting (200 Hz, up to the pacer's
+    // catch-up): keep them all for the timeline instead of LCM's 30.
     loop_->Subscribe<control_command_t>(std::string(channels::ACTUATOR_COMMAND),
-                                        [this](const control_command_t& msg) { OnActuatorCommand(msg); });
+                                        [this](const control_command_t& msg) { OnActuatorCommand(msg); })
+        ->setQueueCapacity(kCommandQueueCapacity);
     loop_->Subscribe<gripper_command_t>(std::string(channels::GRIPPER_COMMAND),
                                         [this](const gripper_command_t& msg) { OnGripperCommand(msg); });
   }
@@ -67,6 +73,9 @@ RealTimePacer::Clock::time_point SimNode::OnPlantTimer() {
     started_wall_ = now;
     started_sim_s_ = core_->time_s();
   }
+  // What arrived while the process was not running (a stall) first: the commands among it are
+  // due at the steps about to catch up (CommandTimeline).
+  if (loop_->HandlePending(kMaxMessagesBeforeSteps) < 0) spdlog::error("LCM receive failed");
   const int due = pacer_.StepsDue(now, core_->steps() - steps_at_start_);
   KeepTheWallClock();
   for (int i = 0; i < due; ++i) {
@@ -88,6 +97,7 @@ RealTimePacer::Clock::time_point SimNode::OnPlantTimer() {
 
 void SimNode::StepOnce() {
   if (!follower_) {
+    ApplyDueCommands();
     core_->Step();
     if (options_.actuator_input && core_->steps() % plant_state_every_steps_ == 0) PublishPlantState();
     return;
@@ -119,18 +129,30 @@ void SimNode::OnCommand(const control_command_t& msg) {
     }
     return;
   }
-  const std::string why = core_->Command(ToActuatorCommand(msg));
-  if (!why.empty() && Every(core_->plant().counts().commands_rejected)) {
-    spdlog::warn("rejected command #{} ({}): the drives brake", core_->plant().counts().commands_rejected, why);
+  Schedule(msg);
+}
+
+void SimNode::OnActuatorCommand(const control_command_t& msg) { Schedule(msg); }
+
+void SimNode::Schedule(const control_command_t& msg) {
+  const std::string why = commands_.Push(msg.utime, ToActuatorCommand(msg), NowSimUtime(), procs::NowUtime());
+  if (!why.empty() && Every(++commands_dropped_)) {
+    spdlog::warn("dropped {} (#{} dropped): {}", options_.actuator_input ? "ACTUATOR_COMMAND" : "CONTROL_COMMAND",
+                 commands_dropped_, why);
   }
 }
 
-void SimNode::OnActuatorCommand(const control_command_t& msg) {
-  sim::ActuatorCommand command = ToActuatorCommand(msg);
-  command.gripper = gripper_target_;  // the gripper is not on the motors' bus: GRIPPER_COMMAND's
-  const std::string why = core_->Command(command);
-  if (!why.empty() && Every(core_->plant().counts().commands_rejected)) {
-    spdlog::warn("rejected ACTUATOR_COMMAND (#{} rejected: {}): the drives brake", core_->plant().counts().commands_rejected, why);
+void SimNode::ApplyDueCommands() {
+  commands_.TakeDue(SimUtime(start_utime_, core_->next_time_s()), &due_commands_);
+  for (sim::ActuatorCommand& command : due_commands_) {
+    // CAN mode: the gripper is not on the motors' bus; its target is GRIPPER_COMMAND's.
+    if (options_.actuator_input) command.gripper = gripper_target_;
+    const std::string why = core_->Command(command);
+    if (!why.empty() && Every(core_->plant().counts().commands_rejected)) {
+      spdlog::warn("rejected {} (#{} rejected: {}): the drives brake",
+                   options_.actuator_input ? "ACTUATOR_COMMAND" : "CONTROL_COMMAND",
+                   core_->plant().counts().commands_rejected, why);
+    }
   }
 }
 
@@ -315,6 +337,7 @@ std::string SimNode::FinalReport() const {
       core_->counts().scans, scans_published_.load(), ScansDropped(), core_->counts().events_applied, core_->counts().events_failed,
       bad_events_);
   if (follower_) text += "\nfinal: " + FollowReport();
+  if (!follower_) text += "\nfinal: timeline: " + commands_.Report();
   if (options_.actuator_input) {
     text += fmt::format("\nfinal: CAN mode: {} SIM_PLANT_STATE published, {} CONTROL_COMMAND ignored",
                         plant_states_published_, commands_ignored_);

@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "procs/runtime/process_loop.h"
+#include "procs/sim/command_timeline.h"
 #include "procs/sim/real_time_pacer.h"
 #include "procs/sim/scan_worker.h"
 #include "procs/sim/sim_core.h"
@@ -81,6 +82,10 @@ class SimNode : public SimListener {
   /// utime of the sim's clock now (before the first step: of the time stepping will start).
   std::int64_t NowSimUtime() const;
   void OnCommand(const control_command_t& msg);
+  /// Keeps a command for the step of its stamp (CommandTimeline).
+  void Schedule(const control_command_t& msg);
+  /// Hands the commands due at the next step to the plant.
+  void ApplyDueCommands();
   void OnActuatorCommand(const control_command_t& msg);
   void OnGripperCommand(const gripper_command_t& msg);
   /// CAN mode: SIM_PLANT_STATE and GRIPPER_STATE when due after a step.
@@ -104,6 +109,9 @@ class SimNode : public SimListener {
   std::int64_t bad_events_ = 0;
   std::unique_ptr<TrajectoryFollower> follower_;  // follow mode only
   std::int64_t commands_ignored_ = 0;             // CONTROL_COMMANDs in follow mode or CAN mode
+  CommandTimeline commands_;                      // the plant's commands (CONTROL_ or ACTUATOR_COMMAND) on their own time
+  std::vector<sim::ActuatorCommand> due_commands_;
+  std::int64_t commands_dropped_ = 0;             // out of order (CommandTimeline)
   double gripper_target_ = 0.0;                   // CAN mode: the latest GRIPPER_COMMAND
   std::int64_t plant_state_every_steps_ = 1;      // CAN mode: SIM_PLANT_STATE period in plant steps
   std::int64_t plant_states_published_ = 0;

@@ -24,6 +24,7 @@ std::string CheckMotorSimOptions(const MotorSimOptions& o) {
     }
   }
   if (o.base.node_id == 127) return "base.node_id: 127 is the host's (the bridge's) node id";
+  if (std::string bad = CheckStalledPlantOptions(o.stalled_plant); !bad.empty()) return "stalled_plant: " + bad;
   if (std::string bad = CheckFaultInjectionOptions(o.faults, static_cast<int>(o.joint_node_ids.size())); !bad.empty()) {
     return "faults: " + bad;
   }

@@ -15,6 +15,7 @@
 #include "drivers/can/can_frame.h"
 #include "sim/motors/drive_node.h"
 #include "sim/motors/fault_injection.h"
+#include "sim/motors/stalled_plant.h"
 #include "sim/motors/wheel_controller_node.h"
 #include "sim/plant/actuator_command.h"
 #include "sim/plant/plant_state.h"
@@ -27,6 +28,7 @@ struct MotorSimOptions {
   std::vector<int> joint_node_ids = {1, 2, 3, 4, 5, 6, 7};  ///< joint k's drive: node joint_node_ids[k-1]
   DriveNodeOptions drive;            ///< every drive's options (node_id set per joint)
   FaultInjectionOptions faults;      ///< none by default
+  StalledPlantOptions stalled_plant; ///< topay-motorsim: the plant's state while the simulator stalls
 };
 
 /// Empty when the options are valid (every part's own checks, distinct node ids, none of them

@@ -132,6 +132,12 @@ MotorSimOptions ParseMotorSimOptions(const std::string& yaml_text, const std::st
     ReadFaults(s, static_cast<int>(o.joint_node_ids.size()), &o.faults);
     s.Finish();
   }
+  {
+    YamlSection s = top.Section("stalled_plant");
+    s.Read("stale_after_s", &o.stalled_plant.stale_after_s);
+    s.Read("carry_on_s", &o.stalled_plant.carry_on_s);
+    s.Finish();
+  }
   top.Finish();
   if (std::string bad = CheckMotorSimOptions(o); !bad.empty()) throw ConfigError(source, "", bad);
   return o;

@@ -1,6 +1,6 @@
 // topay-motorsim's subscriptions (SIM_PLANT_STATE, MOTORSIM_FAULT) with the calls its node makes
 // (MotorSimNode::On*): the plant state read (PlantStateFromMessage) and used by the devices'
-// next step, faults read (FaultEventFromMessage) and injected (MotorSim::Inject); the devices
+// next steps (carried on their command while stale: StalledPlant), faults read (FaultEventFromMessage) and injected (MotorSim::Inject); the devices
 // stepped every 5 ms on ticks, as the node does. Shipped options. Checked: refusals say why; every frame
 // the devices send is a valid CAN frame; the actuator command to the plant is finite.
 // Input: subscriber_fuzz.h, 2 channels; at most 2 s of steps per tick, 20 s in all.
@@ -13,6 +13,7 @@
 #include "procs/motorsim/motorsim_messages.h"
 #include "sim/motors/motor_sim.h"
 #include "sim/motors/motorsim_options.h"
+#include "sim/motors/stalled_plant.h"
 #include "tests/fuzz/subscriber_fuzz.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
@@ -22,7 +23,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
       sim::motors::LoadMotorSimOptions(ShippedConfig("sim/motorsim.yaml"));
   double now_s = 0.0;
   sim::motors::MotorSim motors(options, now_s);
-  std::optional<sim::PlantState> plant;
+  sim::motors::StalledPlant plant(options.stalled_plant);
   std::vector<can::CanFrame> out;
   FuzzReader in(data, size);
   for (int i = 0; i < kMaxSubscriberOps; ++i) {
@@ -35,7 +36,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
       for (const double end = now_s + advance_s; now_s < end;) {
         now_s += 5e-3;
         out.clear();
-        motors.Step(now_s, plant ? &*plant : nullptr, &out);
+        motors.Step(now_s, plant.At(now_s, motors.command()), &out);
         for (const can::CanFrame& frame : out) FuzzCheck(can::CheckCanFrame(frame).empty(), "devices send valid frames");
       }
       const sim::ActuatorCommand command = motors.command();
@@ -46,7 +47,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     if (op->channel == 0) {
       if (auto m = DecodeFuzzed<robot_state_t>(op->bytes, op->fix_fingerprint)) {
         auto state = motorsim::PlantStateFromMessage(*m, motors.num_joints(), &error);
-        if (state) plant = std::move(state);
+        if (state) plant.OnPlantState(*state, now_s);
         else FuzzCheck(!error.empty(), "a refused plant state says why");
       }
     } else if (auto m = DecodeFuzzed<motorsim_fault_t>(op->bytes, op->fix_fingerprint)) {

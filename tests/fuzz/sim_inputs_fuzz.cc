@@ -1,6 +1,7 @@
 // topay-sim's subscriptions (CONTROL_COMMAND, ACTUATOR_COMMAND, GRIPPER_COMMAND, TRAJECTORY,
 // SIM_EVENT) with the calls its node makes (SimNode::On*): commands converted
-// (ToActuatorCommand) into the plant (sim::Plant::Command, CommandGripper), trajectories into
+// (ToActuatorCommand) and kept on their stamps' time (CommandTimeline, any stamp) into the
+// plant (sim::Plant::Command at the step they are due, CommandGripper), trajectories into
 // the follow mode's follower (TrajectoryFollower::Accept, StateAt), events read
 // (FromEventMessage); the plant stepped at its rate on ticks. Shipped options and robot.
 // Checked: the plant's true state stays finite whatever it was commanded, and so does the
@@ -12,6 +13,7 @@
 #include <string>
 
 #include "procs/kinematic_sim/kinematic_model.h"
+#include "procs/sim/command_timeline.h"
 #include "procs/sim/sim_messages.h"
 #include "procs/sim/sim_options.h"
 #include "procs/sim/trajectory_follower.h"
@@ -41,6 +43,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   simproc::TrajectoryFollower follower(model.num_joints(), options.follower);
   kinsim::KinematicModel kinematic(kinsim::KinematicModelOptions{});
   double gripper_target = 0.0;
+  simproc::CommandTimeline timeline;
+  std::vector<sim::ActuatorCommand> due;
   FuzzReader in(data, size);
   std::int64_t now = kFuzzT0Utime;
   double stepped_s = 0.0;
@@ -51,22 +55,26 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
       const double advance_s = std::min(2.0, 1e-6 * static_cast<double>(op->advance_us));
       if ((stepped_s += advance_s) > 20.0) break;
       now += static_cast<std::int64_t>(advance_s * 1e6);
-      for (double t = 0; t < advance_s; t += plant.step_s()) plant.Step();
+      const std::int64_t stepped_from = now - static_cast<std::int64_t>(advance_s * 1e6);
+      for (double t = 0; t < advance_s; t += plant.step_s()) {
+        timeline.TakeDue(stepped_from + static_cast<std::int64_t>((t + plant.step_s()) * 1e6), &due);
+        for (const sim::ActuatorCommand& command : due) plant.Command(command);
+        plant.Step();
+      }
+      FuzzCheck(timeline.pending() <= simproc::CommandTimelineOptions{}.max_pending, "the timeline stays bounded");
       CheckPlantState(plant.state());
       CheckPlantState(follower.StateAt(now, plant.state()));
       continue;
     }
     switch (op->channel) {
       case 0:
-        if (auto m = DecodeFuzzed<control_command_t>(op->bytes, op->fix_fingerprint)) {
-          plant.Command(simproc::ToActuatorCommand(*m));
-        }
-        break;
-      case 1:
+      case 1:  // CONTROL_COMMAND, ACTUATOR_COMMAND (one plant takes both here; the node sets the
+               // CAN mode's gripper target when the command is due, here when it is kept)
         if (auto m = DecodeFuzzed<control_command_t>(op->bytes, op->fix_fingerprint)) {
           sim::ActuatorCommand command = simproc::ToActuatorCommand(*m);
-          command.gripper = gripper_target;
-          plant.Command(command);
+          if (op->channel == 1) command.gripper = gripper_target;
+          const std::string why = timeline.Push(m->utime, command, now, now);
+          FuzzCheck(why.empty() || why.find("before the newest") != std::string::npos, "a dropped command says why");
         }
         break;
       case 2:

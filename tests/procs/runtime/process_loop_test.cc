@@ -85,6 +85,24 @@ TEST(ProcessLoop, ScheduledTimersRunAtTheDeadlinesTheyAskFor) {
   EXPECT_GE(earliest_ms, 0.0) << "called before its deadline";
 }
 
+TEST(ProcessLoop, HandlePendingHandlesWhatHasArrivedUpToTheLimitWithoutWaiting) {
+  ProcessLoop loop(MemqOptions());
+  std::vector<std::int64_t> seen;
+  loop.Subscribe<heartbeat_t>("HB_TEST", [&](const heartbeat_t& hb) { seen.push_back(hb.seq); });
+  for (int i = 0; i < 5; ++i) {
+    heartbeat_t hb{};
+    hb.seq = i;
+    loop.lcm().publish("HB_TEST", &hb);
+  }
+  EXPECT_EQ(loop.HandlePending(3), 3);
+  EXPECT_EQ(seen, std::vector<std::int64_t>({0, 1, 2}));
+  const Clock::time_point before = Clock::now();
+  EXPECT_EQ(loop.HandlePending(10), 2);
+  EXPECT_EQ(loop.HandlePending(10), 0);  // nothing left: returns at once
+  EXPECT_LT(Clock::now() - before, std::chrono::milliseconds(500));
+  EXPECT_EQ(seen.size(), 5u);
+}
+
 TEST(ProcessLoop, SigtermEndsRunCleanly) {
   ProcessLoop loop(MemqOptions());
   int ticks = 0;

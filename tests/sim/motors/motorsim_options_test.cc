@@ -30,6 +30,8 @@ TEST(MotorSimOptionsTest, ShippedConfigHasTheDefaults) {
   EXPECT_EQ(o.drive.quick_stop_decel_radps2, d.drive.quick_stop_decel_radps2);
   EXPECT_EQ(o.faults.rx_loss_percent, 0.0);
   EXPECT_TRUE(o.faults.events.empty());
+  EXPECT_EQ(o.stalled_plant.stale_after_s, d.stalled_plant.stale_after_s);
+  EXPECT_EQ(o.stalled_plant.carry_on_s, d.stalled_plant.carry_on_s);
 }
 
 TEST(MotorSimOptionsTest, ReadsKeysAndEvents) {
@@ -42,7 +44,10 @@ faults:
   events:
     - {kind: bus_off, at_s: 2.0, duration_s: 0.5}
     - {kind: drive_fault, joint: 7, at_s: 1.0, code: 8976}
+stalled_plant: {stale_after_s: 0.05, carry_on_s: 0.5}
 )", "m.yaml");
+  EXPECT_EQ(o.stalled_plant.stale_after_s, 0.05);
+  EXPECT_EQ(o.stalled_plant.carry_on_s, 0.5);
   EXPECT_EQ(o.base.node_id, 20);
   EXPECT_EQ(o.base.modes.timeout_mode, base::BaseMode::kStandby);
   EXPECT_EQ(o.base.modes.command_timeout_s, 0.2);
@@ -64,6 +69,9 @@ TEST(MotorSimOptionsTest, ErrorsNameTheFileAndKey) {
   EXPECT_NE(ErrorOf("faults: {events: [{kind: drive_fault, joint: 9}]}").find("joint 9"), std::string::npos);
   EXPECT_NE(ErrorOf("drives: {node_ids: [1.5]}").find("drives.node_ids"), std::string::npos);
   EXPECT_NE(ErrorOf("step_period_s: [").find("malformed YAML"), std::string::npos);
+  EXPECT_NE(ErrorOf("stalled_plant: {stale_after_s: 0}").find("stalled_plant: stale_after_s must be > 0"),
+            std::string::npos);
+  EXPECT_NE(ErrorOf("stalled_plant: {carry_on: 1}").find("stalled_plant.carry_on"), std::string::npos);
   EXPECT_EQ(ErrorOf(""), "") << "every key is optional";
 }
 
