@@ -2,8 +2,8 @@
 # Stalls a process the way an overloaded machine does, to reproduce what a stall does to the
 # graph (docs/reliability.md, finding 34): while a process named NAME (exactly, as pgrep -x)
 # runs, it is stopped (SIGSTOP) for STOP_S seconds every PERIOD_S seconds, then continued
-# (SIGCONT). Runs until interrupted or DURATION_S seconds (0: until interrupted); prints how
-# many stalls it made. Example, beside a mission campaign:
+# (SIGCONT). Runs until SIGTERM or SIGINT or DURATION_S seconds (0: until stopped); prints how
+# many stalls it made. (A job a script starts in the background ignores SIGINT: stop it with kill.) Example, beside a mission campaign:
 #   tools/bench/stall_process.sh topay-sim 0.5 1.5 0 &   build-test/bin/topay-missions ...
 set -u
 NAME=${1:?usage: stall_process.sh NAME STOP_S PERIOD_S [DURATION_S]}
