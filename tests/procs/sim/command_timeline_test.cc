@@ -9,17 +9,11 @@
 
 #include <cmath>
 
-#include "core/io/robot_loader.h"
 #include "sim/plant/plant.h"
+#include "tests/sim/plant/plant_test_robot.h"
 
 namespace topay::simproc {
 namespace {
-
-const RobotModel& Robot() {
-  static const RobotModel model = LoadRobotModel(std::string(TOPAY_SOURCE_DIR) + "/config/robot/topay_mm.urdf",
-                                                 std::string(TOPAY_SOURCE_DIR) + "/config/robot/topay_mm.yaml");
-  return model;
-}
 
 sim::ActuatorCommand Cmd(double v, double w = 0.0) {
   sim::ActuatorCommand c;
@@ -141,7 +135,7 @@ TEST(CommandTimeline, AStalledPlantCatchesUpToWhereAPlantThatNeverStalledIs) {
   const double stall_from_s = 0.45, stall_to_s = 1.05, end_s = 1.6;  // the stall spans the bend
   sim::PlantOptions options;
   // Never stalled: each command arrives when the wall clock reaches its stamp, a step at a time.
-  sim::Plant steady(Robot(), options, 7);
+  sim::Plant steady(test::TopayRobot(), options, 7);
   CommandTimeline steady_timeline;
   int next = 0;
   while (steady.time_s() < end_s - 1e-9) {
@@ -154,7 +148,7 @@ TEST(CommandTimeline, AStalledPlantCatchesUpToWhereAPlantThatNeverStalledIs) {
   // Stalled: no steps from 0.45 s to 1.05 s of the wall clock while the commands keep coming;
   // then the steps it missed in a burst. Once with the timeline, once as before it (the latest
   // command handed to the plant on arrival, then the burst).
-  sim::Plant caught_up(Robot(), options, 7), latest_only(Robot(), options, 7);
+  sim::Plant caught_up(test::TopayRobot(), options, 7), latest_only(test::TopayRobot(), options, 7);
   CommandTimeline timeline;
   next = 0;
   for (sim::Plant* plant : {&caught_up, &latest_only}) {
