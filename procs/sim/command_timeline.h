@@ -1,6 +1,5 @@
 #pragma once
-// Commands applied at the plant step of their own stamp (docs/simulator.md, "Commands on their
-// own time"). A simulator process that stalls (a loaded machine) catches up afterwards by running
+// Commands applied at the plant step of their own stamp (docs/simulator.md, "Time base"). A simulator process that stalls (a loaded machine) catches up afterwards by running
 // the steps it missed in a burst; the commands that arrived meanwhile are then all waiting, and
 // handed to the plant on arrival the plant would drive the whole stall on the command from before
 // it (a robot in a bend went straight on at its old speed). The timeline keeps each command until
@@ -9,8 +8,9 @@
 //
 // Stamps are utimes of the wall clock, which the sim's clock follows (SimUtime). A stamp more
 // than max_lead_us ahead of the wall clock is not trusted (another clock, a corrupted copy): the
-// command is taken as stamped now. A command stamped before the last one the plant took is out of order (reordered
-// on the way, or a copy): it is dropped, counted, so that an old command never replaces a newer.
+// command is taken as stamped now. A command stamped before the newest one kept (waiting or
+// taken) is out of order (reordered on the way, or a copy): it is dropped, counted, so that an
+// old command never replaces a newer.
 
 #include <cstdint>
 #include <deque>
