@@ -63,6 +63,15 @@ void NmpcTracker::Halt() {
   active_id_ = 0;
 }
 
+void NmpcTracker::ContinueFrom(const ControlCommand& command) {
+  last_.v_mps = command.v_mps;
+  last_.omega_radps = command.omega_radps;
+  last_.qd_radps = command.qd_radps;
+  history_.Clear();
+  active_id_ = 0;
+  arm_paced_id_ = 0;  // the arm's pacing starts again from this robot
+}
+
 void NmpcTracker::Stop() {
   StopStep(last_, solver_.options().control_period_s, solver_.limits(), &output_.command);
   // Tracking may resume later (the same or a new trajectory): start again from the command.

@@ -69,6 +69,12 @@ class NmpcTracker {
   /// the next trajectory starts from rest (without it, Step would ramp down from the command
   /// before the stop, commanding motion to a robot at rest).
   void Halt();
+  /// The robot moves at `command` (its measured rates, or a command sent elsewhere): the next
+  /// cycle's rate terms continue from it and the latency prediction forgets the commands it
+  /// had (none of them moved this robot). The next trajectory starts without a warm start and
+  /// with the arm's pacing from the robot's own progress.
+  /// command must have num_joints joint rates.
+  void ContinueFrom(const ControlCommand& command);
 
   const ControlCommand& last_command() const { return last_; }
   const NmpcSolver& solver() const { return solver_; }

@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "core/common/angles.h"
+#include "core/control/arc_yaw_reference.h"
 
 namespace topay::planner {
 
@@ -63,6 +64,30 @@ TrajectorySample PredictDriftedStart(const ActiveTrajectory& active, const msgs:
                                      std::int64_t t0_utime) {
   TrajectorySample start = active.trajectory->MakePoint();
   DriftedRobot(active, robot).Evaluate(active.TimeAt(t0_utime), &start);
+  return start;
+}
+
+TrajectorySample PredictTrackedStart(TrackedRobotPredictor* predictor, const ActiveTrajectory& active,
+                                     const msgs::RobotStateEstimate& robot, std::int64_t t0_utime,
+                                     const TrackerLimits& plan_limits, TrackedRobotPredictionSummary* summary) {
+  // Times along the trajectory: its t = 0 at 0.
+  const TrackerReference reference = MakeArcYawReference(active.trajectory, active.trajectory_id, 0.0);
+  MeasuredRobot measured;
+  measured.state = robot.state;
+  measured.state_time_s = active.TimeAt(robot.utime);
+  const int num_joints = robot.state.num_joints();
+  measured.rates = ControlCommand::Zero(num_joints);
+  measured.rates.v_mps = robot.v_mps;
+  measured.rates.omega_radps = robot.omega_radps;
+  if (robot.qdot_radps.size() == num_joints) measured.rates.qd_radps = robot.qdot_radps;
+  TrajectorySample start = active.trajectory->MakePoint();
+  predictor->Predict(reference, measured, std::max(active.TimeAt(t0_utime), measured.state_time_s), &start);
+  if (summary != nullptr) *summary = predictor->summary();
+  start.a_mps2 = std::clamp(start.a_mps2, -plan_limits.base.a_max_mps2, plan_limits.base.a_max_mps2);
+  start.beta_radps2 = std::clamp(start.beta_radps2, -plan_limits.base.beta_max_radps2, plan_limits.base.beta_max_radps2);
+  if (plan_limits.qdd_max_radps2.size() == start.qdd_radps2.size()) {
+    start.qdd_radps2 = start.qdd_radps2.cwiseMax(-plan_limits.qdd_max_radps2).cwiseMin(plan_limits.qdd_max_radps2);
+  }
   return start;
 }
 

@@ -10,6 +10,7 @@
 
 #include <Eigen/Geometry>
 
+#include "core/control/tracked_robot_prediction.h"
 #include "core/trajectory/arc_yaw_trajectory.h"
 #include "core/trajectory/trajectory_sample.h"
 #include "procs/msgs/convert_robot_state.h"
@@ -85,6 +86,19 @@ class DriftedRobot {
 /// drift replan starts.
 TrajectorySample PredictDriftedStart(const ActiveTrajectory& active, const msgs::RobotStateEstimate& robot,
                                      std::int64_t t0_utime);
+
+/// Where the tracker will have brought a robot that drifted off `active` by t0_utime: the
+/// tracker's closed loop (TrackedRobotPredictor) from the robot's measured state and rates (no
+/// joint rates, or the wrong number: taken as 0) along `active`: where a drift replan starts
+/// (triggers.drift_start tracked). t0_utime before robot.utime: the robot as it is. The start's
+/// accelerations are clamped into `plan_limits` (the plans' are a share of the robot's,
+/// limits.acceleration_share, and the tracker may use all of the robot's). *summary
+/// (optional): the prediction's. Throws std::invalid_argument for a robot whose joint count is
+/// not the predictor's or with non-finite values.
+TrajectorySample PredictTrackedStart(TrackedRobotPredictor* predictor, const ActiveTrajectory& active,
+                                     const msgs::RobotStateEstimate& robot, std::int64_t t0_utime,
+                                     const TrackerLimits& plan_limits,
+                                     TrackedRobotPredictionSummary* summary = nullptr);
 
 /// A world box that holds the robot over [t_from_s, t_to_s] of the trajectory: the base
 /// positions (every 0.05 s) grown by `reach_m` (the robot's extent around its base axis)

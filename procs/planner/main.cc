@@ -14,6 +14,8 @@
 #include <optional>
 
 #include "core/common/error.h"
+#include "core/control/tracked_robot_prediction.h"
+#include "core/control/tracker_limits.h"
 #include "core/io/planner_config.h"
 #include "core/io/robot_loader.h"
 #include "procs/planner/plan_worker.h"
@@ -21,6 +23,7 @@
 #include "procs/planner/planner_process_options.h"
 #include "procs/planner/stop_planner.h"
 #include "procs/runtime/process_loop.h"
+#include "procs/tracker/tracker_options.h"
 
 using namespace topay;
 using namespace topay::planner;
@@ -33,6 +36,7 @@ PlannerProcessOptions ResolveOptions(const procs::ProcessOptions& process) {
   const std::string config_dir = procs::ConfigDir(TOPAY_CONFIG_DIR);
   procs::DefaultRobotFiles(config_dir, &o.robot_urdf, &o.robot_yaml);
   if (o.planner_config.empty()) o.planner_config = config_dir + "/planner/topay.yaml";
+  if (o.tracker_config.empty()) o.tracker_config = config_dir + "/tracker/tracker.yaml";
   return o;
 }
 
@@ -48,11 +52,16 @@ int main(int argc, char** argv) {
   WholeBodyPlannerOptions planner_options;
   std::unique_ptr<RobotModel> model;
   std::unique_ptr<Kinematics> kinematics;
+  std::unique_ptr<TrackedRobotPredictor> tracked_start;  // triggers.drift_start tracked
   try {
     options = ResolveOptions(process);
     planner_options = LoadPlannerOptions(options.planner_config);
     AdaptPlannerOptions(options, &planner_options);
     model = std::make_unique<RobotModel>(LoadRobotModel(options.robot_urdf, options.robot_yaml));
+    if (options.triggers.drift_start_tracked) {  // the tracker's NMPC at the robot's full limits
+      tracked_start = std::make_unique<TrackedRobotPredictor>(tracker::LoadTrackerOptions(options.tracker_config).nmpc,
+                                                               MakeTrackerLimits(*model));
+    }
     ApplyPlanLimits(options, model.get(), &planner_options);
     kinematics = std::make_unique<Kinematics>(*model);
   } catch (const std::exception& e) {  // ConfigError and the robot files' errors
@@ -67,10 +76,12 @@ int main(int argc, char** argv) {
   const StopPlanner stop_planner(*model, planner_options.base_limits.value_or(model->base_limits));
   PlanWorker worker(*kinematics, planner_options, options.map.unknown, FieldUpdatePeriod(options),
                     options.map.slice_m);
-  PlannerNode node(&loop, &worker, *kinematics, stop_planner, options);
+  PlannerNode node(&loop, &worker, *kinematics, stop_planner, options, tracked_start.get());
   spdlog::info("{}: robot {}, planner {}, unknown voxels {}, replanning budget {:.2f} s, {:.0f} % of the "
-               "acceleration limits{}", process.name, model->name, options.planner_config, ToString(options.map.unknown),
+               "acceleration limits, drift replans from the {} robot{}", process.name, model->name,
+               options.planner_config, ToString(options.map.unknown),
                options.timing.replan_budget_s, 100.0 * options.limits.acceleration_share,
+               tracked_start ? "tracked (" + options.tracker_config + ")" : std::string("carried"),
                options.deterministic.enabled ? "; DETERMINISTIC mode (message time, synchronous plans: replay "
                                                "and tests, not the robot)" : "");
   const int code = loop.Run();

@@ -8,6 +8,7 @@
 #include <spdlog/spdlog.h>
 
 #include "core/collision/scene_clearance.h"
+#include "core/common/angles.h"
 #include "core/common/stamp_difference.h"
 #include "core/common/stopwatch.h"
 #include "core/trajectory/offset_trajectory.h"
@@ -83,12 +84,15 @@ const char* ToString(PlanTrigger trigger) {
 }
 
 PlannerNode::PlannerNode(procs::ProcessLoop* loop, PlanWorker* worker, const Kinematics& kinematics,
-                         const StopPlanner& stop_planner, const PlannerProcessOptions& options)
+                         const StopPlanner& stop_planner, const PlannerProcessOptions& options,
+                         TrackedRobotPredictor* tracked_start)
     : loop_(loop),
       worker_(worker),
       kinematics_(kinematics),
       stop_planner_(stop_planner),
       options_(options),
+      tracked_start_(tracked_start),
+      plan_limits_(MakeTrackerLimits(kinematics.model())),
       clock_(options.deterministic.enabled ? ClockSource::kMessages : ClockSource::kWall),
       reach_(ComputeReachHeights(kinematics)),
       map_(options.map.unknown),
@@ -369,7 +373,32 @@ void PlannerNode::CheckActiveAgainstMap(std::int64_t now) {
               /*preempt=*/first || sooner);
 }
 
-bool PlannerNode::FillStart(PlanTrigger trigger, std::int64_t now, PlanJob* job, std::string* error) const {
+TrajectorySample PlannerNode::DriftedStart(const ActiveTrajectory& on, std::int64_t t0) {
+  const TrajectorySample carried = PredictDriftedStart(on, *robot_, t0);
+  if (tracked_start_ == nullptr) return carried;
+  const Stopwatch watch;
+  TrackedRobotPredictionSummary summary;
+  TrajectorySample tracked;
+  try {
+    tracked = PredictTrackedStart(tracked_start_, on, *robot_, t0, plan_limits_, &summary);
+  } catch (const std::exception& e) {  // the intake checked the state: not expected
+    spdlog::error("drift replan from trajectory {}: no tracked start ({}); starting with the error carried along",
+                  on.trajectory_id, e.what());
+    return carried;
+  }
+  const double ms = watch.ElapsedMs();
+  const double shift_m = std::hypot(tracked.state.x_m - carried.state.x_m, tracked.state.y_m - carried.state.y_m);
+  ++counts_.tracked_starts;
+  counts_.tracked_start_ms_max = std::max(counts_.tracked_start_ms_max, ms);
+  counts_.tracked_start_shift_m_max = std::max(counts_.tracked_start_shift_m_max, shift_m);
+  spdlog::info("drift replan from trajectory {}: starts where the tracker will have brought the robot, {:.3f} m "
+               "and {:.3f} rad from the start carried with its error ({:.3f} m off the trajectory then; {} cycles, "
+               "{:.1f} ms)", on.trajectory_id, shift_m, std::abs(WrapAngle(tracked.state.yaw_rad - carried.state.yaw_rad)),
+               summary.final_position_error_m, summary.cycles, ms);
+  return tracked;
+}
+
+bool PlannerNode::FillStart(PlanTrigger trigger, std::int64_t now, PlanJob* job, std::string* error) {
   const PlanTimingOptions& t = options_.timing;
   const std::int64_t t0 = now + Micros(t.replan_budget_s);
   // A trajectory still running now: the robot will be where it says at t0 (at its end, at
@@ -385,7 +414,7 @@ bool PlannerNode::FillStart(PlanTrigger trigger, std::int64_t now, PlanJob* job,
   const bool drift = trigger == PlanTrigger::kDrift || trigger == PlanTrigger::kDriftCollision;
   const ActiveTrajectory* drifted_from = drift && robot_ ? OnAt(robot_->utime) : nullptr;
   if (running && drifted_from == on) {
-    job->start = PredictDriftedStart(*on, *robot_, t0);
+    job->start = DriftedStart(*on, t0);
     job->from_rest = false;
     job->on_trajectory_id = on->trajectory_id;
     job->t0_utime = t0;
@@ -941,6 +970,9 @@ std::string PlannerNode::Report() const {
                      d.confirmed, d.resent, d.given_up);
   out += "  triggers:";
   for (const auto& [trigger, n] : counts_.triggers) out += fmt::format(" {} {}", ToString(trigger), n);
+  out += fmt::format("\n  drift starts: {} where the tracker will have brought the robot (max {:.1f} ms, at most "
+                     "{:.3f} m from the start carried with its error)",
+                     counts_.tracked_starts, counts_.tracked_start_ms_max, counts_.tracked_start_shift_m_max);
   out += fmt::format("\n  map: {} checks of the trajectory ahead (mean {:.2f} ms, max {:.2f} ms; {} of the drifted robot, "
                      "{} colliding), {} rejected; "
                      "{} background field updates (last {:.0f} ms, max {:.0f} ms), before a plan max {:.0f} ms\n",

@@ -32,6 +32,8 @@
 
 #include "core/optimization/trajectory_problem.h"
 #include "core/robot/kinematics.h"
+#include "core/control/tracked_robot_prediction.h"
+#include "core/control/tracker_limits.h"
 #include "procs/msgs/convert_goal.h"
 #include "procs/msgs/convert_robot_state.h"
 #include "procs/msgs/robot_state_intake.h"
@@ -69,6 +71,11 @@ struct PlannerNodeCounts {
   std::int64_t maps_rejected = 0, map_checks = 0;
   /// Checks of the drifted robot (triggers.drift_check), and how many found a collision.
   std::int64_t drift_checks = 0, drift_collisions = 0;
+  /// Drift replans started where the tracker will have brought the robot (triggers.drift_start
+  /// tracked), the largest prediction's time (ms) and the largest distance (m) between that
+  /// start and the one carried with the robot's error (PredictDriftedStart).
+  std::int64_t tracked_starts = 0;
+  double tracked_start_ms_max = 0.0, tracked_start_shift_m_max = 0.0;
   double map_check_ms_max = 0.0, map_check_ms_sum = 0.0;
   /// Deterministic mode: messages handled from the inbox (all, and by PlannerInput's
   /// alternative: GOAL, ROBOT_STATE, MAP_UPDATE, TRACKER_STATUS), and the most that waited.
@@ -82,8 +89,11 @@ using PlannerInput = std::variant<goal_t, robot_state_t, map_update_t, tracker_s
 class PlannerNode {
  public:
   /// Subscribes and adds its timer to *loop (before Run). Everything passed outlives it.
+  /// tracked_start: where drift replans start (triggers.drift_start tracked; null: carried,
+  /// PredictDriftedStart).
   PlannerNode(procs::ProcessLoop* loop, PlanWorker* worker, const Kinematics& kinematics,
-              const StopPlanner& stop_planner, const PlannerProcessOptions& options);
+              const StopPlanner& stop_planner, const PlannerProcessOptions& options,
+              TrackedRobotPredictor* tracked_start = nullptr);
 
   void OnGoal(const goal_t& msg);
   void OnRobotState(const robot_state_t& msg);
@@ -133,7 +143,9 @@ class PlannerNode {
   // Starts a plan now (a goal, or `preempt`: cancelling the one in progress) or after the plan
   // in progress.
   void RequestPlan(PlanTrigger trigger, const std::string& reason, bool preempt = false);
-  bool FillStart(PlanTrigger trigger, std::int64_t now, PlanJob* job, std::string* error) const;
+  bool FillStart(PlanTrigger trigger, std::int64_t now, PlanJob* job, std::string* error);
+  // Where a drift replan from `on` starts at t0 (tracked_start_, or carried along).
+  TrajectorySample DriftedStart(const ActiveTrajectory& on, std::int64_t t0);
   void HandleOutcome(PlanJobOutcome outcome);
   void HandleFailure(const PlanJobOutcome& outcome);
   void PublishTrajectory(const PlanJobOutcome& outcome, std::int64_t now);
@@ -209,6 +221,8 @@ class PlannerNode {
   const Kinematics& kinematics_;
   const StopPlanner& stop_planner_;
   PlannerProcessOptions options_;
+  TrackedRobotPredictor* tracked_start_;
+  TrackerLimits plan_limits_;  // the plans' rate limits (a share of the robot's accelerations)
   PlannerClock clock_;
   std::deque<PlannerInput> inbox_;  // deterministic mode: messages waiting for the running plan
   bool awaiting_plan_ = false;      // deterministic mode: a plan runs, the inbox waits for it

@@ -63,6 +63,12 @@ void ReadTriggers(YamlSection s, ReplanTriggerOptions* o) {
   s.Read("drift_check_joint_rad", &o->drift_check.joint_rad);
   s.Read("drift_check_horizon_s", &o->drift_check.horizon_s);
   s.Read("drift_check_period_s", &o->drift_check.period_s);
+  std::string drift_start = o->drift_start_tracked ? "tracked" : "carried";
+  s.Read("drift_start", &drift_start);
+  if (drift_start != "tracked" && drift_start != "carried") {
+    throw ConfigError(s.source(), s.FieldPath("drift_start"), "expected tracked or carried, got '" + drift_start + "'");
+  }
+  o->drift_start_tracked = drift_start == "tracked";
   s.Read("check_reach_m", &o->check_reach_m);
   s.Finish();
 }
@@ -224,6 +230,8 @@ PlannerProcessOptions LoadPlannerProcessOptions(const std::string& path) {
   ReadRobotFiles(&top, &o.robot_urdf, &o.robot_yaml);
   top.Read("planner_config", &o.planner_config);
   o.planner_config = ResolveBeside(o.planner_config, path);
+  top.Read("tracker_config", &o.tracker_config);
+  o.tracker_config = ResolveBeside(o.tracker_config, path);
   ReadMap(top.Section("map"), &o.map);
   ReadTiming(top.Section("timing"), &o.timing);
   ReadDelivery(top.Section("delivery"), &o.delivery);

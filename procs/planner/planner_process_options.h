@@ -123,6 +123,14 @@ struct ReplanTriggerOptions {
   /// `check`'s sampling and margin): a collision replans from the drifted robot and stops it if
   /// no plan comes in time (procs/planner/drifted_collision.h, finding 34).
   DriftCheckOptions drift_check;
+  /// Where a drift replan (and a replan for a drifted robot's collision) starts, at t0 a
+  /// replanning budget ahead: true (YAML `drift_start: tracked`) where the tracker will have
+  /// brought the robot by then (TrackedRobotPredictor: the tracker's NMPC, with
+  /// tracker_config's options, in closed loop on an ideal plant from the measured state and
+  /// rates); false (`carried`) the trajectory at t0 with the robot's error carried along
+  /// unchanged (PredictDriftedStart). The tracker closes an error, so the carried start lay
+  /// 0.26-0.3 m and 0.3 rad from where the robot then was (finding 34).
+  bool drift_start_tracked = true;
   /// The map check looks at the blocked voxels within this distance (m) of the base axis
   /// along the rest of the trajectory: the robot's whole extent (arm stretched out over the
   /// base) with room to spare. > 0.
@@ -210,6 +218,9 @@ struct PlannerProcessOptions {
   std::string robot_urdf;   ///< "" = the shipped robot (config/robot/topay_mm.urdf).
   std::string robot_yaml;   ///< "" = config/robot/topay_mm.yaml.
   std::string planner_config;  ///< Core planner YAML; "" = config/planner/topay.yaml.
+  /// The tracker's YAML (its `nmpc` section: how the tracker closes an error, for
+  /// triggers.drift_start tracked); "" = config/tracker/tracker.yaml.
+  std::string tracker_config;
   PlannerMapOptions map;
   PlanTimingOptions timing;
   /// The newest TRAJECTORY sent again until the tracker reports it (`delivery`:

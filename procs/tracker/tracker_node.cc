@@ -8,6 +8,7 @@
 
 #include "core/common/angles.h"
 #include "core/common/sample_statistics.h"
+#include "core/control/arc_yaw_reference.h"
 #include "procs/msgs/convert_trajectory.h"
 #include "procs/runtime/process_loop.h"
 #include "topay/heartbeat_t.hpp"
@@ -17,23 +18,6 @@ namespace topay::tracker {
 namespace {
 
 bool Every(std::int64_t n) { return n <= 10 || n % 1000 == 0; }  // log the first 10, then every 1000th
-
-// Copies what the NMPC reads from a full sample into the tracker's (allocation-free for equal
-// sizes; the tracker's sample has no jerk).
-void CopySample(const TrajectorySample& from, TrajectorySample* to) {
-  to->t_s = from.t_s;
-  to->state.x_m = from.state.x_m;
-  to->state.y_m = from.state.y_m;
-  to->state.yaw_rad = from.state.yaw_rad;
-  to->state.q_rad = from.state.q_rad;
-  to->s_m = from.s_m;
-  to->v_mps = from.v_mps;
-  to->omega_radps = from.omega_radps;
-  to->a_mps2 = from.a_mps2;
-  to->beta_radps2 = from.beta_radps2;
-  to->qd_radps = from.qd_radps;
-  to->qdd_radps2 = from.qdd_radps2;
-}
 
 bool AtRest(const ControlCommand& c, double tolerance) {
   return std::abs(c.v_mps) < tolerance && std::abs(c.omega_radps) < tolerance &&
@@ -107,15 +91,8 @@ void TrackerNode::OnTrajectory(const poly_trajectory_t& msg, std::int64_t now_ut
   loaded.goal_id = msg.goal_id;
   loaded.start_utime = msg.start_utime;
   auto shared = std::make_shared<const ArcYawTrajectory>(std::move(*trajectory));
-  auto point = std::make_shared<TrajectorySample>(shared->MakePoint());
   loaded.trajectory = shared;
-  loaded.reference.trajectory_id = msg.trajectory_id;
-  loaded.reference.start_time_s = Seconds(msg.start_utime);
-  loaded.reference.duration_s = shared->duration_s();
-  loaded.reference.sampler = [shared, point](double t_s, TrajectorySample* out) {
-    shared->Evaluate(t_s, point.get());
-    CopySample(*point, out);
-  };
+  loaded.reference = MakeArcYawReference(shared, msg.trajectory_id, Seconds(msg.start_utime));
   spdlog::info("TRAJECTORY {} (goal {}) accepted: {:.2f} s, starts in {:.3f} s", loaded.id, loaded.goal_id,
                loaded.reference.duration_s, static_cast<double>(msg.start_utime - now_utime) * 1e-6);
   // It takes over at its start: a pending one starting then or later would never run; one

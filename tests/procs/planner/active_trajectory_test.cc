@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cstdio>
 #include <numbers>
 
 namespace topay::planner {
@@ -124,6 +125,51 @@ TEST(ActiveTrajectoryTest, ADriftedStartTurnsItsOffsetWithTheTrajectory) {
   EXPECT_NEAR(start.state.yaw_rad, std::numbers::pi / 2, 1e-6);
   EXPECT_NEAR(start.state.x_m, 0.0, 1e-6);
   EXPECT_NEAR(start.state.y_m, 0.1, 1e-6);
+}
+
+// Limits for Drive()'s 2 joints: the robot's (config/robot/topay_mm.yaml), and the plans' with
+// 85 % of its accelerations.
+TrackerLimits TwoJointLimits(double acceleration_share) {
+  TrackerLimits limits;
+  limits.base = BaseLimits{1.0, 0.8 * acceleration_share, 0.9, 1.0 * acceleration_share};
+  limits.qd_max_radps = Eigen::VectorXd::Constant(2, 2.35);
+  limits.qdd_max_radps2 = Eigen::VectorXd::Constant(2, 6.28 * acceleration_share);
+  return limits;
+}
+
+// A robot 0.2 m left of the straight trajectory, turned 0.15 rad towards it, at the trajectory's
+// speed: in the second to t0 the tracker brings it back towards the line (0.05 m across it then,
+// 0.1 m ahead), so the tracked start is nearer the trajectory than the carried one (0.2 m off),
+// still on the robot's side, and moving; its accelerations within the plans' limits.
+TEST(ActiveTrajectoryTest, ATrackedStartIsWhereTheTrackerBringsTheRobot) {
+  const ActiveTrajectory a = Drive();
+  msgs::RobotStateEstimate robot;
+  robot.utime = 3'000'000;
+  const TrajectorySample now = a.SampleAt(robot.utime);
+  robot.state = now.state;
+  robot.state.y_m += 0.2;
+  robot.state.yaw_rad -= 0.15;
+  robot.v_mps = now.v_mps;  // no joint rates: taken as 0
+  const std::int64_t t0 = 4'000'000;
+  const TrajectorySample at_t0 = a.SampleAt(t0);
+  const TrackerLimits plan_limits = TwoJointLimits(0.85);
+  TrackedRobotPredictor predictor(NmpcOptions{}, TwoJointLimits(1.0));
+  TrackedRobotPredictionSummary summary;
+  const TrajectorySample start = PredictTrackedStart(&predictor, a, robot, t0, plan_limits, &summary);
+  const TrajectorySample carried = PredictDriftedStart(a, robot, t0);
+  EXPECT_NEAR(carried.state.y_m - at_t0.state.y_m, 0.2, 1e-9);
+  EXPECT_GT(start.state.y_m - at_t0.state.y_m, 0.0);
+  EXPECT_LT(start.state.y_m - at_t0.state.y_m, 0.1);
+  std::printf("[ figure ] tracked start: %.3f m along, %.3f m across the trajectory at t0, yaw %.3f rad off, v %.3f m/s (trajectory %.3f m/s)\n", start.state.x_m - at_t0.state.x_m, start.state.y_m - at_t0.state.y_m, start.state.yaw_rad - at_t0.state.yaw_rad, start.v_mps, at_t0.v_mps);
+  EXPECT_LT(std::hypot(start.state.x_m - at_t0.state.x_m, start.state.y_m - at_t0.state.y_m), 0.15);
+  EXPECT_GT(start.v_mps, 0.5 * at_t0.v_mps);
+  EXPECT_EQ(summary.cycles, 50);
+  EXPECT_LE(std::abs(start.a_mps2), plan_limits.base.a_max_mps2);
+  EXPECT_LE(std::abs(start.beta_radps2), plan_limits.base.beta_max_radps2);
+  EXPECT_LE(start.qdd_radps2.cwiseAbs().maxCoeff(), plan_limits.qdd_max_radps2(0));
+  // A robot with the wrong joint count is refused by name, not predicted.
+  robot.state.q_rad.resize(3);
+  EXPECT_THROW(PredictTrackedStart(&predictor, a, robot, t0, plan_limits), std::invalid_argument);
 }
 
 TEST(ActiveTrajectoryTest, SweptRegionHoldsTheBaseGrownByTheReach) {

@@ -36,14 +36,18 @@ TEST(PlannerProcessOptionsTest, ShippedFileLoadsWithTheDefaults) {
   EXPECT_EQ(o.map.start_arm_overlap_m, d.map.start_arm_overlap_m);
   EXPECT_EQ(o.map.start_arm_escape_overlap_m, d.map.start_arm_escape_overlap_m);
   EXPECT_EQ(o.goals.reached_orientation_rad, d.goals.reached_orientation_rad);
+  EXPECT_EQ(o.triggers.drift_start_tracked, d.triggers.drift_start_tracked);
+  EXPECT_TRUE(o.triggers.drift_start_tracked);
   EXPECT_TRUE(std::filesystem::exists(o.planner_config)) << o.planner_config;
+  EXPECT_TRUE(std::filesystem::exists(o.tracker_config)) << o.tracker_config;  // beside: ../tracker/tracker.yaml
 }
 
 TEST(PlannerProcessOptionsTest, ValuesAreReadAndBadOnesNamed) {
   const PlannerProcessOptions o = LoadPlannerProcessOptions(
       WriteYaml("good", "map: {unknown: occupied, field_update_period_s: 0.5, flush_all_from_rest: false}\n"
                         "timing: {replan_budget_s: 0.4, max_failed_plans_from_rest: 4}\n"
-                        "triggers: {drift_check_position_m: 0.07, drift_check_horizon_s: 3.0}\n"
+                        "triggers: {drift_check_position_m: 0.07, drift_check_horizon_s: 3.0, drift_start: carried}\n"
+                        "tracker_config: my_tracker.yaml\n"
                         "goals: {reached_position_m: 0.01, reached_orientation_rad: 0.02}\nstop: {replan_grace_s: 0.6, grace_reach_m: 3.0}\n"));
   EXPECT_EQ(o.map.unknown, UnknownVoxelPolicy::kOccupied);
   EXPECT_FALSE(o.map.flush_all_from_rest);
@@ -54,6 +58,8 @@ TEST(PlannerProcessOptionsTest, ValuesAreReadAndBadOnesNamed) {
   EXPECT_EQ(o.timing.max_failed_plans_from_rest, 4);
   EXPECT_EQ(o.triggers.drift_check.position_m, 0.07);
   EXPECT_EQ(o.triggers.drift_check.horizon_s, 3.0);
+  EXPECT_FALSE(o.triggers.drift_start_tracked);
+  EXPECT_EQ(o.tracker_config, (std::filesystem::temp_directory_path() / "my_tracker.yaml").string());
   EXPECT_EQ(o.goals.reached_position_m, 0.01);
   EXPECT_EQ(o.goals.reached_orientation_rad, 0.02);
   const auto expect_error = [](const std::string& text, const std::string& field) {
@@ -70,6 +76,7 @@ TEST(PlannerProcessOptionsTest, ValuesAreReadAndBadOnesNamed) {
   expect_error("triggers: {drift_check_yaw_rad: 0}\n", "triggers.drift_check_yaw_rad");
   expect_error("triggers: {drift_check_horizon_s: .inf}\n", "triggers.drift_check_horizon_s");
   expect_error("triggers: {drift_check_period_s: -0.1}\n", "triggers.drift_check_period_s");
+  expect_error("triggers: {drift_start: extrapolated}\n", "triggers.drift_start");
   expect_error("timing: {max_failed_plans_from_rest: 0}\n", "timing.max_failed_plans_from_rest");
   expect_error("timing: {max_state_age_s: 0}\n", "timing.max_state_age_s");
   expect_error("timing: {max_state_age_s: .nan}\n", "timing.max_state_age_s");
