@@ -373,7 +373,8 @@ void PlannerNode::CheckActiveAgainstMap(std::int64_t now) {
               /*preempt=*/first || sooner);
 }
 
-TrajectorySample PlannerNode::DriftedStart(const ActiveTrajectory& on, std::int64_t t0) {
+TrajectorySample PlannerNode::DriftedStart(const ActiveTrajectory& on, std::int64_t t0, double* spent_s) {
+  *spent_s = 0.0;
   const TrajectorySample carried = PredictDriftedStart(on, *robot_, t0);
   if (tracked_start_ == nullptr) return carried;
   const Stopwatch watch;
@@ -387,6 +388,7 @@ TrajectorySample PlannerNode::DriftedStart(const ActiveTrajectory& on, std::int6
     return carried;
   }
   const double ms = watch.ElapsedMs();
+  if (!clock_.message_time()) *spent_s = 1e-3 * ms;
   const double shift_m = std::hypot(tracked.state.x_m - carried.state.x_m, tracked.state.y_m - carried.state.y_m);
   ++counts_.tracked_starts;
   counts_.tracked_start_ms_max = std::max(counts_.tracked_start_ms_max, ms);
@@ -414,11 +416,15 @@ bool PlannerNode::FillStart(PlanTrigger trigger, std::int64_t now, PlanJob* job,
   const bool drift = trigger == PlanTrigger::kDrift || trigger == PlanTrigger::kDriftCollision;
   const ActiveTrajectory* drifted_from = drift && robot_ ? OnAt(robot_->utime) : nullptr;
   if (running && drifted_from == on) {
-    job->start = DriftedStart(*on, t0);
+    double predicted_s = 0.0;
+    job->start = DriftedStart(*on, t0, &predicted_s);
     job->from_rest = false;
     job->on_trajectory_id = on->trajectory_id;
     job->t0_utime = t0;
-    job->time_limit_s = t.replan_budget_s - t.publish_margin_s;
+    // The prediction (tens of ms, more under load) came out of the budget: a plan finishing
+    // after t0 is dropped as late. At least kMinDriftPlan_s is left to it.
+    constexpr double kMinDriftPlan_s = 0.1;
+    job->time_limit_s = std::max(kMinDriftPlan_s, t.replan_budget_s - t.publish_margin_s - predicted_s);
     return true;
   }
   if (running) {

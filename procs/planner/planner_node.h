@@ -144,8 +144,9 @@ class PlannerNode {
   // in progress.
   void RequestPlan(PlanTrigger trigger, const std::string& reason, bool preempt = false);
   bool FillStart(PlanTrigger trigger, std::int64_t now, PlanJob* job, std::string* error);
-  // Where a drift replan from `on` starts at t0 (tracked_start_, or carried along).
-  TrajectorySample DriftedStart(const ActiveTrajectory& on, std::int64_t t0);
+  // Where a drift replan from `on` starts at t0 (tracked_start_, or carried along); *spent_s:
+  // the wall-clock time the prediction took (0 in message time), which the plan does not have.
+  TrajectorySample DriftedStart(const ActiveTrajectory& on, std::int64_t t0, double* spent_s);
   void HandleOutcome(PlanJobOutcome outcome);
   void HandleFailure(const PlanJobOutcome& outcome);
   void PublishTrajectory(const PlanJobOutcome& outcome, std::int64_t now);
