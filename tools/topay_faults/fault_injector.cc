@@ -14,10 +14,13 @@
 #include <lcm/lcm-cpp.hpp>
 
 #include "graph_processes.h"
+#include "obstacle_goal.h"
 #include "tools/topay_missions/child_command.h"
+#include "topay/base_pose_t.hpp"
 #include "topay/drive_command_t.hpp"
 #include "topay/goal_t.hpp"
 #include "topay/motorsim_fault_t.hpp"
+#include "topay_msgs/checked_decode.h"
 #include "topay_msgs/channels.h"
 
 namespace topay::tools {
@@ -194,8 +197,9 @@ bool FaultInjector::BeginGoal(const FaultSpec& fault) {
       notes_ = "the room has no box";
       return false;
     }
-    std::uniform_int_distribution<std::size_t> pick(0, options_.box_centers_m.size() - 1);
-    PublishGoal(options_.box_centers_m[pick(random_)], 0.0);
+    // A box near the robot: one it has seen (obstacle_goal.h).
+    constexpr double kNearRobot_m = 4.0;
+    PublishGoal(ChooseObstacleGoal(options_.box_centers_m, RobotPosition(), kNearRobot_m, &random_), 0.0);
   } else if (fault.name == "goal-every-50ms") {
     PublishGoal(RandomPointInRoom(), 0.0);
   } else {
@@ -203,6 +207,13 @@ bool FaultInjector::BeginGoal(const FaultSpec& fault) {
     return false;
   }
   return true;
+}
+
+std::optional<Eigen::Vector2d> FaultInjector::RobotPosition() const {
+  const std::vector<std::uint8_t> last = monitor_->LastMessage(std::string(channels::BASE_POSE));
+  const auto pose = CheckedDecode<base_pose_t>(last.data(), static_cast<int>(last.size()), nullptr);
+  if (!pose || !std::isfinite(pose->x_m) || !std::isfinite(pose->y_m)) return std::nullopt;
+  return Eigen::Vector2d(pose->x_m, pose->y_m);
 }
 
 void FaultInjector::Tick() {

@@ -9,6 +9,7 @@
 #include <deque>
 #include <memory>
 #include <mutex>
+#include <optional>
 #include <random>
 #include <string>
 #include <unordered_set>
@@ -64,6 +65,8 @@ class FaultInjector {
   bool ApplyRules(const std::string& rules);
   void RemoveRules();
   void PublishGoal(const Eigen::Vector3d& p_WE, double yaw_rad);
+  // The robot's base position in the simulator's last BASE_POSE on the bus (nullopt: none or bad).
+  std::optional<Eigen::Vector2d> RobotPosition() const;
   Eigen::Vector3d RandomPointInRoom();
   void SendHostilePayloads(int step);
   void SendDelayedCopies();
