@@ -14,7 +14,9 @@ namespace {
 
 constexpr double kMovingRecentlyS = 0.3;  // moving = an ACTUATOR_COMMAND above threshold this recently
 constexpr double kResetPeriodS = 0.5;
-constexpr std::int64_t kToolGoalIds = 900000000;  // goal ids at or above: the injector's goals
+// The injector's goal ids: 900000001 on (the mission's are microsecond stamps, about 1.8e15).
+constexpr std::int64_t kToolGoalIds = 900000000, kToolGoalIdsEnd = 1000000000;
+bool IsToolGoal(std::int64_t goal_id) { return goal_id >= kToolGoalIds && goal_id < kToolGoalIdsEnd; }
 constexpr double kDriveStatusFreshS = 0.5;         // DRIVE_STATUS comes at 10 Hz: older means no bridge
 
 // The bridge's state, if its last DRIVE_STATUS is recent (a dead bridge's last word is not news).
@@ -77,6 +79,7 @@ bool FaultEpisode::Tick(const GraphView& view) {
       break;
     case Phase::kFault:
       injector_->Tick();
+      WatchPlannerGoal(view);
       WatchSafeState(view, -1.0);
       OperatorReset(view);
       if (view.now_s - inject_s_ >= fault_.hold_s) {
@@ -166,13 +169,25 @@ void FaultEpisode::OperatorReset(const GraphView& view) {
   }
 }
 
-bool FaultEpisode::Recovered(const GraphView& view) {
-  if (!planner_failure_noted_ && view.planner_state == planner_status_t::FAILED &&
-      view.planner_goal_id >= kToolGoalIds) {
+void FaultEpisode::WatchPlannerGoal(const GraphView& view) {
+  if (IsToolGoal(view.planner_goal_id)) tool_goal_taken_ = true;
+  if (!planner_failure_noted_ && view.planner_state == planner_status_t::FAILED && IsToolGoal(view.planner_goal_id)) {
     AddReaction("planner: " + view.planner_failure);
     planner_failure_noted_ = true;
   }
-  if (fault_.refusal_expected && !planner_failure_noted_) return false;  // its reaction has not come yet
+}
+
+bool FaultEpisode::Recovered(const GraphView& view) {
+  WatchPlannerGoal(view);
+  if (fault_.refusal_expected && !planner_failure_noted_) {
+    // The planner took the goal (its target not in the map: a box it has not seen) and the
+    // mission's own goal replaced it before any refusal: none can come now; recovery as for any
+    // fault. Otherwise the refusal has not come yet.
+    const bool superseded = tool_goal_taken_ && view.planner_goal_id != 0 && !IsToolGoal(view.planner_goal_id);
+    if (!superseded) return false;
+    if (!superseded_noted_) AddReaction("planner: planned for it (the target not in its map), superseded by the mission's goal");
+    superseded_noted_ = true;
+  }
   if (view.mission_state == mission_status_t::SUCCEEDED) return true;
   if (fault_.stop_expected && result_.safe_ms < 0.0) return false;  // no recovery before the stop
   // Moving again after the fault was cleared and after the stop it caused, if it caused one.

@@ -57,6 +57,9 @@ class FaultEpisode {
   void Inject(const GraphView& view);
   void WatchSafeState(const GraphView& view, double graph_end_s);
   void OperatorReset(const GraphView& view);
+  // Notes the planner's answer to an injected goal: a refusal (FAILED naming it), or that it
+  // took the goal (PLANNING naming it).
+  void WatchPlannerGoal(const GraphView& view);
   bool Recovered(const GraphView& view);
   void Finish(const GraphView& view, const std::string& outcome);
   void AddReaction(const std::string& text);
@@ -78,6 +81,8 @@ class FaultEpisode {
   int mission_step_at_start_ = -1;
   std::map<std::string, pid_t> pids_at_start_;
   bool planner_failure_noted_ = false;
+  bool tool_goal_taken_ = false;   // the planner's status named one of the injector's goals
+  bool superseded_noted_ = false;  // ... and then the mission's goal (no refusal can come)
 };
 
 }  // namespace topay::tools

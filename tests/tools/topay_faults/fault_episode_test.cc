@@ -274,6 +274,55 @@ TEST_F(FaultEpisodeTest, ARefusedGoalRecoversOnlyOnceThePlannerHasSaidWhy) {
   EXPECT_GE(r.recover_s, 1.0) << "recovered before the planner refused the goal";
 }
 
+// goal-in-obstacle aimed at a box the planner's map lacks: the planner takes the goal (PLANNING
+// naming it), and the mission's own goal replaces it 1 s later. No refusal can come; the episode
+// recovers then (not before), saying so.
+TEST_F(FaultEpisodeTest, AnObstacleGoalTheMissionsGoalReplacedRecoversWithoutARefusal) {
+  GraphMonitor monitor(kUrl);
+  FaultInjectorOptions options = InjectorOptions();
+  options.box_centers_m = {Eigen::Vector3d(1.0, 1.0, 0.3)};
+  FaultInjector injector(options, &monitor);
+  PlayedGraph graph(false);
+  lcm::LCM listener(kUrl);
+  struct GoalSeen {
+    std::mutex mutex;
+    std::optional<Clock::time_point> at;
+    std::int64_t id = 0;
+    void On(const lcm::ReceiveBuffer*, const std::string&, const goal_t* g) {
+      std::lock_guard<std::mutex> lock(mutex);
+      if (!at) at = Clock::now(), id = g->goal_id;
+    }
+  } goal;
+  listener.subscribe("GOAL", &GoalSeen::On, &goal);
+  std::thread listen([&] {
+    for (int k = 0; k < 500; ++k) listener.handleTimeout(10);
+  });
+  FaultEpisode episode(SelectFaults({"goal-in-obstacle"})[0], 5, &injector, getpid(), QuickOptions());
+  int answered = 0;
+  RunEpisode(&episode, &monitor, [&](const GraphView&) {
+    std::lock_guard<std::mutex> lock(goal.mutex);
+    if (!goal.at) return;
+    planner_status_t status{};
+    status.state = planner_status_t::PLANNING;
+    if (answered == 0 && SecondsSince(*goal.at) >= 0.2) {
+      status.goal_id = goal.id;  // the planner takes the injected goal
+    } else if (answered == 1 && SecondsSince(*goal.at) >= 1.0) {
+      status.goal_id = 1796000000000001;  // the mission's goal again
+    } else {
+      return;
+    }
+    listener.publish("PLANNER_STATUS", &status);
+    ++answered;
+  });
+  listen.join();
+  const EpisodeResult& r = episode.Result();
+  ASSERT_TRUE(r.injected) << r.notes;
+  EXPECT_EQ(answered, 2);
+  EXPECT_TRUE(r.recovered) << r.reaction;
+  EXPECT_NE(r.reaction.find("superseded by the mission's goal"), std::string::npos) << r.reaction;
+  EXPECT_GE(r.recover_s, 1.0) << "recovered before the mission's goal replaced the injected one";
+}
+
 TEST_F(FaultEpisodeTest, ARobotThatNeverMovesIsNotInjected) {
   GraphMonitor monitor(kUrl);
   FaultInjector injector(InjectorOptions(), &monitor);
