@@ -1,9 +1,10 @@
 #pragma once
-// The target of `goal-in-obstacle`: a box's centre the robot has most likely seen. A box
-// anywhere in the room may still be missing from the map (behind walls, not yet in view); the
-// planner then cannot refuse the goal, plans towards it, and the mission's own goal replaces it
-// before any ruling (fault campaign of 2026-12-07, room seed 5: the episode waited for a
-// refusal that could not come). The boxes near the robot are in its map.
+// The target of `goal-in-obstacle`: the centre of a box near the robot, one it has most likely
+// seen. A box anywhere in the room may be missing from the map (behind walls, not yet in view);
+// the planner then cannot refuse the goal, plans towards it, and the mission's own goal replaces
+// it before any ruling (fault campaign of 2026-12-07, room seed 5). Near the robot the box's
+// surfaces are mapped, but its inside still may not be (a LiDAR sees surfaces only): finding 35,
+// docs/reliability.md; the episode then counts the replacement (fault_episode.cc).
 
 #include <optional>
 #include <random>
