@@ -5,23 +5,13 @@
 
 #include <gtest/gtest.h>
 
+#include "tests/core/trajectory/straight_drive.h"
+
 namespace topay {
 namespace {
 
-// 4 m along +x in 8 s from (1, 2), joints (2 of them) from 0 to 0.4 rad.
-std::shared_ptr<const ArcYawTrajectory> Drive() {
-  auto t = std::make_shared<ArcYawTrajectory>(2, 4, ArcYawTrajectory::Options{});
-  Eigen::MatrixXd head = Eigen::MatrixXd::Zero(4, 3), tail = Eigen::MatrixXd::Zero(4, 3);
-  tail(0, 0) = 4.0;
-  tail(2, 0) = tail(3, 0) = 0.4;
-  Eigen::MatrixXd waypoints(4, 3);
-  waypoints << 0.5, 2.0, 3.5, 0, 0, 0, 0.05, 0.2, 0.35, 0.05, 0.2, 0.35;
-  t->Update({1.0, 2.0}, head, tail, waypoints, Eigen::VectorXd::Constant(4, 2.0));
-  return t;
-}
-
 TEST(ArcYawReferenceTest, SamplesTheTrajectoryIntoJerklessSamples) {
-  const std::shared_ptr<const ArcYawTrajectory> trajectory = Drive();
+  const std::shared_ptr<const ArcYawTrajectory> trajectory = test::StraightDrive();
   const TrackerReference reference = MakeArcYawReference(trajectory, 7, 100.0);
   EXPECT_EQ(reference.trajectory_id, 7);
   EXPECT_EQ(reference.start_time_s, 100.0);

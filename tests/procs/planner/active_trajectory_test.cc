@@ -5,22 +5,17 @@
 #include <cstdio>
 #include <numbers>
 
+#include "tests/core/trajectory/straight_drive.h"
+
 namespace topay::planner {
 namespace {
 
 // 4 m along +x in 8 s from (1, 2), joints (2 of them) from 0 to 0.4 rad.
 ActiveTrajectory Drive() {
-  auto t = std::make_shared<ArcYawTrajectory>(2, 4, ArcYawTrajectory::Options{});
-  Eigen::MatrixXd head = Eigen::MatrixXd::Zero(4, 3), tail = Eigen::MatrixXd::Zero(4, 3);
-  tail(0, 0) = 4.0;
-  tail(2, 0) = tail(3, 0) = 0.4;
-  Eigen::MatrixXd waypoints(4, 3);
-  waypoints << 0.5, 2.0, 3.5, 0, 0, 0, 0.05, 0.2, 0.35, 0.05, 0.2, 0.35;
-  t->Update({1.0, 2.0}, head, tail, waypoints, Eigen::VectorXd::Constant(4, 2.0));
   ActiveTrajectory active;
   active.trajectory_id = 3;
   active.start_utime = 1'000'000;
-  active.trajectory = t;
+  active.trajectory = test::StraightDrive();
   return active;
 }
 

@@ -235,21 +235,24 @@ TEST_F(FaultEpisodeTest, AKillIsTimedFromTheLastCommandAndTheRestartIsSeen) {
 
 // A refused goal stops nothing, so the robot "moves again" at once; the episode must still wait
 // for the planner's refusal (it came late under load once, and the episode had ended without it).
+// The first GOAL on the bus (the injector's) and when it came, for a played planner to answer.
+struct FirstGoal {
+  std::mutex mutex;
+  std::optional<Clock::time_point> at;
+  std::int64_t id = 0;
+  void On(const lcm::ReceiveBuffer*, const std::string&, const goal_t* g) {
+    std::lock_guard<std::mutex> lock(mutex);
+    if (!at) at = Clock::now(), id = g->goal_id;
+  }
+};
+
 TEST_F(FaultEpisodeTest, ARefusedGoalRecoversOnlyOnceThePlannerHasSaidWhy) {
   GraphMonitor monitor(kUrl);
   FaultInjector injector(InjectorOptions(), &monitor);
   PlayedGraph graph(false);
   lcm::LCM listener(kUrl);
-  struct GoalSeen {
-    std::mutex mutex;
-    std::optional<Clock::time_point> at;
-    std::int64_t id = 0;
-    void On(const lcm::ReceiveBuffer*, const std::string&, const goal_t* g) {
-      std::lock_guard<std::mutex> lock(mutex);
-      if (!at) at = Clock::now(), id = g->goal_id;
-    }
-  } goal;
-  listener.subscribe("GOAL", &GoalSeen::On, &goal);
+  FirstGoal goal;
+  listener.subscribe("GOAL", &FirstGoal::On, &goal);
   std::thread listen([&] {
     for (int k = 0; k < 500; ++k) listener.handleTimeout(10);
   });
@@ -284,16 +287,8 @@ TEST_F(FaultEpisodeTest, AnObstacleGoalTheMissionsGoalReplacedRecoversWithoutARe
   FaultInjector injector(options, &monitor);
   PlayedGraph graph(false);
   lcm::LCM listener(kUrl);
-  struct GoalSeen {
-    std::mutex mutex;
-    std::optional<Clock::time_point> at;
-    std::int64_t id = 0;
-    void On(const lcm::ReceiveBuffer*, const std::string&, const goal_t* g) {
-      std::lock_guard<std::mutex> lock(mutex);
-      if (!at) at = Clock::now(), id = g->goal_id;
-    }
-  } goal;
-  listener.subscribe("GOAL", &GoalSeen::On, &goal);
+  FirstGoal goal;
+  listener.subscribe("GOAL", &FirstGoal::On, &goal);
   std::thread listen([&] {
     for (int k = 0; k < 500; ++k) listener.handleTimeout(10);
   });
