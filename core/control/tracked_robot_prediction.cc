@@ -4,38 +4,37 @@
 #include <cmath>
 #include <stdexcept>
 #include <string>
-
-#include "core/common/angles.h"
+#include <utility>
 
 namespace topay {
 namespace {
 
-void CheckFinite(double value, const char* field) {
-  if (!std::isfinite(value)) {
-    throw std::invalid_argument(std::string("TrackedRobotPredictor: ") + field + " is not finite");
-  }
+[[noreturn]] void Refuse(const std::string& what) {
+  throw std::invalid_argument("TrackedRobotPredictor: " + what);
 }
 
 void CheckRobot(const MeasuredRobot& robot, int num_joints, double until_s) {
   if (robot.state.q_rad.size() != num_joints || robot.rates.qd_radps.size() != num_joints) {
-    throw std::invalid_argument("TrackedRobotPredictor: robot.state.q_rad and robot.rates.qd_radps need " +
-                                std::to_string(num_joints) + " joints (the limits')");
+    Refuse("robot.state.q_rad and robot.rates.qd_radps need " + std::to_string(num_joints) + " joints (the limits')");
   }
-  CheckFinite(robot.state.x_m, "robot.state.x_m");
-  CheckFinite(robot.state.y_m, "robot.state.y_m");
-  CheckFinite(robot.state.yaw_rad, "robot.state.yaw_rad");
-  CheckFinite(robot.state_time_s, "robot.state_time_s");
-  CheckFinite(robot.rates.v_mps, "robot.rates.v_mps");
-  CheckFinite(robot.rates.omega_radps, "robot.rates.omega_radps");
-  if (!robot.state.q_rad.allFinite()) CheckFinite(NAN, "robot.state.q_rad");
-  if (!robot.rates.qd_radps.allFinite()) CheckFinite(NAN, "robot.rates.qd_radps");
-  if (!(until_s >= robot.state_time_s)) {
-    throw std::invalid_argument("TrackedRobotPredictor: until_s is before robot.state_time_s");
+  const std::pair<const char*, bool> finite[] = {
+      {"robot.state.x_m", std::isfinite(robot.state.x_m)},
+      {"robot.state.y_m", std::isfinite(robot.state.y_m)},
+      {"robot.state.yaw_rad", std::isfinite(robot.state.yaw_rad)},
+      {"robot.state.q_rad", robot.state.q_rad.allFinite()},
+      {"robot.state_time_s", std::isfinite(robot.state_time_s)},
+      {"robot.rates.v_mps", std::isfinite(robot.rates.v_mps)},
+      {"robot.rates.omega_radps", std::isfinite(robot.rates.omega_radps)},
+      {"robot.rates.qd_radps", robot.rates.qd_radps.allFinite()}};
+  for (const auto& [field, ok] : finite) {
+    if (!ok) Refuse(std::string(field) + " is not finite");
   }
+  if (!(until_s >= robot.state_time_s)) Refuse("until_s is before robot.state_time_s");
 }
 
 // The ideal plant over one period: the unicycle with the mid-step yaw (RolloutUnicycle's
-// step), the joints integrating their rates.
+// step), the joints integrating their rates. Not AdvanceUnicycle (core/robot/unicycle_motion.h):
+// it wraps the yaw, and the predicted start must stay continuous with the robot's own yaw.
 void Advance(const ControlCommand& command, double dt_s, WholeBodyState* state) {
   const double theta = state->yaw_rad + 0.5 * command.omega_radps * dt_s;
   state->x_m += command.v_mps * dt_s * std::cos(theta);
@@ -104,7 +103,6 @@ void TrackedRobotPredictor::Predict(const TrackerReference& reference, const Mea
     command = step.command;
     ++summary_.cycles;
     summary_.tracking_cycles += step.mode == TrackerMode::kTrack;
-    summary_.solve_ms += step.solve_ms;
     Advance(command, dt_s, &state);
     t_s += dt_s;
     Describe(state, command, previous, t_s, options_.control_period_s, out);
@@ -115,7 +113,6 @@ void TrackedRobotPredictor::Predict(const TrackerReference& reference, const Mea
     TrajectorySample at = MakeTrajectorySample(limits_.num_joints());
     reference.sampler(std::clamp(t_s - reference.start_time_s, 0.0, reference.duration_s), &at);
     summary_.final_position_error_m = std::hypot(state.x_m - at.state.x_m, state.y_m - at.state.y_m);
-    summary_.final_yaw_error_rad = std::abs(WrapAngle(state.yaw_rad - at.state.yaw_rad));
   }
 }
 

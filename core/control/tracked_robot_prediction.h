@@ -32,9 +32,7 @@ struct MeasuredRobot {
 struct TrackedRobotPredictionSummary {
   int cycles = 0;               ///< Tracker cycles run.
   int tracking_cycles = 0;      ///< Of them, in TrackerMode::kTrack (the others stopping).
-  double solve_ms = 0.0;        ///< Sum of the cycles' solve times (wall clock).
   double final_position_error_m = 0.0;  ///< The predicted robot against the reference at until_s.
-  double final_yaw_error_rad = 0.0;     ///< Wrapped, absolute.
 };
 
 /// NmpcTracker in closed loop on an ideal plant: the base a unicycle (RolloutUnicycle's
@@ -63,7 +61,6 @@ class TrackedRobotPredictor {
                const std::function<bool(const TrajectorySample&)>& visit = nullptr);
 
   const TrackedRobotPredictionSummary& summary() const { return summary_; }
-  const NmpcOptions& options() const { return options_; }
 
  private:
   NmpcOptions options_;

@@ -30,10 +30,10 @@
 
 #include <Eigen/Geometry>
 
-#include "core/optimization/trajectory_problem.h"
-#include "core/robot/kinematics.h"
 #include "core/control/tracked_robot_prediction.h"
 #include "core/control/tracker_limits.h"
+#include "core/optimization/trajectory_problem.h"
+#include "core/robot/kinematics.h"
 #include "procs/msgs/convert_goal.h"
 #include "procs/msgs/convert_robot_state.h"
 #include "procs/msgs/robot_state_intake.h"

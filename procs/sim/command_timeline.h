@@ -1,10 +1,11 @@
 #pragma once
-// Commands applied at the plant step of their own stamp (docs/simulator.md, "Time base"). A simulator process that stalls (a loaded machine) catches up afterwards by running
-// the steps it missed in a burst; the commands that arrived meanwhile are then all waiting, and
-// handed to the plant on arrival the plant would drive the whole stall on the command from before
-// it (a robot in a bend went straight on at its old speed). The timeline keeps each command until
-// the step whose time reaches its stamp, so the caught-up plant has followed the commands as the
-// drives would have received them. In real time nothing changes but a wait of at most one step.
+// Commands applied at the plant step of their own stamp (docs/simulator.md, "Time base"). A
+// simulator process that stalls (a loaded machine) catches up afterwards by running the steps it
+// missed in a burst; the commands that arrived meanwhile are then all waiting, and handed to the
+// plant on arrival the plant would drive the whole stall on the command from before it (a robot in
+// a bend went straight on at its old speed). The timeline keeps each command until the step whose
+// time reaches its stamp, so the caught-up plant has followed the commands as the drives would have
+// received them. In real time nothing changes but a wait of at most one step.
 //
 // Stamps are utimes of the wall clock, which the sim's clock follows (SimUtime). A stamp more
 // than max_lead_us ahead of the wall clock is not trusted (another clock, a corrupted copy): the
