@@ -241,7 +241,30 @@ void PlannerNode::OnMap(const map_update_t& msg) {
     work->map_utime = map_.receiver().utime();
   }
   if (work) worker_->SubmitMap(std::move(*work));
-  if (applied) CheckActiveAgainstMap(clock_.Now());
+  if (applied && !FailGoalTheMapRefuses(clock_.Now())) CheckActiveAgainstMap(clock_.Now());
+}
+
+bool PlannerNode::FailGoalTheMapRefuses(std::int64_t now) {
+  if (!goal_ || goal_->done) return false;
+  const std::string reason = ScreenTargetInMap(goal_->goal.X_WE.translation(), map_, options_.goals);
+  if (reason.empty()) return false;
+  ++counts_.goals_failed_on_map;
+  spdlog::warn("goal {} fails: {} (seen since the goal was taken)", goal_->goal.goal_id, reason);
+  goal_->done = true;
+  AbandonPlans();
+  std::string detail = "the map changed since the goal was taken";
+  if (active_ && !active_->stopping && !active_->EndedBy(now)) {
+    const std::int64_t begin = now + Micros(options_.stop.latency_s);
+    std::string why;
+    if (std::optional<ArcYawTrajectory> stop = MakeStop(begin, &why)) {
+      PublishStop(std::move(*stop), begin, "the goal's target is inside an obstacle: stopping");
+      detail += "; the robot is stopping";
+    } else {
+      spdlog::error("goal {}: no stopping trajectory: {}", goal_->goal.goal_id, why);
+    }
+  }
+  PublishStatus(planner_status_t::FAILED, reason, detail);
+  return true;
 }
 
 void PlannerNode::OnTrackerStatus(const tracker_status_t& msg) {
@@ -966,9 +989,11 @@ void PlannerNode::UpdateHealth() {
 std::string PlannerNode::Report() const {
   const PlanWorkerCounts w = worker_->counts();
   std::string out = fmt::format(
-      "topay-planner: {} goals ({} refused, {} repeats ignored, {} cancelled), {} trajectories, {} stops ({} on a "
-      "stale map), {} plans ({} failed, {} cancelled, {} late, {} colliding with a newer map), {} arm escapes\n",
-      counts_.goals, counts_.goals_refused, counts_.goals_repeated, counts_.goals_cancelled, counts_.trajectories,
+      "topay-planner: {} goals ({} refused, {} failed as the map came to refuse them, {} repeats ignored, {} "
+      "cancelled), {} trajectories, {} stops ({} on a stale map), {} plans ({} failed, {} cancelled, {} late, {} "
+      "colliding with a newer map), {} arm escapes\n",
+      counts_.goals, counts_.goals_refused, counts_.goals_failed_on_map, counts_.goals_repeated, counts_.goals_cancelled,
+      counts_.trajectories,
       counts_.stops, counts_.stale_map_stops, w.plans, counts_.plans_failed, w.cancelled, counts_.results_dropped_late,
       counts_.results_colliding, counts_.escapes);
   const TrajectoryDeliveryCounts& d = delivery_.counts();

@@ -63,6 +63,7 @@ const char* ToString(PlanTrigger trigger);
 struct PlannerNodeCounts {
   std::map<PlanTrigger, std::int64_t> triggers;
   std::int64_t goals = 0, goals_refused = 0, goals_cancelled = 0;
+  std::int64_t goals_failed_on_map = 0;  ///< goals in hand the map came to refuse (FailGoalTheMapRefuses)
   std::int64_t goals_repeated = 0;  ///< repeats of the last goal (same id and content): ignored
   std::int64_t stale_map_stops = 0;  ///< stopping trajectories for a stale map (map.stale_stop_s)
   std::int64_t trajectories = 0, stops = 0;
@@ -179,6 +180,10 @@ class PlannerNode {
   // map.stale_stop_s: stops the robot and holds the plans while the map's newest scan is too
   // old; plans the goal again once it is fresh.
   void CheckMapFreshness(std::int64_t now);
+  // A goal in hand whose target the map now refuses (ScreenTargetInMap: e.g. a box seen from
+  // around, its inside holding the target): FAILED, its plans dropped, a moving robot stopped.
+  // True if it failed.
+  bool FailGoalTheMapRefuses(std::int64_t now);
   // A stopping trajectory from the one the robot is on at now + stop.latency_s (nullopt with
   // *why when none can be made), and its publication (STOPPING with `detail`).
   // `blind`: the stale map's stop, shorter (stop.blind_duration_per_rate_ratio).

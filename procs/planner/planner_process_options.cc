@@ -84,6 +84,8 @@ void ReadStop(YamlSection s, SafeStopOptions* o) {
 
 void ReadGoals(YamlSection s, GoalCheckOptions* o) {
   s.Read("target_clearance_m", &o->target_clearance_m);
+  s.Read("unseen_pocket_reach_m", &o->unseen_pocket_reach_m);
+  s.Read("unseen_pocket_rim_share", &o->unseen_pocket_rim_share);
   s.Read("certify_reachability", &o->certify_reachability);
   s.Read("reached_position_m", &o->reached_position_m);
   s.Read("reached_orientation_rad", &o->reached_orientation_rad);
@@ -187,6 +189,10 @@ void CheckPlannerProcessOptions(const PlannerProcessOptions& o, const std::strin
   RequirePositive(o.stop.replan_grace_s, source, "stop.replan_grace_s");
   RequireNonNegative(o.stop.grace_reach_m, source, "stop.grace_reach_m");
   RequireNonNegative(o.goals.target_clearance_m, source, "goals.target_clearance_m");
+  RequireNonNegative(o.goals.unseen_pocket_reach_m, source, "goals.unseen_pocket_reach_m");
+  if (!(o.goals.unseen_pocket_rim_share >= 0.0 && o.goals.unseen_pocket_rim_share <= 1.0)) {
+    throw ConfigError(source, "goals.unseen_pocket_rim_share", "must lie in [0, 1]");
+  }
   RequireNonNegative(o.goals.reached_position_m, source, "goals.reached_position_m");
   RequireNonNegative(o.goals.reached_orientation_rad, source, "goals.reached_orientation_rad");
   RequirePositive(o.status_period_s, source, "status_period_s");

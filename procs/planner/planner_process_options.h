@@ -169,6 +169,14 @@ struct GoalCheckOptions {
   /// A target nearer than this (m) to a blocked voxel's box counts as inside an obstacle
   /// (0: only a target inside one).
   double target_clearance_m = 0.0;
+  /// A target inside a body the LiDAR saw only from outside (its voxel never observed, its
+  /// unseen pocket near it and walled mostly by occupied voxels: core/map/unseen_pocket.h,
+  /// finding 35) counts as inside an obstacle: refused at once, and a goal in hand fails (the
+  /// robot stops) when the map comes to show it so. The pocket may reach this far (m) from the
+  /// target along x and y; wider bodies are not recognised. 0: the check is off. >= 0.
+  double unseen_pocket_reach_m = 1.0;
+  /// ... and this share of its rim must be occupied, in [0, 1].
+  double unseen_pocket_rim_share = 0.5;
   /// Run the base reachability certificate (core/planning/base_reachability.h) on the map's
   /// voxels: a target no base pose the robot can reach lets the arm touch fails at once.
   bool certify_reachability = true;

@@ -424,7 +424,7 @@ TEST_F(PlannerProcess, AGoalIdIsNotReusedForAnotherTarget) {
   const std::string log = StopPlannerAndReadLog();
   EXPECT_NE(log.find("GOAL 31 ignored: a repeat of the goal in hand"), std::string::npos) << log;
   EXPECT_NE(log.find("GOAL 31 ignored: its id was issued before with a different target"), std::string::npos) << log;
-  EXPECT_NE(log.find("3 goals (1 refused, 1 repeats ignored, 0 cancelled)"), std::string::npos) << log;
+  EXPECT_NE(log.find("3 goals (1 refused, 0 failed as the map came to refuse them, 1 repeats ignored, 0 cancelled)"), std::string::npos) << log;
 }
 
 // The mapper stops (its MAP_UPDATEs lost): once the map's newest scan is older than
@@ -569,6 +569,39 @@ TEST_F(PlannerProcess, EveryBadGoalFailsAtOnceWithItsReason) {
         << "goal " << id << ": " << out_.Last(id, planner_status_t::FAILED)->failure_reason;
   }
   EXPECT_TRUE(out_.trajectories.empty());
+  EXPECT_TRUE(launch::ProcessAlive(planner_));
+}
+
+// Finding 35: a target inside a body the map shows only from outside (its rim occupied, its
+// inside never seen) is refused at once; a goal in hand fails, and the robot on its way stops,
+// when the map comes to show its target inside such a body.
+TEST_F(PlannerProcess, ATargetInsideABodySeenOnlyFromOutsideIsRefusedOrFailsWhenSeen) {
+  const GridGeometry3 g = planner::testing::RoomGeometry();
+  const map_update_t body = msgs::EncodeMapDelta(
+      g, planner::testing::UnseenBody(g, MakeBox({-3.0, 1.0, 0.4}, {0.5, 0.6, 0.8})), procs::NowUtime(), 2);
+  watcher_->lcm().publish(std::string(channels::MAP_UPDATE), &body);
+  Send(Goal(61, {-3.0, 1.0, 0.4}));
+  ASSERT_TRUE(SpinWithRobot([&] { return out_.Last(61, planner_status_t::FAILED) != nullptr; }, 30.0))
+      << ReadText(dir_ + "/planner.txt");
+  EXPECT_NE(out_.Last(61, planner_status_t::FAILED)->failure_reason.find("seen only from outside"), std::string::npos)
+      << out_.Last(61, planner_status_t::FAILED)->failure_reason;
+  EXPECT_TRUE(out_.trajectories.empty());
+
+  Send(ReachableGoal(62));
+  ASSERT_TRUE(SpinWithRobot([&] { return !out_.trajectories.empty(); }, 60.0)) << ReadText(dir_ + "/planner.txt");
+  const std::size_t planned = out_.trajectories.size();
+  const Eigen::Vector3d p_WT = kinematics_.EndEffectorPose(BentArmState(-1.0, 2.0, 1.0)).translation();
+  const map_update_t seen = msgs::EncodeMapDelta(
+      g, planner::testing::UnseenBody(g, MakeBox(p_WT, {0.4, 0.4, 0.3})), procs::NowUtime(), 3);
+  watcher_->lcm().publish(std::string(channels::MAP_UPDATE), &seen);
+  ASSERT_TRUE(SpinWithRobot([&] { return out_.Last(62, planner_status_t::FAILED) != nullptr; }, 10.0))
+      << ReadText(dir_ + "/planner.txt");
+  const planner_status_t& failed = *out_.Last(62, planner_status_t::FAILED);
+  EXPECT_NE(failed.failure_reason.find("seen only from outside"), std::string::npos) << failed.failure_reason;
+  EXPECT_NE(failed.detail.find("the robot is stopping"), std::string::npos) << failed.detail;
+  ASSERT_EQ(out_.trajectories.size(), planned + 1);  // the stopping trajectory
+  EXPECT_EQ(out_.trajectories.back().goal_id, 62);
+  EXPECT_NE(out_.Last(62, planner_status_t::STOPPING), nullptr);
   EXPECT_TRUE(launch::ProcessAlive(planner_));
 }
 

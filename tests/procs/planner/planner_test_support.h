@@ -31,6 +31,24 @@ inline std::vector<std::uint8_t> StatesOf(const GridGeometry3& geometry, const s
   return states;
 }
 
+/// A body the LiDAR saw only from outside, as changes to a map: of the voxels the (upright,
+/// unrotated) box overlaps, those on the rim of each layer occupied, the inside unknown.
+inline std::vector<VoxelChange> UnseenBody(const GridGeometry3& geometry, const OrientedBox& box) {
+  const Eigen::Vector3d half = 0.5 * box.size_m;
+  const CellBox cells = VoxelsOverlapping(geometry, {box.center_W_m - half, box.center_W_m + half});
+  std::vector<VoxelChange> changes;
+  for (int iz = cells.begin.z(); iz < cells.end.z(); ++iz) {
+    for (int iy = cells.begin.y(); iy < cells.end.y(); ++iy) {
+      for (int ix = cells.begin.x(); ix < cells.end.x(); ++ix) {
+        const bool rim = ix == cells.begin.x() || iy == cells.begin.y() || ix + 1 == cells.end.x() ||
+                         iy + 1 == cells.end.y();
+        changes.push_back({{ix, iy, iz}, rim ? VoxelState::kOccupied : VoxelState::kUnknown});
+      }
+    }
+  }
+  return changes;
+}
+
 /// An 8 x 8 m room (walls 0.1 m thick, 1.2 m high) with a table-like box in the middle, z
 /// up to 1.6 m, at 5 cm voxels.
 inline GridGeometry3 RoomGeometry() {
