@@ -170,10 +170,13 @@ void FaultEpisode::OperatorReset(const GraphView& view) {
 }
 
 void FaultEpisode::WatchPlannerGoal(const GraphView& view) {
-  if (IsToolGoal(view.planner_goal_id)) tool_goal_taken_ = true;
-  if (!planner_failure_noted_ && view.planner_state == planner_status_t::FAILED && IsToolGoal(view.planner_goal_id)) {
-    AddReaction("planner: " + view.planner_failure);
-    planner_failure_noted_ = true;
+  for (const PlannerStatusChange& c : view.planner_changes) {
+    if (c.time_s < inject_s_ || !IsToolGoal(c.goal_id)) continue;
+    tool_goal_taken_ = true;
+    if (!planner_failure_noted_ && c.state == planner_status_t::FAILED) {
+      AddReaction("planner: " + c.failure_reason);
+      planner_failure_noted_ = true;
+    }
   }
 }
 

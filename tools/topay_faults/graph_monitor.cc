@@ -136,6 +136,11 @@ void GraphMonitor::OnMessage(const std::string& channel, const std::uint8_t* dat
         v.planner_state = p->state;
         v.planner_goal_id = p->goal_id;
         v.planner_failure = p->failure_reason;
+        if (v.planner_changes.empty() || v.planner_changes.back().goal_id != p->goal_id ||
+            v.planner_changes.back().state != p->state) {
+          if (v.planner_changes.size() == GraphView::kMaxPlannerChanges) v.planner_changes.erase(v.planner_changes.begin());
+          v.planner_changes.push_back({t, p->goal_id, p->state, p->failure_reason});
+        }
       }
     } else if (channel == channels::TRACKER_STATUS) {
       if (const auto s = CheckedDecode<tracker_status_t>(data, size, nullptr)) {

@@ -29,6 +29,14 @@ struct DriveStateChange {
   std::string stop_reason;  ///< the bridge's reason ("" when running)
 };
 
+/// One change of the planner's goal or state (PLANNER_STATUS), as received.
+struct PlannerStatusChange {
+  double time_s = 0.0;
+  std::int64_t goal_id = 0;
+  int state = -1;              ///< planner_status_t state constant
+  std::string failure_reason;  ///< FAILED: why
+};
+
 /// What the monitor has seen so far (a copy: consistent at one instant).
 struct GraphView {
   double now_s = 0.0;
@@ -48,6 +56,10 @@ struct GraphView {
   int planner_state = -1;
   std::int64_t planner_goal_id = 0;
   std::string planner_failure;
+  /// Every change of the planner's goal or state, the last kMaxPlannerChanges: a refusal the
+  /// next goal's status followed within a poll is still seen (the last status alone hid one).
+  std::vector<PlannerStatusChange> planner_changes;
+  static constexpr std::size_t kMaxPlannerChanges = 64;
   std::int64_t contacts = 0;              ///< SIM_CONTACT messages that decode (contact starts)
   bool tracker_held = false;              ///< the last TRACKER_STATUS was HELD
   std::vector<double> tracker_held_starts_s;  ///< receipts of a TRACKER_STATUS HELD after one that was not

@@ -277,6 +277,43 @@ TEST_F(FaultEpisodeTest, ARefusedGoalRecoversOnlyOnceThePlannerHasSaidWhy) {
   EXPECT_GE(r.recover_s, 1.0) << "recovered before the planner refused the goal";
 }
 
+// The refusal and the mission's goal's PLANNING status 1 ms apart (as the planner sends them:
+// seen in FaultsSmoke under load, where the episode's poll saw only the second and waited 45 s
+// for a refusal that had come): the refusal still counts.
+TEST_F(FaultEpisodeTest, ARefusalTheNextGoalsStatusFollowedAtOnceIsSeen) {
+  GraphMonitor monitor(kUrl);
+  FaultInjector injector(InjectorOptions(), &monitor);
+  PlayedGraph graph(false);
+  lcm::LCM listener(kUrl);
+  FirstGoal goal;
+  listener.subscribe("GOAL", &FirstGoal::On, &goal);
+  std::thread listen([&] {
+    for (int k = 0; k < 500; ++k) listener.handleTimeout(10);
+  });
+  FaultEpisode episode(SelectFaults({"goal-nan"})[0], 3, &injector, getpid(), QuickOptions());
+  bool refused = false;
+  RunEpisode(&episode, &monitor, [&](const GraphView&) {
+    std::lock_guard<std::mutex> lock(goal.mutex);
+    if (refused || !goal.at || SecondsSince(*goal.at) < 0.5) return;
+    planner_status_t status{};
+    status.state = planner_status_t::FAILED;
+    status.goal_id = goal.id;
+    status.failure_reason = "bad goal: goal_t.p_WE: not finite";
+    listener.publish("PLANNER_STATUS", &status);
+    status.state = planner_status_t::PLANNING;  // the mission's goal, planned again at once
+    status.goal_id = 1796000000000001;
+    status.failure_reason = "";
+    listener.publish("PLANNER_STATUS", &status);
+    refused = true;
+  });
+  listen.join();
+  const EpisodeResult& r = episode.Result();
+  ASSERT_TRUE(r.injected) << r.notes;
+  EXPECT_TRUE(refused);
+  EXPECT_TRUE(r.recovered) << r.reaction;
+  EXPECT_NE(r.reaction.find("planner: bad goal: goal_t.p_WE: not finite"), std::string::npos) << r.reaction;
+}
+
 // goal-in-obstacle aimed at a box the planner's map lacks: the planner takes the goal (PLANNING
 // naming it), and the mission's own goal replaces it 1 s later. No refusal can come; the episode
 // recovers then (not before), saying so.
