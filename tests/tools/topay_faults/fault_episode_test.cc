@@ -116,6 +116,25 @@ class PlayedGraph {
   std::thread thread_;
 };
 
+// The first GOAL on the bus (the injector's) and when it came, for a played planner to answer.
+struct FirstGoal {
+  std::mutex mutex;
+  std::optional<Clock::time_point> at;
+  std::int64_t id = 0;
+  void On(const lcm::ReceiveBuffer*, const std::string&, const goal_t* g) {
+    std::lock_guard<std::mutex> lock(mutex);
+    if (!at) at = Clock::now(), id = g->goal_id;
+  }
+};
+
+FaultEpisodeOptions QuickOptions() {
+  FaultEpisodeOptions options;
+  options.ready_timeout_s = 10.0;
+  options.recover_timeout_s = 10.0;
+  options.settle_s = 0.2;
+  return options;
+}
+
 class FaultEpisodeTest : public testing::Test {
  protected:
   void SetUp() override {
@@ -143,17 +162,31 @@ class FaultEpisodeTest : public testing::Test {
     }
     FAIL() << "the episode did not end within 20 s";
   }
+  // One episode of a goal fault against a played graph; `answer(listener, goal)` plays the
+  // planner on every tick once the injector's goal has come (under the goal's lock).
+  EpisodeResult RunGoalEpisode(const std::string& fault, int seed, const FaultInjectorOptions& options,
+                               const std::function<void(lcm::LCM&, const FirstGoal&)>& answer) {
+    GraphMonitor monitor(kUrl);
+    FaultInjector injector(options, &monitor);
+    PlayedGraph graph(false);
+    lcm::LCM listener(kUrl);
+    FirstGoal goal;
+    listener.subscribe("GOAL", &FirstGoal::On, &goal);
+    std::thread listen([&] {
+      for (int k = 0; k < 500; ++k) listener.handleTimeout(10);
+    });
+    FaultEpisode episode(SelectFaults({fault})[0], seed, &injector, getpid(), QuickOptions());
+    RunEpisode(&episode, &monitor, [&](const GraphView&) {
+      std::lock_guard<std::mutex> lock(goal.mutex);
+      if (goal.at) answer(listener, goal);
+    });
+    listen.join();
+    return episode.Result();
+  }
 
   std::string dir_;
 };
 
-FaultEpisodeOptions QuickOptions() {
-  FaultEpisodeOptions options;
-  options.ready_timeout_s = 10.0;
-  options.recover_timeout_s = 10.0;
-  options.settle_s = 0.2;
-  return options;
-}
 
 TEST_F(FaultEpisodeTest, TimesTheBridgesStopAndTheRecoveryFromTheBus) {
   GraphMonitor monitor(kUrl);
@@ -235,41 +268,17 @@ TEST_F(FaultEpisodeTest, AKillIsTimedFromTheLastCommandAndTheRestartIsSeen) {
 
 // A refused goal stops nothing, so the robot "moves again" at once; the episode must still wait
 // for the planner's refusal (it came late under load once, and the episode had ended without it).
-// The first GOAL on the bus (the injector's) and when it came, for a played planner to answer.
-struct FirstGoal {
-  std::mutex mutex;
-  std::optional<Clock::time_point> at;
-  std::int64_t id = 0;
-  void On(const lcm::ReceiveBuffer*, const std::string&, const goal_t* g) {
-    std::lock_guard<std::mutex> lock(mutex);
-    if (!at) at = Clock::now(), id = g->goal_id;
-  }
-};
-
 TEST_F(FaultEpisodeTest, ARefusedGoalRecoversOnlyOnceThePlannerHasSaidWhy) {
-  GraphMonitor monitor(kUrl);
-  FaultInjector injector(InjectorOptions(), &monitor);
-  PlayedGraph graph(false);
-  lcm::LCM listener(kUrl);
-  FirstGoal goal;
-  listener.subscribe("GOAL", &FirstGoal::On, &goal);
-  std::thread listen([&] {
-    for (int k = 0; k < 500; ++k) listener.handleTimeout(10);
-  });
-  FaultEpisode episode(SelectFaults({"goal-nan"})[0], 3, &injector, getpid(), QuickOptions());
   bool refused = false;
-  RunEpisode(&episode, &monitor, [&](const GraphView&) {
-    std::lock_guard<std::mutex> lock(goal.mutex);
-    if (refused || !goal.at || SecondsSince(*goal.at) < 1.0) return;
+  const EpisodeResult r = RunGoalEpisode("goal-nan", 3, InjectorOptions(), [&](lcm::LCM& bus, const FirstGoal& goal) {
+    if (refused || SecondsSince(*goal.at) < 1.0) return;
     planner_status_t status{};  // the planner's answer, 1 s after the goal
     status.state = planner_status_t::FAILED;
     status.goal_id = goal.id;
     status.failure_reason = "bad goal: goal_t.p_WE: not finite";
-    listener.publish("PLANNER_STATUS", &status);
+    bus.publish("PLANNER_STATUS", &status);
     refused = true;
   });
-  listen.join();
-  const EpisodeResult& r = episode.Result();
   ASSERT_TRUE(r.injected) << r.notes;
   EXPECT_TRUE(refused);
   EXPECT_TRUE(r.recovered) << r.reaction;
@@ -281,33 +290,20 @@ TEST_F(FaultEpisodeTest, ARefusedGoalRecoversOnlyOnceThePlannerHasSaidWhy) {
 // seen in FaultsSmoke under load, where the episode's poll saw only the second and waited 45 s
 // for a refusal that had come): the refusal still counts.
 TEST_F(FaultEpisodeTest, ARefusalTheNextGoalsStatusFollowedAtOnceIsSeen) {
-  GraphMonitor monitor(kUrl);
-  FaultInjector injector(InjectorOptions(), &monitor);
-  PlayedGraph graph(false);
-  lcm::LCM listener(kUrl);
-  FirstGoal goal;
-  listener.subscribe("GOAL", &FirstGoal::On, &goal);
-  std::thread listen([&] {
-    for (int k = 0; k < 500; ++k) listener.handleTimeout(10);
-  });
-  FaultEpisode episode(SelectFaults({"goal-nan"})[0], 3, &injector, getpid(), QuickOptions());
   bool refused = false;
-  RunEpisode(&episode, &monitor, [&](const GraphView&) {
-    std::lock_guard<std::mutex> lock(goal.mutex);
-    if (refused || !goal.at || SecondsSince(*goal.at) < 0.5) return;
+  const EpisodeResult r = RunGoalEpisode("goal-nan", 3, InjectorOptions(), [&](lcm::LCM& bus, const FirstGoal& goal) {
+    if (refused || SecondsSince(*goal.at) < 0.5) return;
     planner_status_t status{};
     status.state = planner_status_t::FAILED;
     status.goal_id = goal.id;
     status.failure_reason = "bad goal: goal_t.p_WE: not finite";
-    listener.publish("PLANNER_STATUS", &status);
+    bus.publish("PLANNER_STATUS", &status);
     status.state = planner_status_t::PLANNING;  // the mission's goal, planned again at once
     status.goal_id = 1796000000000001;
     status.failure_reason = "";
-    listener.publish("PLANNER_STATUS", &status);
+    bus.publish("PLANNER_STATUS", &status);
     refused = true;
   });
-  listen.join();
-  const EpisodeResult& r = episode.Result();
   ASSERT_TRUE(r.injected) << r.notes;
   EXPECT_TRUE(refused);
   EXPECT_TRUE(r.recovered) << r.reaction;
@@ -318,22 +314,10 @@ TEST_F(FaultEpisodeTest, ARefusalTheNextGoalsStatusFollowedAtOnceIsSeen) {
 // naming it), and the mission's own goal replaces it 1 s later. No refusal can come; the episode
 // recovers then (not before), saying so.
 TEST_F(FaultEpisodeTest, AnObstacleGoalTheMissionsGoalReplacedRecoversWithoutARefusal) {
-  GraphMonitor monitor(kUrl);
   FaultInjectorOptions options = InjectorOptions();
   options.box_centers_m = {Eigen::Vector3d(1.0, 1.0, 0.3)};
-  FaultInjector injector(options, &monitor);
-  PlayedGraph graph(false);
-  lcm::LCM listener(kUrl);
-  FirstGoal goal;
-  listener.subscribe("GOAL", &FirstGoal::On, &goal);
-  std::thread listen([&] {
-    for (int k = 0; k < 500; ++k) listener.handleTimeout(10);
-  });
-  FaultEpisode episode(SelectFaults({"goal-in-obstacle"})[0], 5, &injector, getpid(), QuickOptions());
   int answered = 0;
-  RunEpisode(&episode, &monitor, [&](const GraphView&) {
-    std::lock_guard<std::mutex> lock(goal.mutex);
-    if (!goal.at) return;
+  const EpisodeResult r = RunGoalEpisode("goal-in-obstacle", 5, options, [&](lcm::LCM& bus, const FirstGoal& goal) {
     planner_status_t status{};
     status.state = planner_status_t::PLANNING;
     if (answered == 0 && SecondsSince(*goal.at) >= 0.2) {
@@ -343,11 +327,9 @@ TEST_F(FaultEpisodeTest, AnObstacleGoalTheMissionsGoalReplacedRecoversWithoutARe
     } else {
       return;
     }
-    listener.publish("PLANNER_STATUS", &status);
+    bus.publish("PLANNER_STATUS", &status);
     ++answered;
   });
-  listen.join();
-  const EpisodeResult& r = episode.Result();
   ASSERT_TRUE(r.injected) << r.notes;
   EXPECT_EQ(answered, 2);
   EXPECT_TRUE(r.recovered) << r.reaction;
