@@ -183,6 +183,26 @@ class FaultEpisodeTest : public testing::Test {
     listen.join();
     return episode.Result();
   }
+  // goal-nan with the played planner's refusal `after_s` after the goal and, if
+  // `then_mission_goal`, the mission's goal's PLANNING status right behind it.
+  EpisodeResult RefusedNanGoal(double after_s, bool then_mission_goal, bool* refused) {
+    *refused = false;
+    return RunGoalEpisode("goal-nan", 3, InjectorOptions(), [&](lcm::LCM& bus, const FirstGoal& goal) {
+      if (*refused || SecondsSince(*goal.at) < after_s) return;
+      planner_status_t status{};
+      status.state = planner_status_t::FAILED;
+      status.goal_id = goal.id;
+      status.failure_reason = "bad goal: goal_t.p_WE: not finite";
+      bus.publish("PLANNER_STATUS", &status);
+      if (then_mission_goal) {
+        status.state = planner_status_t::PLANNING;
+        status.goal_id = 1796000000000001;
+        status.failure_reason = "";
+        bus.publish("PLANNER_STATUS", &status);
+      }
+      *refused = true;
+    });
+  }
 
   std::string dir_;
 };
@@ -266,48 +286,30 @@ TEST_F(FaultEpisodeTest, AKillIsTimedFromTheLastCommandAndTheRestartIsSeen) {
   if (second > 0) kill(second, SIGKILL), waitpid(second, nullptr, 0);
 }
 
+// A goal-nan episode that recovered, naming the planner's refusal.
+void ExpectTheRefusalSeen(const EpisodeResult& r, bool refused) {
+  ASSERT_TRUE(r.injected) << r.notes;
+  EXPECT_TRUE(refused);
+  EXPECT_TRUE(r.recovered) << r.reaction;
+  EXPECT_NE(r.reaction.find("planner: bad goal: goal_t.p_WE: not finite"), std::string::npos) << r.reaction;
+}
+
 // A refused goal stops nothing, so the robot "moves again" at once; the episode must still wait
 // for the planner's refusal (it came late under load once, and the episode had ended without it).
 TEST_F(FaultEpisodeTest, ARefusedGoalRecoversOnlyOnceThePlannerHasSaidWhy) {
   bool refused = false;
-  const EpisodeResult r = RunGoalEpisode("goal-nan", 3, InjectorOptions(), [&](lcm::LCM& bus, const FirstGoal& goal) {
-    if (refused || SecondsSince(*goal.at) < 1.0) return;
-    planner_status_t status{};  // the planner's answer, 1 s after the goal
-    status.state = planner_status_t::FAILED;
-    status.goal_id = goal.id;
-    status.failure_reason = "bad goal: goal_t.p_WE: not finite";
-    bus.publish("PLANNER_STATUS", &status);
-    refused = true;
-  });
-  ASSERT_TRUE(r.injected) << r.notes;
-  EXPECT_TRUE(refused);
-  EXPECT_TRUE(r.recovered) << r.reaction;
-  EXPECT_NE(r.reaction.find("planner: bad goal: goal_t.p_WE: not finite"), std::string::npos) << r.reaction;
+  const EpisodeResult r = RefusedNanGoal(1.0, false, &refused);
+  ExpectTheRefusalSeen(r, refused);
   EXPECT_GE(r.recover_s, 1.0) << "recovered before the planner refused the goal";
 }
 
-// The refusal and the mission's goal's PLANNING status 1 ms apart (as the planner sends them:
+// The refusal and the mission's goal's PLANNING status back to back (as the planner sends them:
 // seen in FaultsSmoke under load, where the episode's poll saw only the second and waited 45 s
 // for a refusal that had come): the refusal still counts.
 TEST_F(FaultEpisodeTest, ARefusalTheNextGoalsStatusFollowedAtOnceIsSeen) {
   bool refused = false;
-  const EpisodeResult r = RunGoalEpisode("goal-nan", 3, InjectorOptions(), [&](lcm::LCM& bus, const FirstGoal& goal) {
-    if (refused || SecondsSince(*goal.at) < 0.5) return;
-    planner_status_t status{};
-    status.state = planner_status_t::FAILED;
-    status.goal_id = goal.id;
-    status.failure_reason = "bad goal: goal_t.p_WE: not finite";
-    bus.publish("PLANNER_STATUS", &status);
-    status.state = planner_status_t::PLANNING;  // the mission's goal, planned again at once
-    status.goal_id = 1796000000000001;
-    status.failure_reason = "";
-    bus.publish("PLANNER_STATUS", &status);
-    refused = true;
-  });
-  ASSERT_TRUE(r.injected) << r.notes;
-  EXPECT_TRUE(refused);
-  EXPECT_TRUE(r.recovered) << r.reaction;
-  EXPECT_NE(r.reaction.find("planner: bad goal: goal_t.p_WE: not finite"), std::string::npos) << r.reaction;
+  const EpisodeResult r = RefusedNanGoal(0.5, true, &refused);
+  ExpectTheRefusalSeen(r, refused);
 }
 
 // goal-in-obstacle aimed at a box the planner's map lacks: the planner takes the goal (PLANNING
