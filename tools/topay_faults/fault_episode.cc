@@ -100,8 +100,10 @@ bool FaultEpisode::Tick(const GraphView& view) {
         Finish(view, "mission " + std::string(view.mission_state == mission_status_t::FAILED ? "FAILED" : "ABORTED") +
                          ": " + view.mission_detail);
       } else if (view.now_s - clear_s_ > options_.recover_timeout_s) {
-        Finish(view, fmt::format("not recovered {:.0f} s after the fault was cleared (bridge {}, mission step {})",
-                                 options_.recover_timeout_s, DriveStateName(FreshDriveState(view)), view.mission_step));
+        Finish(view, fmt::format("not recovered {:.0f} s after the fault was cleared (bridge {}, mission step {}; "
+                                 "waiting for {})",
+                                 options_.recover_timeout_s, DriveStateName(FreshDriveState(view)), view.mission_step,
+                                 awaiting_));
       }
       break;
     case Phase::kSettle:
@@ -114,7 +116,7 @@ bool FaultEpisode::Tick(const GraphView& view) {
 }
 
 void FaultEpisode::Inject(const GraphView& view) {
-  pids_at_start_ = DescendantProcesses(ancestor_);
+  pids_at_start_ = GraphProcesses(ancestor_);
   contacts_at_start_ = view.contacts;
   mission_step_at_start_ = view.mission_step;
   inject_s_ = view.now_s;
@@ -180,6 +182,11 @@ void FaultEpisode::WatchPlannerGoal(const GraphView& view) {
   }
 }
 
+bool FaultEpisode::Awaiting(std::string what) {
+  awaiting_ = std::move(what);
+  return false;
+}
+
 bool FaultEpisode::Recovered(const GraphView& view) {
   WatchPlannerGoal(view);
   if (fault_.refusal_expected && !planner_failure_noted_) {
@@ -187,26 +194,29 @@ bool FaultEpisode::Recovered(const GraphView& view) {
     // mission's own goal replaced it before any refusal: none can come now; recovery as for any
     // fault. Otherwise the refusal has not come yet.
     const bool superseded = tool_goal_taken_ && view.planner_goal_id != 0 && !IsToolGoal(view.planner_goal_id);
-    if (!superseded) return false;
+    if (!superseded) return Awaiting("the planner's refusal of the injected goal");
     if (!superseded_noted_) AddReaction("planner: planned for it (the target not in its map), superseded by the mission's goal");
     superseded_noted_ = true;
   }
   if (view.mission_state == mission_status_t::SUCCEEDED) return true;
-  if (fault_.stop_expected && result_.safe_ms < 0.0) return false;  // no recovery before the stop
+  if (fault_.stop_expected && result_.safe_ms < 0.0) return Awaiting("the stop");  // no recovery before it
   // Moving again after the fault was cleared and after the stop it caused, if it caused one.
   const double stopped_s = result_.safe_ms >= 0.0 ? inject_s_ + std::max(0.0, result_.safe_ms * 1e-3) : 0.0;
   const bool moving_again = view.last_moving_s > std::max(clear_s_, stopped_s);
   const bool step_done = view.mission_step > mission_step_at_start_;
-  if (FreshDriveState(view) != drive_status_t::RUNNING || !(moving_again || step_done)) return false;
-  const auto now = DescendantProcesses(ancestor_);  // only now: a scan of /proc
+  if (FreshDriveState(view) != drive_status_t::RUNNING) return Awaiting("the drives RUNNING");
+  if (!(moving_again || step_done)) return Awaiting("the robot moving again or the mission's next step");
+  const auto now = GraphProcesses(ancestor_);  // only now: a scan of /proc
   for (const auto& [name, pid] : pids_at_start_) {
-    if (!now.count(name)) return false;
+    if (!now.count(name)) return Awaiting(name + " running again");
   }
   if (fault_.family == FaultFamily::kKill) {
     const auto it = now.find(CommandNameOf(fault_.target));
-    if (it == now.end() || it->second == injector_->KilledPid()) return false;
+    if (it == now.end() || it->second == injector_->KilledPid()) return Awaiting("the restarted " + fault_.target);
     // Back at work: its first heartbeat (the logger sends none).
-    if (fault_.target != "logger" && !HeartbeatFrom(view, it->second)) return false;
+    if (fault_.target != "logger" && !HeartbeatFrom(view, it->second)) {
+      return Awaiting(fmt::format("a heartbeat from the restarted {} (pid {})", fault_.target, it->second));
+    }
   }
   return true;
 }
@@ -232,7 +242,7 @@ void FaultEpisode::Finish(const GraphView& view, const std::string& outcome) {
   injector_->End();
   result_.notes = injector_->Notes();
   result_.contacts = view.contacts - contacts_at_start_;
-  const auto now = DescendantProcesses(ancestor_);
+  const auto now = GraphProcesses(ancestor_);
   const std::string target = fault_.family == FaultFamily::kKill ? CommandNameOf(fault_.target) : "";
   std::string restarted;
   for (const auto& [name, pid] : pids_at_start_) {

@@ -61,6 +61,8 @@ class FaultEpisode {
   // took the goal (PLANNING naming it).
   void WatchPlannerGoal(const GraphView& view);
   bool Recovered(const GraphView& view);
+  // Notes what recovery waits for (the report of an episode that timed out) and returns false.
+  bool Awaiting(std::string what);
   void Finish(const GraphView& view, const std::string& outcome);
   void AddReaction(const std::string& text);
 
@@ -81,6 +83,7 @@ class FaultEpisode {
   int mission_step_at_start_ = -1;
   std::map<std::string, pid_t> pids_at_start_;
   bool planner_failure_noted_ = false;
+  std::string awaiting_;           // what recovery waits for (Recovered's last "no": for the report)
   bool tool_goal_taken_ = false;   // the planner's status named one of the injector's goals
   bool superseded_noted_ = false;  // ... and then the mission's goal (no refusal can come)
 };

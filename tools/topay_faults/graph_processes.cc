@@ -63,6 +63,12 @@ std::map<std::string, pid_t> DescendantProcesses(pid_t ancestor) {
   return found;
 }
 
+std::map<std::string, pid_t> GraphProcesses(pid_t ancestor) {
+  std::map<std::string, pid_t> graph = DescendantProcesses(ancestor);
+  std::erase_if(graph, [](const auto& entry) { return entry.first != "lcm-logger" && !entry.first.starts_with("topay-"); });
+  return graph;
+}
+
 std::string CommandNameOf(const std::string& graph_process) {
   return graph_process == "logger" ? "lcm-logger" : "topay-" + graph_process;
 }

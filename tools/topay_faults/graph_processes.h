@@ -13,6 +13,13 @@ namespace topay::tools {
 /// keeps the newest (largest start time) pid.
 std::map<std::string, pid_t> DescendantProcesses(pid_t ancestor);
 
+/// DescendantProcesses with graph processes' command names only ("topay-*", "lcm-logger"): what
+/// an episode counts on to run again. A shell, a tool, or a child of this process not yet past
+/// its exec (still under this process's name) is left out: one seen when a fault was injected
+/// and gone later (exec'd under another name) was once waited for as a process that never came
+/// back.
+std::map<std::string, pid_t> GraphProcesses(pid_t ancestor);
+
 /// The command name of a graph process (graph name "logger" -> "lcm-logger", else "topay-<name>").
 std::string CommandNameOf(const std::string& graph_process);
 
