@@ -30,7 +30,7 @@ std::string ScreenTargetInMap(const Eigen::Vector3d& p, const MapIntake& map, co
     return fmt::format("target ({:.3f}, {:.3f}, {:.3f}) m is inside an obstacle of the map (a blocked voxel within {:.3f} m)",
                        p.x(), p.y(), p.z(), options.target_clearance_m);
   }
-  if (options.unseen_pocket_reach_m > 0.0 && grid.Contains(p)) {
+  if (options.unseen_pocket_reach_m > 0.0) {
     UnseenPocketOptions pocket_options;
     pocket_options.max_reach_m = options.unseen_pocket_reach_m;
     pocket_options.min_occupied_rim_share = options.unseen_pocket_rim_share;

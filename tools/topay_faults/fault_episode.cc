@@ -193,7 +193,8 @@ bool FaultEpisode::Recovered(const GraphView& view) {
     // The planner took the goal (its target not in the map: a box it has not seen) and the
     // mission's own goal replaced it before any refusal: none can come now; recovery as for any
     // fault. Otherwise the refusal has not come yet.
-    const bool superseded = tool_goal_taken_ && view.planner_goal_id != 0 && !IsToolGoal(view.planner_goal_id);
+    const std::int64_t current = view.planner_goal_id();
+    const bool superseded = tool_goal_taken_ && current != 0 && !IsToolGoal(current);
     if (!superseded) return Awaiting("the planner's refusal of the injected goal");
     if (!superseded_noted_) AddReaction("planner: planned for it (the target not in its map), superseded by the mission's goal");
     superseded_noted_ = true;

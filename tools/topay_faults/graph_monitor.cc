@@ -133,9 +133,6 @@ void GraphMonitor::OnMessage(const std::string& channel, const std::uint8_t* dat
       }
     } else if (channel == channels::PLANNER_STATUS) {
       if (const auto p = CheckedDecode<planner_status_t>(data, size, nullptr)) {
-        v.planner_state = p->state;
-        v.planner_goal_id = p->goal_id;
-        v.planner_failure = p->failure_reason;
         if (v.planner_changes.empty() || v.planner_changes.back().goal_id != p->goal_id ||
             v.planner_changes.back().state != p->state) {
           if (v.planner_changes.size() == GraphView::kMaxPlannerChanges) v.planner_changes.erase(v.planner_changes.begin());

@@ -53,13 +53,12 @@ struct GraphView {
   std::int64_t mission_goal_id = 0;
   std::string mission_detail;
   double last_mission_status_s = -1.0;
-  int planner_state = -1;
-  std::int64_t planner_goal_id = 0;
-  std::string planner_failure;
   /// Every change of the planner's goal or state, the last kMaxPlannerChanges: a refusal the
   /// next goal's status followed within a poll is still seen (the last status alone hid one).
   std::vector<PlannerStatusChange> planner_changes;
   static constexpr std::size_t kMaxPlannerChanges = 64;
+  /// The goal of the planner's last status (0: none yet).
+  std::int64_t planner_goal_id() const { return planner_changes.empty() ? 0 : planner_changes.back().goal_id; }
   std::int64_t contacts = 0;              ///< SIM_CONTACT messages that decode (contact starts)
   bool tracker_held = false;              ///< the last TRACKER_STATUS was HELD
   std::vector<double> tracker_held_starts_s;  ///< receipts of a TRACKER_STATUS HELD after one that was not
