@@ -37,6 +37,11 @@ struct GridGeometry3 {
   std::int64_t Index(int ix, int iy, int iz) const {
     return (std::int64_t{iz} * dims.y() + iy) * dims.x() + ix;
   }
+  /// The cell at linear index `index` (0 <= index < NumCells()), the inverse of Index.
+  Eigen::Vector3i CellAt(std::int64_t index) const {
+    const std::int64_t row = index / dims.x();
+    return {static_cast<int>(index % dims.x()), static_cast<int>(row % dims.y()), static_cast<int>(row / dims.y())};
+  }
   Eigen::Vector3d CellCenter(int ix, int iy, int iz) const {
     return origin_W_m + resolution_m * Eigen::Vector3d(ix + 0.5, iy + 0.5, iz + 0.5);
   }

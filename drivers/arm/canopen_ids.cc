@@ -30,6 +30,19 @@ constexpr std::array<FunctionRow, 14> kFunctions{{
     {CanopenFunction::kHeartbeat, 0x700, "heartbeat"},
 }};
 
+// For each of the 16 function bases (COB-ID >> 7), the row of kFunctions whose objects carry a
+// node id there, or -1: ClassifyCobId looks a frame up instead of scanning the rows.
+constexpr std::array<int, 16> MakeRowOfBase() {
+  std::array<int, 16> rows{};
+  rows.fill(-1);
+  for (std::size_t i = 0; i < kFunctions.size(); ++i) {
+    const CanopenFunction f = kFunctions[i].function;
+    if (f != CanopenFunction::kNmt && f != CanopenFunction::kSync) rows[kFunctions[i].base >> 7] = static_cast<int>(i);
+  }
+  return rows;
+}
+constexpr std::array<int, 16> kRowOfBase = MakeRowOfBase();
+
 const FunctionRow& RowOf(CanopenFunction function) {
   for (const FunctionRow& row : kFunctions) {
     if (row.function == function) return row;
@@ -67,19 +80,20 @@ std::optional<std::uint32_t> CobIdOf(CanopenFunction function, int node_id, std:
 
 std::optional<CobIdClass> ClassifyCobId(std::uint32_t cob_id, std::string* error) {
   if (cob_id > can::CanFrame::kMaxStandardId) {
+    if (error == nullptr) return std::nullopt;
     return Fail(error, "COB-ID " + Hex(cob_id) + " is above 0x7FF");
   }
   const int node_id = static_cast<int>(cob_id & 0x7F);
-  const std::uint32_t base = cob_id & ~0x7Fu;
   if (cob_id == 0x000) return CobIdClass{CanopenFunction::kNmt, 0};
   if (cob_id == 0x080) return CobIdClass{CanopenFunction::kSync, 0};
-  for (const FunctionRow& row : kFunctions) {
-    if (!HasNodeId(row.function) || row.base != base) continue;
-    if (node_id == 0) {
-      return Fail(error, "COB-ID " + Hex(cob_id) + " (" + std::string(row.name) +
-                             ") has node id 0, outside 1..127");
-    }
-    return CobIdClass{row.function, node_id};
+  const int row = kRowOfBase[cob_id >> 7];
+  if (row >= 0 && node_id != 0) return CobIdClass{kFunctions[static_cast<std::size_t>(row)].function, node_id};
+  // The messages are built only when asked for: the bridge classifies every frame on the bus
+  // once per drive, and most of them belong to another node.
+  if (error == nullptr) return std::nullopt;
+  if (row >= 0) {
+    return Fail(error, "COB-ID " + Hex(cob_id) + " (" + std::string(kFunctions[static_cast<std::size_t>(row)].name) +
+                           ") has node id 0, outside 1..127");
   }
   return Fail(error, "COB-ID " + Hex(cob_id) + " is not a CANopen object this stack uses");
 }

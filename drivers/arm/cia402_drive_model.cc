@@ -51,20 +51,22 @@ TransitionResult DriveModel::ApplyControlword(std::uint16_t controlword) {
 
 // CiA 402-2 Figure 25 and Table 29.
 TransitionResult DriveModel::ApplyCommand(Command command, std::uint16_t controlword) {
-  const std::string refused = std::string(ToString(command)) + " (controlword " +
-                              Hex4(controlword) + ") is illegal in " +
-                              std::string(ToString(state_));
+  // Formatted only when refused: the drive applies a controlword with every RPDO1.
+  const auto refuse = [&](std::string_view why) {
+    return Refuse(std::string(ToString(command)) + " (controlword " + Hex4(controlword) + ") is illegal in " +
+                  std::string(ToString(state_)) + std::string(why));
+  };
   switch (state_) {
     case DriveState::kNotReadyToSwitchOn:
-      return Refuse(refused + ": the drive is still initialising");
+      return refuse(": the drive is still initialising");
     case DriveState::kFaultReactionActive:
-      return Refuse(refused + ": the fault reaction is in progress");
+      return refuse(": the fault reaction is in progress");
     case DriveState::kFault:
-      return Refuse(refused);  // handled by ApplyControlword
+      return refuse("");  // handled by ApplyControlword
     case DriveState::kSwitchOnDisabled:
       if (command == Command::kShutdown) return Move(DriveState::kReadyToSwitchOn, 2);
       if (command == Command::kDisableVoltage || command == Command::kQuickStop) return Stay();
-      return Refuse(refused + ": send shutdown first");
+      return refuse(": send shutdown first");
     case DriveState::kReadyToSwitchOn:
       if (command == Command::kSwitchOn) return Move(DriveState::kSwitchedOn, 3);
       // "Switch on + enable operation" (0xxx 1111): transitions 3 and 4 at once.
@@ -92,9 +94,9 @@ TransitionResult DriveModel::ApplyCommand(Command command, std::uint16_t control
       if (command == Command::kEnableOperation && options_.quick_stop_stays_active) {
         return Move(DriveState::kOperationEnabled, 16);
       }
-      return Refuse(refused + ": send disable voltage (or wait for the stop to finish)");
+      return refuse(": send disable voltage (or wait for the stop to finish)");
   }
-  return Refuse(refused);
+  return refuse("");
 }
 
 TransitionResult DriveModel::CompleteInitialization() {

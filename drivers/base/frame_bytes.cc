@@ -56,26 +56,24 @@ std::string FrameLabel(BaseFrameKind kind, int node_id) {
 }
 
 std::string CheckFrameShape(const can::CanFrame& frame, BaseFrameKind kind, int node_id) {
-  if (const std::string bad_node = CheckNodeId(node_id); !bad_node.empty()) {
-    return std::string(FrameName(kind)) + ": " + bad_node;
-  }
-  const std::string label = FrameLabel(kind, node_id);
+  if (node_id < kMinNodeId || node_id > kMaxNodeId) return std::string(FrameName(kind)) + ": " + CheckNodeId(node_id);
+  // The label is formatted only for a frame that fails (every frame decoded asks).
+  const auto label = [&] { return FrameLabel(kind, node_id); };
   if (frame.error || frame.remote || frame.extended) {
-    return label + ": not a standard data frame";
+    return label() + ": not a standard data frame";
   }
   if (frame.id != FrameId(kind, node_id)) {
     char id[16];
     std::snprintf(id, sizeof(id), "0x%03X", static_cast<unsigned>(frame.id));
-    return label + ": wrong id " + id;
+    return label() + ": wrong id " + id;
   }
   const int expected_dlc = FrameDlc(kind);
   if (frame.dlc != expected_dlc) {
-    return label + ": DLC " + std::to_string(frame.dlc) + ", expected " +
-           std::to_string(expected_dlc);
+    return label() + ": DLC " + std::to_string(frame.dlc) + ", expected " + std::to_string(expected_dlc);
   }
   if (expected_dlc == 8 && frame.data[kChecksumByte] != ComputeChecksum(frame)) {
-    return label + ": bad checksum " + std::to_string(frame.data[kChecksumByte]) +
-           ", expected " + std::to_string(ComputeChecksum(frame));
+    return label() + ": bad checksum " + std::to_string(frame.data[kChecksumByte]) + ", expected " +
+           std::to_string(ComputeChecksum(frame));
   }
   return "";
 }

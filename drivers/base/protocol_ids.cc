@@ -28,7 +28,7 @@ std::string CheckNodeId(int node_id) {
 }
 
 std::uint32_t FrameId(BaseFrameKind kind, int node_id) {
-  if (!CheckNodeId(node_id).empty()) return 0;
+  if (node_id < kMinNodeId || node_id > kMaxNodeId) return 0;
   return static_cast<std::uint32_t>(kind) + static_cast<std::uint32_t>(node_id);
 }
 
@@ -48,8 +48,8 @@ int FrameDlc(BaseFrameKind kind) { return kind == BaseFrameKind::kModeRequest ? 
 
 std::optional<BaseFrameKind> IdentifyFrame(const can::CanFrame& frame, int node_id,
                                            std::string* error) {
-  if (const std::string bad_node = CheckNodeId(node_id); !bad_node.empty()) {
-    SetError(error, bad_node);
+  if (node_id < kMinNodeId || node_id > kMaxNodeId) {
+    SetError(error, CheckNodeId(node_id));
     return std::nullopt;
   }
   if (frame.error || frame.remote || frame.extended) {
@@ -57,10 +57,12 @@ std::optional<BaseFrameKind> IdentifyFrame(const can::CanFrame& frame, int node_
     return std::nullopt;
   }
   for (const BaseFrameKind kind : kAllKinds) {
-    if (frame.id == FrameId(kind, node_id)) return kind;
+    if (frame.id == static_cast<std::uint32_t>(kind) + static_cast<std::uint32_t>(node_id)) return kind;
   }
-  SetError(error, "id " + Hex(frame.id) + " is not a base protocol frame of node " +
-                      std::to_string(node_id));
+  // Built only when asked for: the bridge asks of every frame on the bus, most of them the drives'.
+  if (error != nullptr) {
+    SetError(error, "id " + Hex(frame.id) + " is not a base protocol frame of node " + std::to_string(node_id));
+  }
   return std::nullopt;
 }
 

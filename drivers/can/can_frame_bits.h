@@ -4,6 +4,7 @@
 // stuff bits counted, and the fixed-form tail added (CRC delimiter, ACK slot and delimiter, EOF,
 // intermission).
 #include <cstdint>
+#include <span>
 #include <vector>
 
 #include "drivers/can/can_frame.h"
@@ -16,7 +17,7 @@ inline constexpr int kCanFrameTailBits = 13;
 
 /// CRC-15/CAN (polynomial x^15 + x^14 + x^10 + x^8 + x^7 + x^4 + x^3 + 1, 0x4599, initial 0)
 /// over `bits` (0 or 1 each, in transmission order).
-std::uint16_t CanCrc15(const std::vector<std::uint8_t>& bits);
+std::uint16_t CanCrc15(std::span<const std::uint8_t> bits);
 
 /// The unstuffed bits from SOF up to the end of the data field, in transmission order (0 =
 /// dominant): standard: SOF, 11 id bits, RTR, IDE (0), r0 (0), 4 DLC bits, data; extended: SOF,
@@ -30,12 +31,12 @@ std::vector<std::uint8_t> CanFrameStuffedRegionBits(const CanFrame& frame);
 
 /// Stuff bits a transmitter inserts into `bits`: after 5 equal bits in a row a complementary bit
 /// is inserted, which counts towards the next run.
-int CountStuffBits(const std::vector<std::uint8_t>& bits);
+int CountStuffBits(std::span<const std::uint8_t> bits);
 
 /// The frame's length on the wire in bits, including stuff bits, the tail and the 3-bit
 /// intermission: e.g. 47 + stuff bits for a standard frame with no data, 111 + stuff bits with
 /// 8 bytes. Error frames count 0 (they are not data on the bus). Throws std::invalid_argument
-/// for an invalid frame.
+/// for an invalid frame. Allocation-free (the bridge measures every frame it sends and receives).
 int CanFrameLengthBits(const CanFrame& frame);
 
 }  // namespace topay::can

@@ -209,10 +209,10 @@ void CanbridgeNode::Dispatch(const can::CanFrame& frame, double now_s) {
   if (frame.error) return;  // the bus status follows them
   std::string error;
   FrameResult result = base_.Handle(frame, now_s, &error);
-  std::string kind = "base (node " + std::to_string(base_.node_id()) + ") id " + Hex3(frame.id);
+  const DriveLink* owner = nullptr;  // the drive that took the frame; none: the base or nobody
   for (std::size_t i = 0; result == FrameResult::kNotMine && i < drives_.size(); ++i) {
     result = drives_[i].Handle(frame, now_s, &error);
-    kind = drives_[i].Label() + " id " + Hex3(frame.id);
+    owner = &drives_[i];
   }
   if (result == FrameResult::kNotMine && !frame.extended && !frame.remote) {
     const std::uint32_t host_heartbeat = 0x700u + static_cast<std::uint32_t>(options_.drives.startup.host_node_id);
@@ -221,7 +221,11 @@ void CanbridgeNode::Dispatch(const can::CanFrame& frame, double now_s) {
   switch (result) {
     case FrameResult::kDecoded: return;
     case FrameResult::kHostFrame: counters_.CountHostFrame(); return;
-    case FrameResult::kMalformed: counters_.CountMalformed(kind, error); return;
+    case FrameResult::kMalformed: {
+      const std::string from = owner ? owner->Label() : "base (node " + std::to_string(base_.node_id()) + ")";
+      counters_.CountMalformed(from + " id " + Hex3(frame.id), error);
+      return;
+    }
     case FrameResult::kNotMine:
       counters_.CountUnknown((frame.extended ? "extended id " : "id ") + Hex3(frame.id), can::ToString(frame));
       return;

@@ -1,5 +1,8 @@
 #include "procs/planner/map_intake.h"
 
+#include <algorithm>
+#include <tuple>
+
 #include "core/map/voxel_boxes.h"
 
 namespace topay::planner {
@@ -87,17 +90,18 @@ std::optional<MapWork> MapIntake::Accept(const map_update_t& msg, msgs::MapAccep
     work.states = forwarded_;
     return work;
   }
-  // A snapshot of the grid held: only what differs (usually nothing: the deltas had it all).
+  // A snapshot of the grid held: only what differs (usually nothing: the deltas had it all), found
+  // by comparing the two arrays in runs (std::mismatch), in index order.
   const GridGeometry3& g = receiver_.geometry();
-  for (int iz = 0; iz < g.dims.z(); ++iz) {
-    for (int iy = 0; iy < g.dims.y(); ++iy) {
-      for (int ix = 0; ix < g.dims.x(); ++ix) {
-        const std::int64_t i = g.Index(ix, iy, iz);
-        if (forwarded_[i] == states[i]) continue;
-        forwarded_[i] = states[i];
-        work.changes.push_back({{ix, iy, iz}, static_cast<VoxelState>(states[i])});
-      }
-    }
+  auto held = forwarded_.begin();
+  auto sent = states.begin();
+  while (true) {
+    std::tie(held, sent) = std::mismatch(held, forwarded_.end(), sent, states.end());
+    if (held == forwarded_.end()) break;
+    *held = *sent;
+    work.changes.push_back({g.CellAt(held - forwarded_.begin()), static_cast<VoxelState>(*sent)});
+    ++held;
+    ++sent;
   }
   if (work.changes.empty()) return std::nullopt;
   return work;

@@ -35,6 +35,7 @@ TEST(GridGeometry3Test, WorldToCellAndBack) {
         const Eigen::Vector3d center = grid.CellCenter(ix, iy, iz);
         EXPECT_TRUE(grid.Contains(center));
         EXPECT_EQ(grid.CellOf(center), Eigen::Vector3i(ix, iy, iz));
+        EXPECT_EQ(grid.CellAt(grid.Index(ix, iy, iz)), Eigen::Vector3i(ix, iy, iz));
       }
   EXPECT_EQ(grid.Index(1, 2, 3), (3 * grid.dims.y() + 2) * grid.dims.x() + 1);
   EXPECT_FALSE(grid.Contains(Eigen::Vector3d(1.0, 0, 1)));  // max face is excluded
