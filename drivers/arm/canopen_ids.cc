@@ -36,8 +36,7 @@ constexpr std::array<int, 16> MakeRowOfBase() {
   std::array<int, 16> rows{};
   rows.fill(-1);
   for (std::size_t i = 0; i < kFunctions.size(); ++i) {
-    const CanopenFunction f = kFunctions[i].function;
-    if (f != CanopenFunction::kNmt && f != CanopenFunction::kSync) rows[kFunctions[i].base >> 7] = static_cast<int>(i);
+    if (HasNodeId(kFunctions[i].function)) rows[kFunctions[i].base >> 7] = static_cast<int>(i);
   }
   return rows;
 }
@@ -61,10 +60,6 @@ std::string Hex(std::uint32_t value) {
 std::string_view ToString(CanopenFunction function) { return RowOf(function).name; }
 
 std::uint32_t FunctionBaseCobId(CanopenFunction function) { return RowOf(function).base; }
-
-bool HasNodeId(CanopenFunction function) {
-  return function != CanopenFunction::kNmt && function != CanopenFunction::kSync;
-}
 
 std::string CheckNodeId(int node_id) {
   if (node_id >= kMinNodeId && node_id <= kMaxNodeId) return "";

@@ -40,7 +40,9 @@ std::string_view ToString(CanopenFunction function);
 std::uint32_t FunctionBaseCobId(CanopenFunction function);
 
 /// True for the functions whose COB-ID carries a node id (all but NMT and SYNC).
-bool HasNodeId(CanopenFunction function);
+constexpr bool HasNodeId(CanopenFunction function) {
+  return function != CanopenFunction::kNmt && function != CanopenFunction::kSync;
+}
 
 /// Empty when 1 <= node_id <= 127, else e.g. "node id 128 is outside 1..127".
 std::string CheckNodeId(int node_id);

@@ -56,7 +56,7 @@ std::string FrameLabel(BaseFrameKind kind, int node_id) {
 }
 
 std::string CheckFrameShape(const can::CanFrame& frame, BaseFrameKind kind, int node_id) {
-  if (node_id < kMinNodeId || node_id > kMaxNodeId) return std::string(FrameName(kind)) + ": " + CheckNodeId(node_id);
+  if (!ValidNodeId(node_id)) return std::string(FrameName(kind)) + ": " + CheckNodeId(node_id);
   // The label is formatted only for a frame that fails (every frame decoded asks).
   const auto label = [&] { return FrameLabel(kind, node_id); };
   if (frame.error || frame.remote || frame.extended) {

@@ -21,14 +21,14 @@ std::string Hex(std::uint32_t value) {
 }  // namespace
 
 std::string CheckNodeId(int node_id) {
-  if (node_id < kMinNodeId || node_id > kMaxNodeId) {
+  if (!ValidNodeId(node_id)) {
     return "node id " + std::to_string(node_id) + " is outside 1..127";
   }
   return "";
 }
 
 std::uint32_t FrameId(BaseFrameKind kind, int node_id) {
-  if (node_id < kMinNodeId || node_id > kMaxNodeId) return 0;
+  if (!ValidNodeId(node_id)) return 0;
   return static_cast<std::uint32_t>(kind) + static_cast<std::uint32_t>(node_id);
 }
 
@@ -48,7 +48,7 @@ int FrameDlc(BaseFrameKind kind) { return kind == BaseFrameKind::kModeRequest ? 
 
 std::optional<BaseFrameKind> IdentifyFrame(const can::CanFrame& frame, int node_id,
                                            std::string* error) {
-  if (node_id < kMinNodeId || node_id > kMaxNodeId) {
+  if (!ValidNodeId(node_id)) {
     SetError(error, CheckNodeId(node_id));
     return std::nullopt;
   }
@@ -57,7 +57,7 @@ std::optional<BaseFrameKind> IdentifyFrame(const can::CanFrame& frame, int node_
     return std::nullopt;
   }
   for (const BaseFrameKind kind : kAllKinds) {
-    if (frame.id == static_cast<std::uint32_t>(kind) + static_cast<std::uint32_t>(node_id)) return kind;
+    if (frame.id == FrameId(kind, node_id)) return kind;
   }
   // Built only when asked for: the bridge asks of every frame on the bus, most of them the drives'.
   if (error != nullptr) {

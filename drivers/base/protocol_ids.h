@@ -24,6 +24,9 @@ inline constexpr int kMinNodeId = 1;    ///< Node ids are 1..127 (7 bits), as in
 inline constexpr int kMaxNodeId = 127;
 inline constexpr int kDefaultNodeId = 1;  ///< The base controller's factory node id.
 
+/// True when `node_id` is in 1..127 (CheckNodeId says what is wrong otherwise).
+constexpr bool ValidNodeId(int node_id) { return node_id >= kMinNodeId && node_id <= kMaxNodeId; }
+
 /// Empty when `node_id` is in 1..127, else what is wrong.
 std::string CheckNodeId(int node_id);
 
