@@ -62,7 +62,7 @@ std::string_view ToString(CanopenFunction function) { return RowOf(function).nam
 std::uint32_t FunctionBaseCobId(CanopenFunction function) { return RowOf(function).base; }
 
 std::string CheckNodeId(int node_id) {
-  if (node_id >= kMinNodeId && node_id <= kMaxNodeId) return "";
+  if (node_id >= kMinNodeId && node_id <= kMaxNodeId) return {};
   return "node id " + std::to_string(node_id) + " is outside 1..127";
 }
 

@@ -143,7 +143,7 @@ std::string CheckCanFrame(const CanFrame& frame) {
   if (frame.error) {
     if (frame.remote) return "an error frame cannot be a remote frame";
     if (frame.id > CAN_ERR_MASK) return "error class 0x" + Hex(frame.id, 8) + " is above 0x1FFFFFFF";
-    return "";
+    return {};
   }
   if (frame.extended && frame.id > CanFrame::kMaxExtendedId) {
     return "extended id 0x" + Hex(frame.id, 8) + " is above 0x1FFFFFFF";
@@ -151,7 +151,7 @@ std::string CheckCanFrame(const CanFrame& frame) {
   if (!frame.extended && frame.id > CanFrame::kMaxStandardId) {
     return "standard id 0x" + Hex(frame.id, 3) + " is above 0x7FF (use an extended id)";
   }
-  return "";
+  return {};
 }
 
 bool operator==(const CanFrame& a, const CanFrame& b) {

@@ -88,8 +88,8 @@ can::CanFrame BaseLink::VelocityFrame(double v_mps, double omega_radps) {
   return *frame;
 }
 
-std::vector<can::CanFrame> BaseLink::CycleFrames(double now_s, double v_mps, double omega_radps) {
-  std::vector<can::CanFrame> frames;
+void BaseLink::CycleFrames(double now_s, double v_mps, double omega_radps, std::vector<can::CanFrame>* out) {
+  std::vector<can::CanFrame>& frames = *out;
   const std::optional<ModeRequest> request = NextRequest();
   if (request && (request != last_request_ || now_s - last_request_s_ >= options_.mode_request_repeat_s - 1e-9)) {
     if (auto frame = base::EncodeModeRequest(*request, options_.node_id, nullptr)) frames.push_back(*frame);
@@ -98,7 +98,6 @@ std::vector<can::CanFrame> BaseLink::CycleFrames(double now_s, double v_mps, dou
   }
   if (!request) last_request_.reset();
   frames.push_back(VelocityFrame(v_mps, omega_radps));
-  return frames;
 }
 
 std::optional<base::UnicycleVelocity> BaseLink::TakeNewVelocity() {

@@ -30,8 +30,9 @@ class BaseLink {
   void ArmFaultReset() { fault_reset_armed_ = true; }
 
   /// The frames of this cycle: a mode request when one is due (the next allowed step towards the
-  /// target, repeated every mode_request_repeat_s), then the velocity command (v, omega).
-  std::vector<can::CanFrame> CycleFrames(double now_s, double v_mps, double omega_radps);
+  /// target, repeated every mode_request_repeat_s), then the velocity command (v, omega),
+  /// appended to *out (the node reuses one vector every cycle).
+  void CycleFrames(double now_s, double v_mps, double omega_radps, std::vector<can::CanFrame>* out);
   /// Only the velocity command (sent at once on a new CONTROL_COMMAND).
   can::CanFrame VelocityFrame(double v_mps, double omega_radps);
 

@@ -8,6 +8,7 @@
 #include <limits>
 #include <stdexcept>
 
+#include "drivers/arm/canopen_ids.h"
 #include "drivers/arm/emcy.h"
 #include "drivers/arm/heartbeat.h"
 #include "drivers/arm/sync.h"
@@ -210,9 +211,17 @@ void CanbridgeNode::Dispatch(const can::CanFrame& frame, double now_s) {
   std::string error;
   FrameResult result = base_.Handle(frame, now_s, &error);
   const DriveLink* owner = nullptr;  // the drive that took the frame; none: the base or nobody
-  for (std::size_t i = 0; result == FrameResult::kNotMine && i < drives_.size(); ++i) {
-    result = drives_[i].Handle(frame, now_s, &error);
-    owner = &drives_[i];
+  if (result == FrameResult::kNotMine && !frame.extended) {
+    // Classified once; only the drive of its node id can take it (the others' Handle would say
+    // kNotMine).
+    if (const auto cob = canopen::ClassifyCobId(frame.id, nullptr); cob && cob->node_id != 0) {
+      for (DriveLink& drive : drives_) {
+        if (drive.node_id() != cob->node_id) continue;
+        result = drive.Handle(frame, *cob, now_s, &error);
+        owner = &drive;
+        break;
+      }
+    }
   }
   if (result == FrameResult::kNotMine && !frame.extended && !frame.remote) {
     const std::uint32_t host_heartbeat = 0x700u + static_cast<std::uint32_t>(options_.drives.startup.host_node_id);
@@ -453,7 +462,9 @@ void CanbridgeNode::SendCycleFrames(double now_s) {
     limiter_.ResetToZero(now_s);
   }
 
-  std::vector<can::CanFrame> frames = base_.CycleFrames(now_s, command.v_mps, command.omega_radps);
+  std::vector<can::CanFrame>& frames = cycle_frames_;
+  frames.clear();  // its capacity kept: no allocation per cycle
+  base_.CycleFrames(now_s, command.v_mps, command.omega_radps, &frames);
   const DriveIntent intent = moving_state ? DriveIntent::kEnable : DriveIntent::kQuickStop;
   bool any_operational = false;
   for (std::size_t i = 0; i < drives_.size(); ++i) {
@@ -495,6 +506,10 @@ void CanbridgeNode::FillOutputs(double now_s, std::int64_t now_utime) {
     joint_state_t msg;
     msg.utime = now_utime;
     msg.num_joints = static_cast<int>(drives_.size());
+    msg.names.reserve(drives_.size());
+    msg.position_rad.reserve(drives_.size());
+    msg.velocity_radps.reserve(drives_.size());
+    msg.effort_Nm.reserve(drives_.size());
     for (const DriveLink& drive : drives_) {
       msg.names.push_back(drive.joint_name());
       msg.position_rad.push_back(drive.position_rad());
@@ -503,24 +518,26 @@ void CanbridgeNode::FillOutputs(double now_s, std::int64_t now_utime) {
     }
     outputs_.joint_state = msg;
   }
-  const std::string signature = StatusSignature();
-  if (signature != last_signature_ || now_s - last_status_s_ >= options_.status_period_s - 1e-9) {
-    last_signature_ = signature;
+  FillStatusKey(&status_key_);
+  if (status_key_ != last_status_key_ || now_s - last_status_s_ >= options_.status_period_s - 1e-9) {
+    std::swap(last_status_key_, status_key_);
     last_status_s_ = now_s;
     outputs_.status = StatusMessage(now_s, now_utime);
   }
 }
 
-std::string CanbridgeNode::StatusSignature() const {
-  std::string s = std::to_string(static_cast<int>(state_)) + "|" + stop_reason_ + "|" +
-                  can::ToString(bus_->status().state) + "|" +
-                  std::to_string(base_.mode() ? static_cast<int>(*base_.mode()) : -1) + "|" +
-                  std::to_string(base_.fault_bits());
-  for (const DriveLink& drive : drives_) {
-    s += "|" + std::to_string(drive.state() ? static_cast<int>(*drive.state()) : -1) + "," +
-         std::to_string(drive.last_emcy_code()) + "," + std::to_string(static_cast<int>(drive.phase()));
+void CanbridgeNode::FillStatusKey(StatusKey* key) const {
+  key->state = state_;
+  key->stop_reason = stop_reason_;  // assigned in place: no allocation while it fits
+  key->bus_state = bus_->status().state;
+  key->base_mode = base_.mode() ? static_cast<int>(*base_.mode()) : -1;
+  key->base_fault_bits = base_.fault_bits();
+  key->drives.resize(drives_.size());
+  for (std::size_t i = 0; i < drives_.size(); ++i) {
+    const DriveLink& drive = drives_[i];
+    key->drives[i] = DriveStatusKey{drive.state() ? static_cast<int>(*drive.state()) : -1, drive.last_emcy_code(),
+                                    static_cast<int>(drive.phase())};
   }
-  return s;
 }
 
 drive_status_t CanbridgeNode::StatusMessage(double now_s, std::int64_t now_utime) {

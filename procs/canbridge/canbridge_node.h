@@ -25,6 +25,7 @@
 #include "procs/canbridge/drive_link.h"
 #include "procs/canbridge/frame_counters.h"
 #include "procs/canbridge/latency_stats.h"
+#include "procs/canbridge/status_key.h"
 #include "topay/base_velocity_t.hpp"
 #include "topay/control_command_t.hpp"
 #include "topay/drive_command_t.hpp"
@@ -104,7 +105,8 @@ class CanbridgeNode {
   bool CommandAllowsRecovery(double now_s) const;
   bool AllDrivesOperational() const;
   void FillOutputs(double now_s, std::int64_t now_utime);
-  std::string StatusSignature() const;
+  // The key of the status now, into *key (its storage reused).
+  void FillStatusKey(StatusKey* key) const;
 
   CanbridgeOptions options_;
   can::CanBus* bus_;
@@ -130,7 +132,9 @@ class CanbridgeNode {
   double last_reopen_s_ = -1e9;
   double last_host_heartbeat_s_ = -1e9;
   double last_status_s_ = -1e9;
-  std::string last_signature_;
+  std::vector<can::CanFrame> cycle_frames_;  // SendCycleFrames' frames (kept for its capacity)
+  StatusKey status_key_;       // this cycle's (scratch, swapped with the last published one)
+  StatusKey last_status_key_;  // of the last DRIVE_STATUS published
   bool started_ = false;
 
   DeviceCommand latest_command_;

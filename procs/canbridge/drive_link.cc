@@ -51,8 +51,14 @@ bool DriveLink::faulted() const {
 
 FrameResult DriveLink::Handle(const can::CanFrame& frame, double now_s, std::string* error) {
   const std::optional<canopen::CobIdClass> cob = canopen::ClassifyCobId(frame.id, nullptr);
-  if (frame.error || frame.extended || !cob || cob->node_id != node_id_) return FrameResult::kNotMine;
-  switch (cob->function) {
+  if (!cob) return FrameResult::kNotMine;
+  return Handle(frame, *cob, now_s, error);
+}
+
+FrameResult DriveLink::Handle(const can::CanFrame& frame, const canopen::CobIdClass& cob, double now_s,
+                              std::string* error) {
+  if (frame.error || frame.extended || cob.node_id != node_id_) return FrameResult::kNotMine;
+  switch (cob.function) {
     case CanopenFunction::kTpdo1: {
       const auto pdo = cia402::DecodeTpdo1(frame, options_.units, error);
       if (!pdo) return FrameResult::kMalformed;

@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "drivers/arm/canopen_ids.h"
 #include "drivers/arm/cia402_state.h"
 #include "drivers/arm/heartbeat.h"
 #include "drivers/arm/sdo.h"
@@ -43,6 +44,9 @@ class DriveLink {
             std::vector<cia402::SdoWrite> writes);
 
   FrameResult Handle(const can::CanFrame& frame, double now_s, std::string* error);
+  /// The same for a frame already classified as `cob` (canopen::ClassifyCobId of its id): the
+  /// node classifies each frame once and hands it to the drive of its node id.
+  FrameResult Handle(const can::CanFrame& frame, const canopen::CobIdClass& cob, double now_s, std::string* error);
 
   /// Starts (again) the start-up from NMT reset communication.
   void BeginStartup(double now_s);

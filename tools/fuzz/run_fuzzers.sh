@@ -6,7 +6,10 @@
 # hang (> 10 s for one input) or memory above 2.5 GB stops that target and fails the run; the
 # input is kept as BUILD_DIR/fuzz/artifacts/<target>-crash-... (add it to
 # tests/fuzz/regressions/<target>/ with the fix). Writes BUILD_DIR/fuzz/report.md: executions,
-# time and result per target. FUZZ_JOBS (default 1) targets run at a time.
+# time and result per target. FUZZ_JOBS (default 1) targets run at a time. FUZZ_WORKERS (default
+# 1) libFuzzer processes run each target side by side, each for its share of RUNS, on the same
+# corpus directories (libFuzzer reloads the first one every second, so each sees what the others
+# found); the row adds their executions up and fails when any of them fails.
 #
 #   tools/fuzz/run_fuzzers.sh BUILD_DIR RUNS MAX_SECONDS [TARGET...]
 set -uo pipefail
@@ -50,24 +53,43 @@ run_one() {
   mkdir -p "$work"
   local dirs=("$work" "$root/tests/fuzz/corpus/$name")
   [ -d "$root/tests/fuzz/regressions/$name" ] && dirs+=("$root/tests/fuzz/regressions/$name")
-  local log=$out/logs/$name.log
-  echo "run_fuzzers: $name (up to $runs runs, $max_seconds s)"
-  local start code seconds execs rss corpus result rate
+  local workers=${FUZZ_WORKERS:-1}
+  local share=$(( (runs + workers - 1) / workers ))
+  echo "run_fuzzers: $name (up to $runs runs, $max_seconds s, $workers worker(s))"
+  local start code seconds execs rss corpus result rate w failed_log=""
+  local logs=() wpids=()
   start=$(date +%s.%N)
-  ASAN_OPTIONS=${ASAN_OPTIONS:-detect_leaks=1:allocator_may_return_null=0} \
-  UBSAN_OPTIONS=${UBSAN_OPTIONS:-print_stacktrace=1:halt_on_error=1} \
-    "$exe" -runs="$runs" -max_total_time="$max_seconds" -timeout=10 -rss_limit_mb=2560 \
-      -print_final_stats=1 -artifact_prefix="$out/artifacts/$name-" "${dirs[@]}" > "$log" 2>&1
-  code=$?
+  for ((w = 0; w < workers; ++w)); do
+    local log=$out/logs/$name.log
+    [ "$workers" -gt 1 ] && log=$out/logs/$name.worker$w.log
+    logs+=("$log")
+    ASAN_OPTIONS=${ASAN_OPTIONS:-detect_leaks=1:allocator_may_return_null=0} \
+    UBSAN_OPTIONS=${UBSAN_OPTIONS:-print_stacktrace=1:halt_on_error=1} \
+      "$exe" -runs="$share" -max_total_time="$max_seconds" -timeout=10 -rss_limit_mb=2560 \
+        -print_final_stats=1 -artifact_prefix="$out/artifacts/$name-" "${dirs[@]}" > "$log" 2>&1 &
+    wpids+=($!)
+  done
+  code=0
+  for w in "${!wpids[@]}"; do
+    wait "${wpids[$w]}" || { code=$?; failed_log=${logs[$w]}; }
+  done
   seconds=$(awk -v a="$start" -v b="$(date +%s.%N)" 'BEGIN { printf "%.1f", b - a }')
-  execs=$(sed -n 's/^stat::number_of_executed_units: *//p' "$log" | tail -1)
-  rss=$(sed -n 's/^stat::peak_rss_mb: *//p' "$log" | tail -1)
+  execs=0
+  rss=0
+  for log in "${logs[@]}"; do
+    local e r
+    e=$(sed -n 's/^stat::number_of_executed_units: *//p' "$log" | tail -1)
+    r=$(sed -n 's/^stat::peak_rss_mb: *//p' "$log" | tail -1)
+    execs=$(( execs + ${e:-0} ))
+    [ "${r:-0}" -gt "$rss" ] && rss=$r
+  done
   corpus=$(find "$work" -type f | wc -l)
   if [ "$code" -eq 0 ]; then
     result=ok
+    [ "$workers" -gt 1 ] && result="ok ($workers workers)"
   else
-    result="FAILED (exit $code; $log)"
-    grep -m3 -E "ERROR: |runtime error|fuzz check failed|SUMMARY" "$log" | sed 's/^/  /'
+    result="FAILED (exit $code; $failed_log)"
+    grep -m3 -E "ERROR: |runtime error|fuzz check failed|SUMMARY" "$failed_log" | sed 's/^/  /'
   fi
   rate=$(awk -v n="${execs:-0}" -v s="$seconds" 'BEGIN { printf "%.0f", (s > 0 ? n / s : 0) }')
   printf '| %s | %s | %.0f | %s | %s | %s | %s |\n' "$name" "${execs:-?}" "$seconds" "$rate" "$corpus" \

@@ -25,6 +25,12 @@ std::optional<ModeRequest> RequestIn(const std::vector<can::CanFrame>& frames) {
   return std::nullopt;
 }
 
+std::vector<can::CanFrame> CycleFrames(BaseLink& link, double now_s) {
+  std::vector<can::CanFrame> frames;
+  link.CycleFrames(now_s, 0, 0, &frames);
+  return frames;
+}
+
 can::CanFrame Status(BaseMode mode, std::uint16_t faults = 0) {
   return *base::EncodeStatus({mode, static_cast<std::uint8_t>(faults ? 1 : 0), faults, 47.5, 0}, kNode, nullptr);
 }
@@ -33,25 +39,25 @@ TEST(BaseLinkTest, ModeRequestsFollowTheAllowedTransitions) {
   BaseLink link(BaseLinkOptions{});
   std::string error;
   link.SetTargetMode(BaseMode::kCanCommand);
-  EXPECT_EQ(RequestIn(link.CycleFrames(0.0, 0, 0)), ModeRequest::kCanCommand);  // mode unknown: ask
-  EXPECT_EQ(RequestIn(link.CycleFrames(0.05, 0, 0)), std::nullopt);             // not yet repeated
-  EXPECT_EQ(RequestIn(link.CycleFrames(0.1, 0, 0)), ModeRequest::kCanCommand);  // repeated at 100 ms
+  EXPECT_EQ(RequestIn(CycleFrames(link, 0.0)), ModeRequest::kCanCommand);  // mode unknown: ask
+  EXPECT_EQ(RequestIn(CycleFrames(link, 0.05)), std::nullopt);             // not yet repeated
+  EXPECT_EQ(RequestIn(CycleFrames(link, 0.1)), ModeRequest::kCanCommand);  // repeated at 100 ms
   ASSERT_EQ(link.Handle(Status(BaseMode::kQuickStop), 0.11, &error), FrameResult::kDecoded);
-  EXPECT_EQ(RequestIn(link.CycleFrames(0.12, 0, 0)), ModeRequest::kStandby);  // quick stop -> standby first
+  EXPECT_EQ(RequestIn(CycleFrames(link, 0.12)), ModeRequest::kStandby);  // quick stop -> standby first
   link.Handle(Status(BaseMode::kStandby), 0.13, &error);
-  EXPECT_EQ(RequestIn(link.CycleFrames(0.14, 0, 0)), ModeRequest::kCanCommand);
+  EXPECT_EQ(RequestIn(CycleFrames(link, 0.14)), ModeRequest::kCanCommand);
   link.Handle(Status(BaseMode::kCanCommand), 0.15, &error);
   EXPECT_TRUE(link.at_target());
-  EXPECT_EQ(RequestIn(link.CycleFrames(0.5, 0, 0)), std::nullopt);
+  EXPECT_EQ(RequestIn(CycleFrames(link, 0.5)), std::nullopt);
   link.SetTargetMode(BaseMode::kQuickStop);
-  EXPECT_EQ(RequestIn(link.CycleFrames(0.51, 0, 0)), ModeRequest::kQuickStop);
+  EXPECT_EQ(RequestIn(CycleFrames(link, 0.51)), ModeRequest::kQuickStop);
   // A fault: nothing but a fault reset, and only when armed.
   link.Handle(Status(BaseMode::kFault, 0x0001), 0.6, &error);
   EXPECT_TRUE(link.faulted());
   link.SetTargetMode(BaseMode::kCanCommand);
-  EXPECT_EQ(RequestIn(link.CycleFrames(0.7, 0, 0)), std::nullopt);
+  EXPECT_EQ(RequestIn(CycleFrames(link, 0.7)), std::nullopt);
   link.ArmFaultReset();
-  EXPECT_EQ(RequestIn(link.CycleFrames(0.8, 0, 0)), ModeRequest::kFaultReset);
+  EXPECT_EQ(RequestIn(CycleFrames(link, 0.8)), ModeRequest::kFaultReset);
 }
 
 TEST(BaseLinkTest, VelocityCommandsCountAndFeedbackDecodes) {

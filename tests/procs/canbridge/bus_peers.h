@@ -259,7 +259,8 @@ class Peers {
     Send(out);
   }
   void Step(double now_s) {
-    std::vector<can::CanFrame> out;
+    std::vector<can::CanFrame>& out = step_frames_;
+    out.clear();  // its capacity kept across steps
     can::ReceivedCanFrame received;
     while (bus_->Receive(0.0, &received).ok()) {
       received_frames.push_back(received.frame);
@@ -278,6 +279,9 @@ class Peers {
   BasePeer base;
   std::vector<DrivePeer> drives;
   std::vector<can::CanFrame> received_frames;
+
+ private:
+  std::vector<can::CanFrame> step_frames_;
 };
 
 }  // namespace topay::canbridge::test

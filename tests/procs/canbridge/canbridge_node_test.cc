@@ -267,6 +267,34 @@ TEST(CanbridgeNodeTest, DriveFaultStopsAndNeedsAFaultReset) {
   EXPECT_EQ(rig.peers.drives[2].model.state(), DriveState::kOperationEnabled);
 }
 
+// DRIVE_STATUS goes out at its period while nothing changes, and in the very cycle the bridge's
+// state or a drive's EMCY code changes (procs/canbridge/status_key.h).
+TEST(CanbridgeNodeTest, DriveStatusGoesOutAtItsPeriodAndAtOnceOnAChange) {
+  Rig rig;
+  ASSERT_TRUE(rig.Running());
+  const control_command_t zero = rig.Command(0.0, 0.0, 0.0);
+  rig.CommandFor(zero, 0.5);
+  int published = 0;
+  const int cycles = 200;  // 1 s
+  for (int i = 0; i < cycles; ++i) {
+    if (i % 4 == 0) rig.node.OnCommand(zero, rig.t);
+    if (rig.Tick().status) ++published;
+  }
+  EXPECT_NEAR(published, cycles * rig.options.cycle_period_s / rig.options.status_period_s, 1.0);
+  std::vector<can::CanFrame> out;
+  rig.peers.drives[4].Fault(0x2310, &out);  // over-current, with its EMCY
+  rig.peers.Send(out);
+  for (int i = 0; i < 40 && rig.node.state() != BridgeState::kFault; ++i) {
+    if (i % 4 == 0) rig.node.OnCommand(zero, rig.t);
+    const CanbridgeOutputs& outputs = rig.Tick();
+    if (rig.node.state() != BridgeState::kFault) continue;
+    ASSERT_TRUE(outputs.status.has_value()) << "the cycle that entered FAULT published no DRIVE_STATUS";
+    EXPECT_EQ(outputs.status->state, drive_status_t::FAULT);
+    EXPECT_EQ(outputs.status->last_emcy_code[4], 0x2310);
+  }
+  EXPECT_EQ(rig.node.state(), BridgeState::kFault);
+}
+
 // A drive that lost the bridge's heartbeat while the bus was off faults with 0x8130 and its
 // EMCY is lost with the bus: the bridge reads 0x603F, sees a communication error only, and
 // resets it itself at a zero command (no operator). A fault of the drive itself read the same
