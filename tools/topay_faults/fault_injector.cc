@@ -15,6 +15,7 @@
 
 #include "graph_processes.h"
 #include "obstacle_goal.h"
+#include "procs/msgs/convert_goal.h"
 #include "tools/topay_missions/child_command.h"
 #include "topay/base_pose_t.hpp"
 #include "topay/drive_command_t.hpp"
@@ -300,13 +301,12 @@ void FaultInjector::RemoveRules() {
 }
 
 void FaultInjector::PublishGoal(const Eigen::Vector3d& p_WE, double yaw_rad) {
-  goal_t goal{};
-  goal.utime = NowMicros();
-  goal.goal_id = ++next_goal_id_;
-  for (int i = 0; i < 3; ++i) goal.p_WE[i] = p_WE[i];
-  goal.quat_WE[0] = std::cos(yaw_rad / 2.0);
-  goal.quat_WE[3] = std::sin(yaw_rad / 2.0);
-  goal.has_hint = false;
+  // Built as the mission sequencer builds its goals (procs/msgs/convert_goal.h), no hint.
+  msgs::PlanGoal plan_goal;
+  plan_goal.utime = NowMicros();
+  plan_goal.goal_id = ++next_goal_id_;
+  plan_goal.X_WE = Eigen::Translation3d(p_WE) * Eigen::AngleAxisd(yaw_rad, Eigen::Vector3d::UnitZ());
+  const goal_t goal = msgs::ToMessage(plan_goal);
   lcm_->publish(std::string(channels::GOAL), &goal);
   if (notes_.empty()) notes_ = fmt::format("GOAL {} at ({:.2f}, {:.2f}, {:.2f})", goal.goal_id, p_WE.x(), p_WE.y(), p_WE.z());
 }

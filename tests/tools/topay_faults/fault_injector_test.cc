@@ -2,18 +2,21 @@
 // the reason, where none can be made): hostile payloads reach every channel; reordered copies
 // arrive late, once each (the injector does not copy its own copies); the nftables rules drop
 // BASE_POSE only, MAP_UPDATE only (whole or in fragments), or about one datagram in ten, and are gone after End() (skipped, with the
-// reason, where nft is missing or refused).
+// reason, where nft is missing or refused); the goal faults publish decodable goals of their kind.
 
 #include <gtest/gtest.h>
 #include <lcm/lcm-cpp.hpp>
 
 #include <cstdlib>
 #include <cstring>
+#include <cmath>
 #include <map>
+#include <set>
 #include <thread>
 
 #include "tests/procs/graph_test_support.h"
 #include "tools/topay_faults/fault_injector.h"
+#include "topay/goal_t.hpp"
 #include "topay_msgs/channels.h"
 
 namespace topay::tools {
@@ -103,6 +106,62 @@ TEST_F(FaultInjectorTest, HostilePayloadsReachEveryChannel) {
   }
   EXPECT_GE(largest, 256u * 1024u);
   injector_->End();
+}
+
+// The goal faults' GOALs decode, and are what they claim: NaN, far outside the room, and a new
+// goal every 50 ms inside the room with a yaw-only, unit quaternion and fresh goal ids.
+TEST_F(FaultInjectorTest, GoalFaultsPublishGoalsOfTheirKind) {
+  injector_.reset();
+  FaultInjectorOptions options;
+  options.lcm_url = kUrl;
+  options.work_dir = dir_;
+  options.graph_ancestor = getpid();
+  options.room_min_m = Eigen::Vector3d(-2.0, -3.0, 0.5);
+  options.room_max_m = Eigen::Vector3d(4.0, 5.0, 1.0);
+  injector_ = std::make_unique<FaultInjector>(options, monitor_.get());
+  const auto goals = [&] {
+    std::vector<goal_t> out;
+    for (const auto& bytes : received_.by_channel["GOAL"]) {
+      goal_t goal;
+      EXPECT_EQ(goal.decode(bytes.data(), 0, static_cast<int>(bytes.size())), static_cast<int>(bytes.size()));
+      out.push_back(goal);
+    }
+    received_.by_channel.clear();
+    return out;
+  };
+  ASSERT_TRUE(injector_->Begin(SelectFaults({"goal-nan"})[0]));
+  Pump(0.1);
+  injector_->End();
+  std::vector<goal_t> got = goals();
+  ASSERT_EQ(got.size(), 1u);
+  EXPECT_TRUE(std::isnan(got[0].p_WE[0]));
+  EXPECT_FALSE(got[0].has_hint);
+
+  ASSERT_TRUE(injector_->Begin(SelectFaults({"goal-unreachable"})[0]));
+  Pump(0.1);
+  injector_->End();
+  got = goals();
+  ASSERT_EQ(got.size(), 1u);
+  EXPECT_GT(got[0].p_WE[0], options.room_max_m.x() + 50.0);
+
+  ASSERT_TRUE(injector_->Begin(SelectFaults({"goal-every-50ms"})[0]));
+  Pump(0.6);
+  injector_->End();
+  got = goals();
+  EXPECT_GE(got.size(), 8u);
+  std::set<std::int64_t> ids;
+  for (const goal_t& goal : got) {
+    ids.insert(goal.goal_id);
+    for (int i = 0; i < 3; ++i) {
+      EXPECT_GE(goal.p_WE[i], options.room_min_m[i] - 1e-9);
+      EXPECT_LE(goal.p_WE[i], options.room_max_m[i] + 1e-9);
+    }
+    const double norm2 = goal.quat_WE[0] * goal.quat_WE[0] + goal.quat_WE[3] * goal.quat_WE[3];
+    EXPECT_NEAR(norm2, 1.0, 1e-9);  // unit, and about z only
+    EXPECT_NEAR(goal.quat_WE[1], 0.0, 1e-12);
+    EXPECT_NEAR(goal.quat_WE[2], 0.0, 1e-12);
+  }
+  EXPECT_EQ(ids.size(), got.size());
 }
 
 TEST_F(FaultInjectorTest, ReorderedCopiesArriveLateOnceEach) {
