@@ -105,20 +105,22 @@ bench-can: build
 
 # Reliability (docs/reliability.md). The fuzz campaign: every target of tests/fuzz/ built with
 # clang as a libFuzzer binary with ASan + UBSan (build-fuzz/), then run for FUZZ_RUNS
-# executions or FUZZ_SECONDS each (report: build-fuzz/fuzz/report.md). FUZZ_TARGETS picks some.
+# executions or FUZZ_SECONDS each (report: build-fuzz/fuzz/report.md). FUZZ_TARGETS picks some;
+# FUZZ_JOBS targets run at a time, FUZZ_WORKERS libFuzzer processes on each (their runs add up).
 # `make test` runs each target's seeds, regressions and 3,000 mutations (ctest -L fuzz).
 FUZZ_BUILD_DIR ?= build-fuzz
 FUZZ_RUNS      ?= 1000000
 FUZZ_SECONDS   ?= 1800
 FUZZ_TARGETS   ?=
 FUZZ_JOBS      ?= 1
+FUZZ_WORKERS   ?= 1
 fuzz:
 	@./tools/install-deps.sh --fuzz
 	@cmake -S . -B $(FUZZ_BUILD_DIR) -G Ninja -DCMAKE_C_COMPILER=clang -DCMAKE_CXX_COMPILER=clang++ \
 	  -DCMAKE_BUILD_TYPE=RelWithDebInfo -DTOPAY_FUZZ=ON -DTOPAY_SANITIZE=address,undefined \
 	  -DTOPAY_BUILD_BENCHMARKS=OFF >/dev/null
 	@cmake --build $(FUZZ_BUILD_DIR) -j $(JOBS) --target topay_fuzz_all
-	FUZZ_JOBS=$(FUZZ_JOBS) tools/fuzz/run_fuzzers.sh $(FUZZ_BUILD_DIR) $(FUZZ_RUNS) $(FUZZ_SECONDS) $(FUZZ_TARGETS)
+	FUZZ_JOBS=$(FUZZ_JOBS) FUZZ_WORKERS=$(FUZZ_WORKERS) tools/fuzz/run_fuzzers.sh $(FUZZ_BUILD_DIR) $(FUZZ_RUNS) $(FUZZ_SECONDS) $(FUZZ_TARGETS)
 
 # The fault-injection suite (tools/topay_faults, docs/reliability.md): the closed-loop mission
 # through CAN, again and again, with FAULT_RUNS episodes of every fault (kill -9 of each process,
