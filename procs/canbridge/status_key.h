@@ -1,9 +1,9 @@
 #pragma once
 // What makes the bridge publish DRIVE_STATUS at once rather than at its period
 // (CanbridgeOptions::status_period_s): the values an operator must see change the cycle they
-// change (docs/canbridge.md, "Channels and messages": DRIVE_STATUS). The node compares this key every cycle (200 Hz), so it
-// is plain data compared field by field; FillStatusKey-style assignment into a kept key reuses
-// its storage and allocates nothing once the drive count and stop reason have been seen.
+// change (docs/canbridge.md, "Channels and messages": DRIVE_STATUS). The node compares this key
+// every cycle (200 Hz), so it is plain data compared field by field; the node fills a kept key in
+// place (CanbridgeNode::FillStatusKey), which allocates nothing once its storage has grown.
 
 #include <cstdint>
 #include <string>
