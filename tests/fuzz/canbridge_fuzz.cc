@@ -104,8 +104,10 @@ class Bench {
   MemoryCanBus& rogue() { return rogue_; }
   int cycles() const { return cycles_; }
   double now() const { return rig_.t; }
-  /// The latest time the bridge was given.
+  /// The latest time the bridge or a peer was given (the healed clock starts after it: a base
+  /// told a later time refuses requests stamped before it, "time went back").
   double latest() const { return latest_s_; }
+  void NoteTime(double t_s) { latest_s_ = std::max(latest_s_, t_s); }
 
   // One bridge cycle at the rig's time, the peers' step, then the clock moves by dt_s.
   void Cycle(double dt_s) {
@@ -130,6 +132,7 @@ class Bench {
   }
 
   void DriveCommand(const drive_command_t& msg) {
+    NoteTime(rig_.t);
     rig_.node.OnDriveCommand(msg, rig_.t);
     CheckSent(rig_.t);
   }
@@ -198,6 +201,7 @@ can::CanFrame AddressedFrame(FuzzReader& in, const CanbridgeOptions& options) {
 // node puts a frame record on the wire (everyone receives it).
 void PeerEvent(FuzzReader& in, Bench& bench, const CanbridgeOptions& options) {
   Rig& rig = bench.rig();
+  bench.NoteTime(rig.t);  // a fault raised in the base is stamped with it
   const std::uint8_t action = in.Byte();
   const std::uint8_t argument = in.Byte();
   auto& drive = rig.peers.drives[argument % rig.peers.drives.size()];
