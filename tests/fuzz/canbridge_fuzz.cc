@@ -112,7 +112,7 @@ class Bench {
   // One bridge cycle at the rig's time, the peers' step, then the clock moves by dt_s.
   void Cycle(double dt_s) {
     const double now_s = rig_.t;
-    latest_s_ = std::max(latest_s_, now_s);
+    NoteTime(now_s);
     rig_.node.Cycle(now_s, static_cast<std::int64_t>(now_s * 1e6));
     CheckSent(now_s);
     rig_.peers.Step(now_s);
@@ -125,7 +125,7 @@ class Bench {
 
   void Command(const control_command_t& msg, double now_s) {
     const std::int64_t before = rig_.node.commands_received();
-    latest_s_ = std::max(latest_s_, now_s);
+    NoteTime(now_s);
     rig_.node.OnCommand(msg, now_s);
     if (rig_.node.commands_received() != before) limits_.OnValidCommand(now_s);
     CheckSent(now_s);
