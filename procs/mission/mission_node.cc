@@ -8,6 +8,7 @@
 #include <spdlog/spdlog.h>
 
 #include "procs/msgs/convert_goal.h"
+#include "procs/msgs/planner_status_text.h"
 
 namespace topay::mission {
 namespace {
@@ -108,11 +109,10 @@ void MissionNode::OnPlannerStatus(const planner_status_t& msg, std::int64_t now)
   attempt_replans_ = std::max(attempt_replans_, static_cast<int>(msg.replans));
   // Its last trajectory ran to its end ("trajectory N ended"), or the robot stood at the
   // target when a plan from rest was due ("goal reached at rest ...").
-  if (msg.state == planner_status_t::SUCCEEDED &&
-      (msg.detail.find("ended") != std::string::npos || msg.detail.find("goal reached") != std::string::npos)) {
+  if (msgs::ReportsGoalReached(msg)) {
     planner_ended_ = true;
     ended_trajectory_id_ = msg.trajectory_id;
-    reached_at_rest_ = msg.detail.find("goal reached") != std::string::npos;
+    reached_at_rest_ = msgs::ReportsReachedAtRest(msg);
   } else if ((msg.state == planner_status_t::FAILED || msg.state == planner_status_t::CANCELLED) &&
              retry_utime_ == 0) {
     AttemptFailed(msg.state == planner_status_t::FAILED

@@ -13,6 +13,7 @@
 #include "core/common/stopwatch.h"
 #include "core/trajectory/offset_trajectory.h"
 #include "procs/msgs/convert_trajectory.h"
+#include "procs/msgs/planner_status_text.h"
 #include "procs/planner/paths_message.h"
 #include "topay/heartbeat_t.hpp"
 #include "topay/poly_trajectory_t.hpp"
@@ -937,9 +938,9 @@ bool PlannerNode::ReachedAtRest(const WholeBodyState& state) {
   const double angle_rad = Eigen::AngleAxisd(X_WT.linear().transpose() * X_WE.linear()).angle();
   if (position_m > o.reached_position_m || angle_rad > o.reached_orientation_rad) return false;
   goal_->done = true;
-  PublishStatus(planner_status_t::SUCCEEDED, "",
-                fmt::format("goal reached at rest: end effector {:.3f} m / {:.3f} rad from the target", position_m,
-                            angle_rad));
+  const std::string detail = msgs::ReachedAtRestDetail(position_m, angle_rad);
+  spdlog::info("goal {}: {}", goal_->goal.goal_id, detail);
+  PublishStatus(planner_status_t::SUCCEEDED, "", detail);
   return true;
 }
 
@@ -947,7 +948,7 @@ void PlannerNode::MaybeFinishGoal(std::int64_t now) {
   if (!goal_ || goal_->done || !active_ || active_->stopping || !active_->EndedBy(now)) return;
   if (active_->goal_id != goal_->goal.goal_id || worker_->busy() || pending_) return;
   goal_->done = goal_->ended = true;  // its trajectory ran to the end: nothing more to replan
-  PublishStatus(planner_status_t::SUCCEEDED, "", fmt::format("trajectory {} ended", active_->trajectory_id));
+  PublishStatus(planner_status_t::SUCCEEDED, "", msgs::TrajectoryEndedDetail(active_->trajectory_id));
 }
 
 void PlannerNode::PublishStatus(std::int8_t state, const std::string& reason, const std::string& detail,

@@ -4,6 +4,8 @@
 #include <set>
 #include <utility>
 
+#include "procs/msgs/planner_status_text.h"
+
 namespace topay::report {
 namespace {
 
@@ -23,7 +25,7 @@ struct PlannerTally {
 // status keeps the last trajectory id (and total_ms) after it, e.g. in "goal reached at rest"
 // for the next goal, which is no plan.
 bool IsPlan(const planner_status_t& s, PlannerTally* t) {
-  if (s.trajectory_id == 0 || s.detail.starts_with("goal reached at rest")) return false;
+  if (s.trajectory_id == 0 || msgs::ReportsReachedAtRest(s)) return false;
   return t->goal_of_trajectory.emplace(s.trajectory_id, s.goal_id).first->second == s.goal_id;
 }
 
@@ -34,7 +36,7 @@ void Add(const planner_status_t& s, PlannerTally* t) {
   }
   const PlanKey plan{s.goal_id, s.trajectory_id};
   if (s.state == planner_status_t::SUCCEEDED) {
-    if (s.detail.starts_with("goal reached at rest")) t->reached_at_rest.insert(s.goal_id);
+    if (msgs::ReportsReachedAtRest(s)) t->reached_at_rest.insert(s.goal_id);
     if (IsPlan(s, t) && t->succeeded.insert(plan).second) t->planning_ms.push_back(s.total_ms);
   } else if (s.state == planner_status_t::STOPPING) {
     t->stopping.insert(plan);

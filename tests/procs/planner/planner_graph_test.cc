@@ -28,6 +28,7 @@
 #include "procs/msgs/convert_goal.h"
 #include "procs/msgs/convert_robot_state.h"
 #include "procs/msgs/convert_trajectory.h"
+#include "procs/msgs/planner_status_text.h"
 #include "procs/msgs/trajectory_from_message.h"
 #include "procs/runtime/process_loop.h"
 #include "tests/common/arm_state.h"
@@ -64,6 +65,14 @@ struct GraphListener {
   bool Saw(std::int64_t goal_id, std::int8_t state) const {
     for (const planner_status_t& s : statuses) {
       if (s.goal_id == goal_id && s.state == state) return true;
+    }
+    return false;
+  }
+  // The planner reported goal `goal_id` reached: its trajectory ended, or the robot stood at
+  // the target when a plan from rest was due (a stop braked along the trajectory to its end).
+  bool SawReached(std::int64_t goal_id) const {
+    for (const planner_status_t& s : statuses) {
+      if (s.goal_id == goal_id && msgs::ReportsGoalReached(s)) return true;
     }
     return false;
   }
@@ -194,10 +203,11 @@ TEST_F(PlannerGraph, ThreeGoalsAcrossAnUnseenRoomAreReachedWithoutTouchingAnythi
     SendGoal(id, *goal);
     ASSERT_TRUE(watcher_->SpinUntil([&] { return out_.Saw(id, planner_status_t::SUCCEEDED); }, 30.0)) << Logs();
     // Replans and stops on the way as the room is seen; the last trajectory runs to its end.
-    const bool ended = watcher_->SpinUntil([&] { return out_.SawDetailFor(id, "ended"); }, 60.0);
+    const bool ended = watcher_->SpinUntil([&] { return out_.SawReached(id); }, 60.0);
     watcher_->Spin(0.3);
-    std::cout << "goal " << id << ": " << (ended ? "reached" : "not reached in 60 s") << ", end effector "
-              << EndEffectorError() << " m from the target, " << out_.statuses.back().replans << " replans\n";
+    std::cout << "goal " << id << ": " << (ended ? "reached" : "not reached in 60 s") << " (" << out_.statuses.back().detail
+              << "), end effector " << EndEffectorError() << " m from the target, " << out_.statuses.back().replans
+              << " replans\n";
     ASSERT_TRUE(ended) << "goal " << id << " at (" << goal->x_m << ", " << goal->y_m << ") not reached from ("
                        << start.transpose() << ")";
     EXPECT_LT(EndEffectorError(), 0.02);
@@ -237,7 +247,7 @@ TEST_F(PlannerGraph, ABoxAppearingOnTheRouteTriggersAReplanAndTheRobotGoesAround
   double closest_m = std::numeric_limits<double>::infinity();
   const bool ended = watcher_->SpinUntil([&] {
     closest_m = std::min(closest_m, (BaseOf(*out_.robot) - box->center_W_m.head<2>()).norm());
-    return out_.SawDetailFor(2, "ended");
+    return out_.SawReached(2);
   }, 60.0);
   std::cout << "box at (" << box->center_W_m.head<2>().transpose() << "): the base passed it at " << closest_m
             << " m (centre to axis), " << out_.statuses.back().replans << " replans\n";

@@ -17,6 +17,7 @@
 #include "procs/msgs/convert_robot_state.h"
 #include "procs/msgs/convert_trajectory.h"
 #include "procs/msgs/map_codec.h"
+#include "procs/msgs/planner_status_text.h"
 #include "procs/runtime/process_loop.h"
 #include "tests/common/arm_state.h"
 #include "tests/procs/planner/planner_test_support.h"
@@ -361,7 +362,7 @@ TEST_F(PlannerProcess, AGoalHeldBeforeTheTrackerFinishedItIsPlannedAgainOnReleas
   };
   const auto ended = [&] {
     const planner_status_t* s = out_.Last(23, planner_status_t::SUCCEEDED);
-    return s != nullptr && s->detail.find("ended") != std::string::npos;
+    return s != nullptr && msgs::ReportsTrajectoryEnded(*s);
   };
   ASSERT_TRUE(SpinWithRobot([&] { tracker(tracker_status_t::TRACKING); return ended(); }, 90.0))
       << ReadText(dir_ + "/planner.txt");
@@ -388,7 +389,7 @@ TEST_F(PlannerProcess, AGoalTheTrackerFinishedStaysDoneThroughAHold) {
   const auto tracker = [&](std::int8_t state) { Tracker(state); };
   const auto ended = [&] {
     const planner_status_t* s = out_.Last(24, planner_status_t::SUCCEEDED);
-    return s != nullptr && s->detail.find("ended") != std::string::npos;
+    return s != nullptr && msgs::ReportsTrajectoryEnded(*s);
   };
   ASSERT_TRUE(SpinWithRobot(ended, 90.0)) << ReadText(dir_ + "/planner.txt");
   SpinWithRobot([&] { tracker(tracker_status_t::FINISHED); return false; }, 0.3);
@@ -515,6 +516,46 @@ TEST_F(PlannerProcess, AGoalTheRobotAlreadyHoldsAtRestIsReachedWithoutAPlan) {
             std::string::npos)
       << out_.Last(13, planner_status_t::SUCCEEDED)->detail;
   EXPECT_TRUE(out_.trajectories.empty());
+}
+
+// A robot that came to rest with its base 12 mm into a map voxel (a stop that braked into a
+// table leg's 5 cm voxels, the real leg not touched) is planned from rest out of it: the plan
+// leaves the voxels it stands in out of the start check, and its base never goes deeper into
+// them than it stood (the leg dead ahead, the goal straight on beyond it). Before the reach reports were
+// one contract, a graph test took such a stop at the goal for a goal never reached.
+TEST_F(PlannerProcess, ABaseStoppedJustInsideAVoxelIsPlannedOutWithoutGoingDeeper) {
+  // The voxel column x in [-2.10, -2.05], y in [-2.50, -2.45], 0.65 m tall; the base axis
+  // 0.388 m from its face (radius 0.400 m), facing it.
+  start_.x_m = -2.488;
+  const GridGeometry3 g = planner::testing::RoomGeometry();
+  const Eigen::AlignedBox2d leg(Eigen::Vector2d(-2.10, -2.50), Eigen::Vector2d(-2.05, -2.45));
+  std::vector<VoxelChange> column;
+  const CellBox cells = VoxelsOverlapping(g, {Eigen::Vector3d(-2.09, -2.49, 0.0), Eigen::Vector3d(-2.06, -2.46, 0.64)});
+  for (int iz = cells.begin.z(); iz < cells.end.z(); ++iz) column.push_back({{cells.begin.x(), cells.begin.y(), iz}, VoxelState::kOccupied});
+  ASSERT_EQ(cells.end.x() - cells.begin.x(), 1);
+  ASSERT_EQ(cells.end.y() - cells.begin.y(), 1);
+  const map_update_t delta = msgs::EncodeMapDelta(g, column, procs::NowUtime(), 2);
+  watcher_->lcm().publish(std::string(channels::MAP_UPDATE), &delta);
+  const auto depth_m = [&](const Eigen::Vector2d& p_WB) {  // how far the base reaches into the column
+    return model_.base_cylinder.radius_m - leg.exteriorDistance(p_WB);
+  };
+  const double start_depth_m = depth_m({start_.x_m, start_.y_m});
+  ASSERT_NEAR(start_depth_m, 0.012, 1e-9);
+  msgs::PlanGoal goal;  // straight on, past the leg
+  goal.utime = procs::NowUtime();
+  goal.goal_id = 14;
+  goal.hint = BentArmState(-0.8, -2.5, 0.0);
+  goal.X_WE = kinematics_.EndEffectorPose(*goal.hint);
+  Send(msgs::ToMessage(goal));
+  ASSERT_TRUE(SpinWithRobot([&] { return !out_.trajectories.empty(); }, 60.0)) << ReadText(dir_ + "/planner.txt");
+  std::string error;
+  const auto poly = msgs::FromMessage(out_.trajectories.back(), &error);
+  ASSERT_TRUE(poly.has_value()) << error;
+  EXPECT_EQ(out_.trajectories.back().goal_id, 14);
+  EXPECT_NEAR(poly->p0_W_m.x(), start_.x_m, 1e-3);  // from where it stands
+  double deepest_m = -1.0;
+  for (const Eigen::Vector2d& p_WB : BasePath(*poly, poly->durations_s.sum(), 4000)) deepest_m = std::max(deepest_m, depth_m(p_WB));
+  EXPECT_LE(deepest_m, start_depth_m + 1e-3) << "the base went deeper into the voxels it stood in";
 }
 
 // A goal that had its trajectory, whose robot is then walled in (pillars all round it, closer

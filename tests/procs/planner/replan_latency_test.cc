@@ -44,6 +44,7 @@
 #include "core/robot/kinematics.h"
 #include "procs/msgs/convert_goal.h"
 #include "procs/msgs/convert_trajectory.h"
+#include "procs/msgs/planner_status_text.h"
 #include "procs/msgs/trajectory_from_message.h"
 #include "procs/runtime/process_loop.h"
 #include "tests/common/arm_state.h"
@@ -395,12 +396,13 @@ class ReplanLatency : public ::testing::Test {
     watcher_->lcm().publish(std::string(channels::GOAL), &msg);
     return true;
   }
-  /// The current goal is over: reached (its trajectory ended), failed or cancelled.
+  /// The current goal is over: reached (its trajectory ended, or the robot stood at the target
+  /// when a plan from rest was due), failed or cancelled.
   bool GoalOver() const {
     for (const auto& s : in_.statuses) {
       if (s.msg.goal_id != goal_id_) continue;
       if (s.msg.state == planner_status_t::FAILED || s.msg.state == planner_status_t::CANCELLED) return true;
-      if (s.msg.state == planner_status_t::SUCCEEDED && s.msg.detail.find("ended") != std::string::npos) return true;
+      if (msgs::ReportsGoalReached(s.msg)) return true;
     }
     return false;
   }
