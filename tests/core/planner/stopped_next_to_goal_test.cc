@@ -26,6 +26,7 @@
 #include "core/planner/plan_in_scene.h"
 #include "core/robot/kinematics.h"
 #include "tests/common/make_box.h"
+#include "tests/common/sanitizer_build.h"
 
 namespace topay {
 namespace {
@@ -72,7 +73,9 @@ class StoppedNextToGoalTest : public ::testing::Test {
   WholeBodyPlannerOptions Options() const {
     WholeBodyPlannerOptions options = LoadPlannerOptions(TOPAY_SOURCE_DIR "/config/planner/topay.yaml");
     options.base_limits = model_.base_limits;
-    options.time_limit_s = 20.0;
+    options.time_limit_s = 20.0 * testing::kBuildSlowdown;
+    options.optimizer.time_limit_s *= testing::kBuildSlowdown;  // 2 s, ended it under ASan
+    options.front_end.acquisition_budget_s *= testing::kBuildSlowdown;
     return options;
   }
 
