@@ -140,7 +140,8 @@ faults: build
 test-faults: build-test
 	@cd $(TEST_BUILD_DIR) && TOPAY_FAULTS_TEST=1 ctest --output-on-failure -R FaultsSmoke
 
-# The whole suite under sanitizers (own build folders; any report fails the test that hit it):
+# The whole suite under sanitizers (own build folders; any report fails the test that hit it, and
+# a report in a log a test's processes wrote fails the run: tools/sanitizers/check-child-reports.sh):
 # ASan + UBSan (leaks included), and TSan. CTEST_ARGS narrows them, e.g. CTEST_ARGS='-L fuzz'.
 ASAN_BUILD_DIR ?= build-asan
 TSAN_BUILD_DIR ?= build-tsan
@@ -149,9 +150,11 @@ test-asan: deps
 	@cmake -S . -B $(ASAN_BUILD_DIR) -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DTOPAY_SANITIZE=address,undefined \
 	  -DTOPAY_BUILD_BENCHMARKS=OFF >/dev/null
 	@cmake --build $(ASAN_BUILD_DIR) -j $(JOBS)
+	@rm -rf $(ASAN_BUILD_DIR)/test_out
 	@cd $(ASAN_BUILD_DIR) && ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 \
 	  LSAN_OPTIONS=suppressions=$(CURDIR)/tools/sanitizers/lsan.supp \
-	  UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 ctest --output-on-failure -j $(JOBS) $(CTEST_ARGS)
+	  UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 ctest --output-on-failure -j $(JOBS) $(CTEST_ARGS); \
+	  status=$$?; $(CURDIR)/tools/sanitizers/check-child-reports.sh . && exit $$status
 # TSan links a oneTBB built with -fsanitize=thread (Debian's is not instrumented, and TSan then
 # takes every result read after task_group::wait for a race): tools/sanitizers/build-tsan-tbb.sh.
 tsan-configure: deps
@@ -160,8 +163,10 @@ tsan-configure: deps
 	  -DTBB_DIR=$(CURDIR)/$(TSAN_BUILD_DIR)/third_party/tbb-tsan/lib/cmake/TBB -DTOPAY_BUILD_BENCHMARKS=OFF >/dev/null
 test-tsan: tsan-configure
 	@cmake --build $(TSAN_BUILD_DIR) -j $(JOBS)
+	@rm -rf $(TSAN_BUILD_DIR)/test_out
 	@cd $(TSAN_BUILD_DIR) && TSAN_OPTIONS=halt_on_error=1:second_deadlock_stack=1:suppressions=$(CURDIR)/tools/sanitizers/tsan.supp \
-	  ctest --output-on-failure -j $(JOBS) $(CTEST_ARGS)
+	  ctest --output-on-failure -j $(JOBS) $(CTEST_ARGS); \
+	  status=$$?; $(CURDIR)/tools/sanitizers/check-child-reports.sh . && exit $$status
 # CI's sanitizer run (.ci/run, after make test): TSan over the tests of the code that runs
 # threads (the planner's parallel arm searches, shortcuts and cost chunks on TBB, the planner
 # process's worker, the simulator's scan worker, the director's placement, the viewer's server),

@@ -52,7 +52,7 @@ int main(int argc, char** argv) {
   });
   if (model_options.state_rate_hz > 0.0) {
     const double period_s = 1.0 / model_options.state_rate_hz;
-    loop.AddTimer(period_s, [&] {
+    loop.AddTimer(period_s, [&, period_s] {  // period_s by value: the timer outlives this block
       if (procs::ProcessLoop::Clock::now() - last_command > std::chrono::duration<double>(period_s)) {
         publish(procs::NowUtime());
       }
