@@ -155,24 +155,28 @@ void PlannerNode::HandleInbox() {
 
 void PlannerNode::OnGoal(const goal_t& msg) {
   ++counts_.goals;
-  std::vector<std::uint8_t> content = GoalContent(msg);
-  if (last_goal_ && last_goal_->first == msg.goal_id) {
-    // A repeat of the goal in hand changes nothing; another goal under its id (a corrupted or
-    // foreign sender) must not take the robot elsewhere in its name: both are ignored.
-    const bool same = last_goal_->second == content;
+  const IssuedGoals::Verdict verdict = issued_goals_.Take(msg.goal_id, GoalContent(msg));
+  if (verdict != IssuedGoals::Verdict::kNew) {
+    // A repeat changes nothing; another goal under an id taken before (a corrupted or foreign
+    // sender) must neither take the robot elsewhere in its name nor fail that goal: both ignored.
+    const bool same = verdict == IssuedGoals::Verdict::kRepeat;
     ++(same ? counts_.goals_repeated : counts_.goals_refused);
     if (!same || counts_.goals_repeated <= 3) {
+      const bool in_hand = goal_ && goal_->goal.goal_id == msg.goal_id;
       spdlog::warn("GOAL {} ignored: {}", msg.goal_id,
-                   same ? "a repeat of the goal in hand" : "its id was issued before with a different target");
+                   !same     ? "its id was issued before with a different target"
+                   : in_hand ? "a repeat of the goal in hand"
+                             : "a repeat of an earlier goal");
     }
     return;
   }
-  last_goal_.emplace(msg.goal_id, std::move(content));
   std::string error;
   const std::optional<msgs::PlanGoal> goal = msgs::FromMessage(msg, &error);
   std::string reason = goal ? ScreenGoal(*goal, map_, reach_, options_.goals) : "bad goal: " + error;
-  if (goal_ && !goal_->done && worker_->busy()) {
-    worker_->Cancel();
+  if (goal_ && !goal_->done) {
+    // Superseded: said also when no plan is running (its trajectory under way, a retry due),
+    // so whoever sent it knows at once (a mission waited for a forged goal's end, finding 36).
+    if (worker_->busy()) worker_->Cancel();
     ++counts_.goals_cancelled;
     PublishStatus(planner_status_t::CANCELLED, "", fmt::format("goal {} superseded by goal {}",
                                                                goal_->goal.goal_id, msg.goal_id));

@@ -39,6 +39,7 @@
 #include "procs/msgs/robot_state_intake.h"
 #include "procs/planner/active_trajectory.h"
 #include "procs/planner/goal_screen.h"
+#include "procs/planner/issued_goals.h"
 #include "procs/planner/map_intake.h"
 #include "procs/planner/plan_worker.h"
 #include "procs/planner/planner_clock.h"
@@ -241,9 +242,9 @@ class PlannerNode {
   // Until then, after the tracker's release, a plan waits for the robot at rest (see FillStart).
   std::int64_t rest_after_hold_until_utime_ = 0;
   bool map_stale_ = false;                   // the map's newest scan is older than map.stale_stop_s
-  // The last GOAL's id and content (GoalContent): ids are issued once; a repeat is ignored and
-  // a different goal under the same id refused.
-  std::optional<std::pair<std::int64_t, std::vector<std::uint8_t>>> last_goal_;
+  // The GOALs' ids and contents (GoalContent): ids are issued once; a repeat is ignored and a
+  // different goal under an id taken before refused, also after newer goals (finding 36).
+  IssuedGoals issued_goals_;
   std::optional<GoalRecord> goal_;
   std::optional<ActiveTrajectory> active_;
   // The trajectories active_ replaced that may still be under way (the newest last): until a

@@ -428,6 +428,33 @@ TEST_F(PlannerProcess, AGoalIdIsNotReusedForAnotherTarget) {
   EXPECT_NE(log.find("3 goals (1 refused, 0 failed as the map came to refuse them, 1 repeats ignored, 0 cancelled)"), std::string::npos) << log;
 }
 
+// Finding 36 (hostile payloads, fault table of the twenty-fifth session): a copy of the mission's
+// goal with its id bit-flipped replaced the goal in hand, then a copy under the mission's id
+// with a bit-flipped quaternion was taken for a new goal and failed the mission's goal ("bad
+// goal"). Now the goal in hand is reported CANCELLED when another replaces it (the sender
+// knows at once, also with its trajectory under way), and a copy under any id taken before is
+// ignored, not only under the last one's.
+TEST_F(PlannerProcess, AGoalIdTakenBeforeTheLastIsNotReusedAndAReplacedGoalIsCancelled) {
+  const goal_t goal = ReachableGoal(32);
+  Send(goal);
+  ASSERT_TRUE(SpinWithRobot([&] { return !out_.trajectories.empty(); }, 60.0)) << ReadText(dir_ + "/planner.txt");
+  goal_t forged = goal;  // its id bit-flipped
+  forged.goal_id = 32 ^ (1 << 20);
+  Send(forged);
+  ASSERT_TRUE(SpinWithRobot([&] { return out_.Last(32, planner_status_t::CANCELLED) != nullptr; }, 10.0))
+      << ReadText(dir_ + "/planner.txt");
+  EXPECT_NE(out_.Last(32, planner_status_t::CANCELLED)->detail.find("goal 32 superseded by goal 1048608"),
+            std::string::npos)
+      << out_.Last(32, planner_status_t::CANCELLED)->detail;
+  goal_t corrupted = goal;  // the first goal's id, its quaternion bit-flipped
+  corrupted.quat_WE[0] = 2.0;
+  Send(corrupted);
+  SpinWithRobot([] { return false; }, 1.0);  // handled meanwhile (nothing to wait for: it changes nothing)
+  EXPECT_EQ(out_.Last(32, planner_status_t::FAILED), nullptr) << "the copy failed goal 32";
+  const std::string log = StopPlannerAndReadLog();
+  EXPECT_NE(log.find("GOAL 32 ignored: its id was issued before with a different target"), std::string::npos) << log;
+}
+
 // The mapper stops (its MAP_UPDATEs lost): once the map's newest scan is older than
 // map.stale_stop_s the trajectory under way is stopped (STOPPING, a stopping trajectory) and no
 // plan goes out; when fresh updates come back the goal is planned again.
