@@ -10,14 +10,7 @@
 set -uo pipefail
 
 script=${1:?usage: $0 PATH/TO/run_fuzzers.sh}
-scratch=$(mktemp -d)
-trap 'rm -rf "$scratch"' EXIT
-failures=0
-
-fail() {
-  echo "FAIL: $*" >&2
-  failures=$((failures + 1))
-}
+source "$(dirname "${BASH_SOURCE[0]}")/../common/script_checks.sh"
 
 # A stand-in for a libFuzzer binary: bin/fuzz/<name>_fuzz in a scratch build directory.
 make_fake_target() {
@@ -84,8 +77,4 @@ run_case not_built 1 1000 none missing
 expect "a target not built: the run fails" test "$status" -ne 0
 expect "a target not built: its row says so" grep -qF '| missing | - | - | - | - | - | FAILED (not built) |' <<< "$row"
 
-if [ "$failures" -gt 0 ]; then
-  echo "run_fuzzers_test: $failures check(s) failed" >&2
-  exit 1
-fi
-echo "run_fuzzers_test: every check passed"
+finish run_fuzzers_test

@@ -7,14 +7,7 @@
 set -uo pipefail
 
 script=${1:?usage: $0 PATH/TO/check-child-reports.sh}
-scratch=$(mktemp -d)
-trap 'rm -rf "$scratch"' EXIT
-failures=0
-
-fail() {
-  echo "FAIL: $*" >&2
-  failures=$((failures + 1))
-}
+source "$(dirname "${BASH_SOURCE[0]}")/../../common/script_checks.sh"
 
 # expect <case> <exit status wanted> <text the output must hold> <build dir>
 expect() {
@@ -48,8 +41,4 @@ report lsan "==7==ERROR: LeakSanitizer: detected memory leaks"
 report tsan "WARNING: ThreadSanitizer: data race (pid=12)"
 report ubsan "core/a.cc:12:5: runtime error: signed integer overflow"
 
-if [[ $failures -gt 0 ]]; then
-  echo "$failures check(s) failed" >&2
-  exit 1
-fi
-echo "check-child-reports.sh: all checks passed"
+finish check_child_reports_test
