@@ -1,5 +1,6 @@
 #include "procs/msgs/planner_status_text.h"
 
+#include <algorithm>
 #include <cstdio>
 
 namespace topay::msgs {
@@ -12,13 +13,9 @@ constexpr std::string_view kReachedAtRestPrefix = "goal reached at rest: ";
 // "trajectory " + digits + " ended", nothing else (a plan trigger may name a trajectory too).
 bool IsTrajectoryEnded(const std::string& detail) {
   if (!detail.starts_with(kTrajectoryPrefix) || !detail.ends_with(kEndedSuffix)) return false;
-  const std::size_t begin = kTrajectoryPrefix.size();
-  if (detail.size() <= begin + kEndedSuffix.size()) return false;
-  const std::size_t end = detail.size() - kEndedSuffix.size();
-  for (std::size_t i = begin; i < end; ++i) {
-    if (detail[i] < '0' || detail[i] > '9') return false;
-  }
-  return true;
+  const auto begin = detail.begin() + kTrajectoryPrefix.size();
+  const auto end = detail.end() - kEndedSuffix.size();
+  return begin < end && std::all_of(begin, end, [](char c) { return c >= '0' && c <= '9'; });
 }
 
 }  // namespace

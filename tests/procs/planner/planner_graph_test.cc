@@ -76,12 +76,6 @@ struct GraphListener {
     }
     return false;
   }
-  bool SawDetailFor(std::int64_t goal_id, const std::string& text) const {
-    for (const planner_status_t& s : statuses) {
-      if (s.goal_id == goal_id && s.detail.find(text) != std::string::npos) return true;
-    }
-    return false;
-  }
   bool SawDetail(const std::string& text) const {
     for (const planner_status_t& s : statuses) {
       if (s.detail.find(text) != std::string::npos) return true;
