@@ -23,13 +23,17 @@ inline constexpr std::uint16_t kCommunication = 0x8100;
 inline constexpr std::uint16_t kCanOverrun = 0x8110;
 inline constexpr std::uint16_t kHeartbeatError = 0x8130;     ///< Life guard / heartbeat lost.
 inline constexpr std::uint16_t kPdoLengthError = 0x8210;     ///< PDO not processed: length.
+inline constexpr std::uint16_t kRpdoTimeout = 0x8250;        ///< RPDO deadline (event timer) missed.
 inline constexpr std::uint16_t kFollowingError = 0x8611;     ///< CiA 402 positioning control.
 }  // namespace emcy_code
 
 /// A CAN communication error (0x81xx: overrun, error passive, heartbeat / life guard lost,
-/// recovered from bus-off, ...): the bus failed the device, not the device itself.
-/// 0x82xx (protocol errors such as a PDO length error) are not.
-constexpr bool IsCommunicationError(std::uint16_t code) { return (code & 0xFF00u) == emcy_code::kCommunication; }
+/// recovered from bus-off, ...) or an RPDO timeout (0x8250: the host's setpoints stopped
+/// coming): the bus or the host failed the device, not the device itself. The other 0x82xx
+/// (protocol errors such as a PDO length error) are not.
+constexpr bool IsCommunicationError(std::uint16_t code) {
+  return (code & 0xFF00u) == emcy_code::kCommunication || code == emcy_code::kRpdoTimeout;
+}
 
 /// Error register bits (object 0x1001, CiA 301 §7.5.2.2).
 namespace error_register {

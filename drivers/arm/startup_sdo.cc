@@ -26,6 +26,7 @@ struct PdoSpec {
   bool is_transmit;
   std::vector<MappedObject> objects;   // empty: leave the PDO invalid
   std::uint8_t transmission_type = kTransmissionSynchronous;  // 1..240: every n-th SYNC
+  std::optional<std::uint16_t> event_timer_ms;  // sub 5 (an RPDO's deadline), when written
 };
 
 void Add(std::vector<SdoWrite>* writes, std::uint16_t index, std::uint8_t subindex,
@@ -52,16 +53,21 @@ void AddPdo(const PdoSpec& pdo, int node_id, std::vector<SdoWrite>* writes) {
   Add(writes, comm, 2, pdo.transmission_type, 1,
       pdo.transmission_type == kTransmissionSynchronous ? "transmission type: synchronous, every SYNC"
                                                         : "transmission type: synchronous, every n-th SYNC");
+  if (pdo.event_timer_ms) {
+    Add(writes, comm, 5, *pdo.event_timer_ms, 2, "event timer: the RPDO's deadline (ms, 0: none)");
+  }
   Add(writes, comm, 1, cob_id | flags, 4, "make the PDO valid with its default COB-ID");
 }
 
-std::vector<PdoSpec> PdoLayout(bool map_target_position, int tpdo2_every_n_syncs) {
+std::vector<PdoSpec> PdoLayout(const StartupOptions& options) {
   std::vector<PdoSpec> layout;
   layout.push_back({"RPDO1", CanopenFunction::kRpdo1, 0x1400, false,
                     {{object::kControlword, 16, "RPDO1 map: controlword 0x6040"},
-                     {object::kTargetVelocity, 32, "RPDO1 map: target velocity 0x60FF"}}});
+                     {object::kTargetVelocity, 32, "RPDO1 map: target velocity 0x60FF"}},
+                    kTransmissionSynchronous,
+                    static_cast<std::uint16_t>(options.rpdo_deadline_ms)});
   PdoSpec rpdo2{"RPDO2", CanopenFunction::kRpdo2, 0x1401, false, {}};
-  if (map_target_position) {
+  if (options.map_target_position) {
     rpdo2.objects = {{object::kTargetPosition, 32, "RPDO2 map: target position 0x607A"}};
   }
   layout.push_back(rpdo2);
@@ -72,7 +78,7 @@ std::vector<PdoSpec> PdoLayout(bool map_target_position, int tpdo2_every_n_syncs
                      {object::kPositionActual, 32, "TPDO1 map: position actual 0x6064"}}});
   layout.push_back({"TPDO2", CanopenFunction::kTpdo2, 0x1801, true,
                     {{object::kVelocityActual, 32, "TPDO2 map: velocity actual 0x606C"}},
-                    static_cast<std::uint8_t>(tpdo2_every_n_syncs)});
+                    static_cast<std::uint8_t>(options.tpdo2_every_n_syncs)});
   layout.push_back({"TPDO3", CanopenFunction::kTpdo3, 0x1802, true, {}});
   layout.push_back({"TPDO4", CanopenFunction::kTpdo4, 0x1803, true, {}});
   return layout;
@@ -88,6 +94,9 @@ std::string CheckOptions(int node_id, const StartupOptions& options) {
   for (int ms : {options.producer_heartbeat_ms, options.consumer_heartbeat_ms}) {
     if (ms < 0 || ms > 0xFFFF) return "heartbeat time " + std::to_string(ms) +
                                       " ms is outside 0..65535";
+  }
+  if (options.rpdo_deadline_ms < 0 || options.rpdo_deadline_ms > 0xFFFF) {
+    return "RPDO deadline " + std::to_string(options.rpdo_deadline_ms) + " ms is outside 0..65535";
   }
   if (options.tpdo2_every_n_syncs < 1 || options.tpdo2_every_n_syncs > 240) {
     return "TPDO2 every " + std::to_string(options.tpdo2_every_n_syncs) + " SYNCs is outside 1..240";
@@ -119,7 +128,7 @@ std::optional<std::vector<SdoWrite>> StartupSdoWrites(int node_id, const Startup
   const std::string problem = CheckOptions(node_id, options);
   if (!problem.empty()) return canopen::Fail(error, "start-up SDO writes: " + problem);
   std::vector<SdoWrite> writes;
-  for (const PdoSpec& pdo : PdoLayout(options.map_target_position, options.tpdo2_every_n_syncs)) {
+  for (const PdoSpec& pdo : PdoLayout(options)) {
     AddPdo(pdo, node_id, &writes);
   }
   Add(&writes, 0x1017, 0, static_cast<std::uint32_t>(options.producer_heartbeat_ms), 2,

@@ -49,20 +49,27 @@ struct StartupOptions {
   /// cycle), which keeps the bus load of base + 7 drives at 200 Hz under 50 % at 1 Mbit/s
   /// (docs/cia402.md); statusword and position (TPDO1) stay on every SYNC.
   int tpdo2_every_n_syncs = 2;
+  /// RPDO1's deadline monitoring (its event timer 0x1400:05, CiA 301 §7.5.2.35): a drive that
+  /// has had no RPDO1 for this long signals EMCY 0x8250 (RPDO timeout) and stops by its fault
+  /// reaction. 50 ms: ten 5 ms host cycles, so 10 % frame loss or a 20 ms delay never trips it,
+  /// while a dead host stops the arm within 100 ms (the heartbeat event alone takes
+  /// consumer_heartbeat_ms). 0: not monitored.
+  int rpdo_deadline_ms = 50;
 };
 
 /// The start-up writes for a drive, in order:
 ///  1. for RPDO1, RPDO2, TPDO1, TPDO2 (CiA 301 §7.5.2.35-38, objects 0x1400/0x1600,
 ///     0x1800/0x1A00, and the PDO mapping procedure of §7.2.2.2.4): invalidate the PDO (COB-ID bit 31 set), clear the mapping
 ///     (sub 0 = 0), write the mapped objects, set their number, set the transmission type to
-///     synchronous (1: every SYNC; TPDO2: every tpdo2_every_n_syncs-th SYNC), make the PDO valid again with the default COB-ID (TPDOs with
-///     bit 30, no RTR); an unused RPDO2 stays invalid;
+///     synchronous (1: every SYNC; TPDO2: every tpdo2_every_n_syncs-th SYNC), RPDO1's event
+///     timer (sub 5) to rpdo_deadline_ms, make the PDO valid again with the default COB-ID
+///     (TPDOs with bit 30, no RTR); an unused RPDO2 stays invalid;
 ///  2. RPDO3/4 and TPDO3/4 invalid;
 ///  3. producer heartbeat time 0x1017, consumer heartbeat time 0x1016:01 (host node << 16 | ms);
 ///  4. interpolation time period 0x60C2:01/02 (sync_period_ms, exponent -3);
 ///  5. mode of operation 0x6060.
 /// nullopt with *error (when not null) for a node id or host node id outside 1..127, equal node
-/// ids, heartbeat times outside 0..65535 ms, a SYNC period outside 1..255 ms, or a mode other
+/// ids, heartbeat times or an RPDO deadline outside 0..65535 ms, a SYNC period outside 1..255 ms, or a mode other
 /// than 3, 8 or 9 (the modes whose setpoints this layout carries).
 std::optional<std::vector<SdoWrite>> StartupSdoWrites(int node_id, const StartupOptions& options,
                                                       std::string* error);

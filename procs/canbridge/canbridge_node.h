@@ -95,7 +95,7 @@ class CanbridgeNode {
   // Arms every device's fault reset and recovers (FAULT_RESET, or the automatic one).
   void ResetFaults(double now_s);
   // options.auto_reset_communication_faults: in FAULT, reads the faulted drives' codes and
-  // resets them itself when all are communication errors (0x81xx).
+  // resets them itself when all are communication errors (0x81xx) or RPDO timeouts (0x8250).
   void MaybeResetCommunicationFault(double now_s);
   void MarkRestarts(double now_s);
   std::string FaultCause() const;

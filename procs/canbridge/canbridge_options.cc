@@ -49,6 +49,7 @@ void ReadDrives(YamlSection s, DriveLinkOptions* o) {
   s.Read("host_heartbeat_period_s", &o->host_heartbeat_period_s);
   s.Read("producer_heartbeat_ms", &o->startup.producer_heartbeat_ms);
   s.Read("consumer_heartbeat_ms", &o->startup.consumer_heartbeat_ms);
+  s.Read("rpdo_deadline_ms", &o->startup.rpdo_deadline_ms);
   s.Read("host_node_id", &o->startup.host_node_id);
   s.Finish();
 }
@@ -99,6 +100,10 @@ void CanbridgeOptions::Check() const {
           "drives.producer_heartbeat_ms", "must be in 1..65535");
   Require(drives.startup.consumer_heartbeat_ms >= 1 && drives.startup.consumer_heartbeat_ms <= 65535,
           "drives.consumer_heartbeat_ms", "must be in 1..65535");
+  // A deadline of fewer than 3 cycles would fault the drives on one late cycle.
+  const int deadline_ms = drives.startup.rpdo_deadline_ms;
+  Require(deadline_ms == 0 || (deadline_ms <= 65535 && deadline_ms * 1e-3 >= 3.0 * cycle_period_s - 1e-9),
+          "drives.rpdo_deadline_ms", "must be 0 (not monitored) or from 3 CAN cycles to 65535 ms");
 }
 
 CanbridgeOptions LoadCanbridgeOptions(const std::string& path) {

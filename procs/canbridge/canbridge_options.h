@@ -80,7 +80,8 @@ struct CanbridgeOptions {
   double fault_reset_timeout_s = 1.0;
   /// Reset, as an operator's FAULT_RESET would, a fault of the drives alone whose every code
   /// (the active EMCY's, else 0x603F read by SDO) is a CAN communication error (0x81xx: e.g. the
-  /// drive lost the bridge's heartbeat while the bus was off, its EMCY lost with it): the cause
+  /// drive lost the bridge's heartbeat while the bus was off, its EMCY lost with it) or an RPDO
+  /// timeout (0x8250: the bridge's setpoints stopped for rpdo_deadline_ms): the cause
   /// is gone once the bridge hears the drives again. Only at a zero command. Any other code, an
   /// unreadable one or a base fault waits for the operator. Default true.
   bool auto_reset_communication_faults = true;

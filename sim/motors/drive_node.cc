@@ -62,6 +62,7 @@ void DriveNode::PowerOn(bool reset_application) {
   producer_ms_ = consumer_ms_ = -1;
   host_lost_ = false;
   pending_rpdo_.reset();
+  last_rpdo_s_.reset();
   target_radps_ = 0.0;
   UpdateStatusObjects();
 }
@@ -87,7 +88,7 @@ bool DriveNode::OnFrame(const can::CanFrame& frame, double time_s, std::vector<c
   }
   if (cob->node_id != options_.node_id) return false;
   if (cob->function == CanopenFunction::kRpdo1) {
-    if (nmt_ == NmtState::kOperational && dictionary_.PdoValid(Pdo::kRpdo1)) OnRpdo1(frame, out);
+    if (nmt_ == NmtState::kOperational && dictionary_.PdoValid(Pdo::kRpdo1)) OnRpdo1(frame, time_s, out);
     return true;
   }
   if (cob->function == CanopenFunction::kSdoRx) {
@@ -158,7 +159,7 @@ void DriveNode::OnSync(std::vector<can::CanFrame>* out) {
   }
 }
 
-void DriveNode::OnRpdo1(const can::CanFrame& frame, std::vector<can::CanFrame>* out) {
+void DriveNode::OnRpdo1(const can::CanFrame& frame, double time_s, std::vector<can::CanFrame>* out) {
   std::string error;
   const std::optional<cia402::Rpdo1> rpdo = cia402::DecodeRpdo1(frame, options_.units, &error);
   if (!rpdo) {
@@ -169,6 +170,21 @@ void DriveNode::OnRpdo1(const can::CanFrame& frame, std::vector<can::CanFrame>* 
   }
   ++counts_.rpdos;
   pending_rpdo_ = *rpdo;
+  last_rpdo_s_ = time_s;
+}
+
+// RPDO deadline monitoring (CiA 301 §7.5.2.35, the RPDO's event timer): it starts with the first
+// RPDO1 received in NMT operational; no RPDO1 for the event time -> EMCY 0x8250 and, as on a
+// lost heartbeat, the fault reaction (the abort connection option "fault"), once per silence.
+// Leaving operational ends the monitoring until the next RPDO1.
+void DriveNode::CheckRpdoDeadline(double time_s, std::vector<can::CanFrame>* out) {
+  if (nmt_ != NmtState::kOperational) last_rpdo_s_.reset();
+  const int deadline_ms = dictionary_.rpdo1_deadline_ms();
+  if (!last_rpdo_s_ || deadline_ms <= 0 || time_s - *last_rpdo_s_ < deadline_ms * 1e-3) return;
+  last_rpdo_s_.reset();
+  ++counts_.rpdo_timeouts;
+  fault_reaction_since_s_ = time_s;
+  EnterFault(canopen::emcy_code::kRpdoTimeout, canopen::error_register::kCommunication, out);
 }
 
 void DriveNode::OnSdo(const can::CanFrame& frame, std::vector<can::CanFrame>* out) {
@@ -290,6 +306,7 @@ void DriveNode::Step(double time_s, bool heartbeat_suppressed, std::vector<can::
     fault_reaction_since_s_ = time_s;
     EnterFault(canopen::emcy_code::kHeartbeatError, canopen::error_register::kCommunication, out);
   }
+  CheckRpdoDeadline(time_s, out);
   UpdateOutput(dt_s);
   const double speed = feedback_ ? std::abs(feedback_->velocity_radps) : 0.0;
   const bool stopped = output_radps_ == 0.0 && speed < options_.standstill_radps;

@@ -51,6 +51,7 @@ struct DriveNodeCounts {
   std::int64_t faults = 0;           ///< faults entered (injected or host heartbeat lost)
   std::int64_t heartbeats = 0;       ///< heartbeats sent (boot-up included)
   std::int64_t host_heartbeat_lost = 0;
+  std::int64_t rpdo_timeouts = 0;    ///< RPDO1 deadlines missed (EMCY 0x8250 and a fault)
   std::int64_t frames_sent = 0;
 };
 
@@ -74,7 +75,7 @@ class DriveNode {
   bool OnFrame(const can::CanFrame& frame, double time_s, std::vector<can::CanFrame>* out);
 
   /// Advances to time_s: the boot-up message, the heartbeat (unless suppressed), the host's
-  /// heartbeat check, the quick-stop and fault-reaction ramps.
+  /// heartbeat check, RPDO1's deadline (0x1400:05), the quick-stop and fault-reaction ramps.
   void Step(double time_s, bool heartbeat_suppressed, std::vector<can::CanFrame>* out);
 
   /// A drive fault now (fault injection): EMCY `emcy_code` (0: the options' code) and the fault
@@ -95,9 +96,10 @@ class DriveNode {
   void OnNmt(const can::CanFrame& frame);
   void OnSync(std::vector<can::CanFrame>* out);
   bool DueOnThisSync(std::uint16_t tpdo_comm_index) const;
-  void OnRpdo1(const can::CanFrame& frame, std::vector<can::CanFrame>* out);
+  void OnRpdo1(const can::CanFrame& frame, double time_s, std::vector<can::CanFrame>* out);
   void OnSdo(const can::CanFrame& frame, std::vector<can::CanFrame>* out);
   void OnHostHeartbeat(const can::CanFrame& frame, double time_s);
+  void CheckRpdoDeadline(double time_s, std::vector<can::CanFrame>* out);
   void ApplyControlword(std::uint16_t controlword, std::vector<can::CanFrame>* out);
   void EnterFault(std::uint16_t emcy_code, std::uint8_t error_register, std::vector<can::CanFrame>* out);
   void SendEmcy(std::uint16_t code, std::uint8_t error_register, std::vector<can::CanFrame>* out);
@@ -116,6 +118,7 @@ class DriveNode {
   int consumer_ms_ = -1;            // the 0x1016 time the consumer was made with
   bool host_lost_ = false;
   std::optional<cia402::Rpdo1> pending_rpdo_;  // acted on at the next SYNC
+  std::optional<double> last_rpdo_s_;  // the deadline's start: the last RPDO1 while operational
   double target_radps_ = 0.0;
   double output_radps_ = 0.0;
   std::optional<JointFeedback> feedback_;

@@ -102,9 +102,10 @@ void DriveObjectDictionary::Add(std::uint16_t index, std::uint8_t sub, int size,
 
 void DriveObjectDictionary::AddPdo(std::uint16_t comm, std::uint32_t cob_id, bool valid,
                                    std::initializer_list<std::uint32_t> mapping) {
-  Add(comm, 0, 1, ObjectAccess::kReadOnly, 2);
+  Add(comm, 0, 1, ObjectAccess::kReadOnly, 5);  // the highest sub-index: 5 (3 and 4 not implemented)
   Add(comm, 1, 4, ObjectAccess::kReadWrite, valid ? cob_id : cob_id | kInvalidBit);
   Add(comm, 2, 1, ObjectAccess::kReadWrite, 1);  // synchronous, every SYNC
+  Add(comm, 5, 2, ObjectAccess::kReadWrite, 0);  // event timer, ms: an RPDO's deadline (0: none)
   const auto map = static_cast<std::uint16_t>(comm + 0x200);
   Add(map, 0, 1, ObjectAccess::kReadWrite, static_cast<std::uint32_t>(mapping.size()));
   for (std::uint8_t sub = 1; sub <= 8; ++sub) Add(map, sub, 4, ObjectAccess::kReadWrite, 0);
@@ -144,6 +145,7 @@ std::uint32_t DriveObjectDictionary::CheckWrite(ObjectAddress address, std::uint
 std::uint32_t DriveObjectDictionary::CheckCommunication(std::uint16_t comm, std::uint8_t sub,
                                                         std::uint32_t value) const {
   if (sub == 2) return value <= 240 || value >= 252 ? 0 : abort::kValueRangeExceeded;
+  if (sub == 5) return 0;  // any event timer (uint16; the size was checked)
   // sub 1, the COB-ID: the predefined connection set's only (no remapping of ids).
   if ((value & 0x7FFu) != DefaultCobId(comm, node_id_) || (value & 0x3FFFF800u) != 0) {
     return abort::kValueRangeExceeded;

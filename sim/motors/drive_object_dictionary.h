@@ -49,6 +49,8 @@ class DriveObjectDictionary {
   /// Consumer heartbeat 0x1016:01: the host node id and its time, ms (0: none).
   int consumer_node_id() const { return static_cast<int>((Get({0x1016, 1}) >> 16) & 0x7F); }
   int consumer_heartbeat_ms() const { return static_cast<int>(Get({0x1016, 1}) & 0xFFFF); }
+  /// RPDO1's deadline, its event timer 0x1400:05 (CiA 301 §7.5.2.35), ms (0: not monitored).
+  int rpdo1_deadline_ms() const { return static_cast<int>(Get({0x1400, 5})); }
 
  private:
   using Key = std::pair<std::uint16_t, std::uint8_t>;

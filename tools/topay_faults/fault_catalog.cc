@@ -33,7 +33,9 @@ std::vector<FaultSpec> KillFaults() {
   std::vector<FaultSpec> faults = {
       Kill("tracker", "command stream lost: the bridge stops the drives within 100 ms; restarted, the mission resumes",
            true, true),
-      Kill("canbridge", "the drives' own command watchdogs stop them; restarted, the bridge re-enables the drives",
+      Kill("canbridge",
+           "the devices' own watchdogs stop them (arm drives: RPDO deadline 50 ms, EMCY 0x8250; wheels: "
+           "command watchdog 100 ms); restarted, the bridge resets the drives' RPDO timeouts and re-enables them",
            true),
       Kill("motorsim", "drive heartbeats lost: the bridge stops; restarted drives are re-enabled", true),
       Kill("estimator",

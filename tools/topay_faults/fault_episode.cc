@@ -60,8 +60,11 @@ FaultEpisode::FaultEpisode(const FaultSpec& fault, std::uint64_t seed, FaultInje
   result_.seed = seed;
 }
 
+// Moving now: a robot that has just come to rest (every drive at 0 since before the injection)
+// would never show the stop the fault should cause (the safe state is a run of zero commands
+// that starts after the injection), and would say nothing about it either.
 bool FaultEpisode::Ready(const GraphView& view) const {
-  return view.last_moving_s >= 0.0 && view.now_s - view.last_moving_s < kMovingRecentlyS &&
+  return !view.actuator_zero && view.last_moving_s >= 0.0 && view.now_s - view.last_moving_s < kMovingRecentlyS &&
          FreshDriveState(view) == drive_status_t::RUNNING && view.mission_state == mission_status_t::RUNNING;
 }
 

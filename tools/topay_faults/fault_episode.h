@@ -1,5 +1,6 @@
 #pragma once
-// One fault episode during a mission: wait until the robot moves under a running bridge, inject
+// One fault episode during a mission: wait until the robot moves under a running bridge (some
+// drive's output not zero now, and above the moving threshold within 0.3 s), inject
 // the fault, watch for the safe state (the bridge STOPPED or FAULT, or every drive commanded to
 // 0, or the graph ended), clear the fault after its hold time, and watch for recovery (every
 // process of the graph alive again, the bridge RUNNING, the robot moving or the mission a step

@@ -41,11 +41,13 @@ TEST(EmcyTest, MalformedFramesAreRejected) {
 namespace topay::canopen {
 namespace {
 
-TEST(EmcyTest, CommunicationErrorsAreThe81xxCodes) {
+TEST(EmcyTest, CommunicationErrorsAreThe81xxCodesAndTheRpdoTimeout) {
   EXPECT_TRUE(IsCommunicationError(emcy_code::kHeartbeatError));
   EXPECT_TRUE(IsCommunicationError(emcy_code::kCanOverrun));
   EXPECT_TRUE(IsCommunicationError(0x8140));  // recovered from bus-off
+  EXPECT_TRUE(IsCommunicationError(emcy_code::kRpdoTimeout));  // the host's setpoints stopped
   EXPECT_FALSE(IsCommunicationError(emcy_code::kPdoLengthError));
+  EXPECT_FALSE(IsCommunicationError(0x8240));  // unexpected SYNC data length: a protocol error
   EXPECT_FALSE(IsCommunicationError(emcy_code::kCurrent));
   EXPECT_FALSE(IsCommunicationError(emcy_code::kFollowingError));
   EXPECT_FALSE(IsCommunicationError(emcy_code::kErrorResetOrNoError));

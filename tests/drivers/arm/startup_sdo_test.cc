@@ -22,9 +22,10 @@ TEST(StartupSdoTest, DefaultSequenceForNode3) {
   const auto writes = StartupSdoWrites(3, StartupOptions{}, &error);
   ASSERT_TRUE(writes) << error;
   const Expected expected[] = {
-      // RPDO1: controlword + target velocity, synchronous.
+      // RPDO1: controlword + target velocity, synchronous, a 50 ms deadline.
       {0x1400, 1, 0x80000203, 4}, {0x1600, 0, 0, 1}, {0x1600, 1, 0x60400010, 4},
-      {0x1600, 2, 0x60FF0020, 4}, {0x1600, 0, 2, 1}, {0x1400, 2, 1, 1}, {0x1400, 1, 0x203, 4},
+      {0x1600, 2, 0x60FF0020, 4}, {0x1600, 0, 2, 1}, {0x1400, 2, 1, 1}, {0x1400, 5, 50, 2},
+      {0x1400, 1, 0x203, 4},
       // RPDO2-4 unused: invalid.
       {0x1401, 1, 0x80000303, 4}, {0x1402, 1, 0x80000403, 4}, {0x1403, 1, 0x80000503, 4},
       // TPDO1: statusword + position actual, every SYNC; TPDO2: velocity actual, every 2nd SYNC.
@@ -87,6 +88,27 @@ TEST(StartupSdoTest, BadOptionsAreRejected) {
   options = {};
   options.sync_period_ms = 0;
   EXPECT_FALSE(StartupSdoWrites(1, options, &error));
+  options = {};
+  options.rpdo_deadline_ms = 65536;
+  EXPECT_FALSE(StartupSdoWrites(1, options, &error));
+  EXPECT_EQ(error, "start-up SDO writes: RPDO deadline 65536 ms is outside 0..65535");
+  options.rpdo_deadline_ms = -1;
+  EXPECT_FALSE(StartupSdoWrites(1, options, &error));
+}
+
+TEST(StartupSdoTest, ADeadlineOfZeroIsStillWrittenAndOnlyForRpdo1) {
+  StartupOptions options;
+  options.rpdo_deadline_ms = 0;  // not monitored: the drive's power-on value 0 is written
+  const auto writes = StartupSdoWrites(2, options, nullptr);
+  ASSERT_TRUE(writes);
+  const auto timer = std::find_if(writes->begin(), writes->end(), [](const SdoWrite& w) {
+    return w.address.index == 0x1400 && w.address.subindex == 5;
+  });
+  ASSERT_NE(timer, writes->end());
+  EXPECT_EQ(timer->value, 0u);
+  EXPECT_EQ(timer->size_bytes, 2);
+  // Only RPDO1 carries one: the TPDOs' event timers are left alone.
+  EXPECT_EQ(std::count_if(writes->begin(), writes->end(), [](const SdoWrite& w) { return w.address.subindex == 5; }), 1);
 }
 
 TEST(StartupSdoTest, MappingEntryPacksIndexSubindexAndBits) {

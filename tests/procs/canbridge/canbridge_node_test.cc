@@ -312,6 +312,20 @@ TEST(CanbridgeNodeTest, CommunicationFaultWithoutEmcyIsReadAndResetByTheBridge) 
   EXPECT_EQ(rig.peers.drives[3].model.state(), DriveState::kOperationEnabled);
 }
 
+// A drive whose setpoints stopped for its RPDO deadline (the bridge killed and restarted)
+// faults with 0x8250, its EMCY sent while no bridge listened: reset by the bridge like 0x8130.
+TEST(CanbridgeNodeTest, AnRpdoTimeoutWithoutEmcyIsReadAndResetByTheBridge) {
+  Rig rig;
+  ASSERT_TRUE(rig.Running());
+  rig.CommandFor(rig.Command(0.0, 0.0, 0.0), 0.2);
+  rig.peers.drives[5].Fault(canopen::emcy_code::kRpdoTimeout, nullptr);
+  ASSERT_TRUE(rig.CommandUntil(rig.Command(0.0, 0.0, 0.0), [&] { return rig.node.state() == BridgeState::kFault; }, 0.2));
+  ASSERT_TRUE(rig.CommandUntil(rig.Command(0.0, 0.0, 0.0), [&] { return rig.node.state() == BridgeState::kRunning; }, 3.0))
+      << rig.node.stop_reason();
+  EXPECT_GE(rig.peers.drives[5].uploads, 1);
+  EXPECT_EQ(rig.peers.drives[5].model.state(), DriveState::kOperationEnabled);
+}
+
 TEST(CanbridgeNodeTest, ADriveFaultOfItsOwnReadBySdoWaitsForTheOperator) {
   Rig rig;
   ASSERT_TRUE(rig.Running());

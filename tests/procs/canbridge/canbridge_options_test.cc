@@ -35,6 +35,7 @@ TEST(CanbridgeOptionsTest, ShippedConfigIsTheDefaults) {
   EXPECT_EQ(o.drives.node_ids, d.drives.node_ids);
   EXPECT_EQ(o.drives.heartbeat_timeout_s, d.drives.heartbeat_timeout_s);
   EXPECT_EQ(o.drives.startup.consumer_heartbeat_ms, d.drives.startup.consumer_heartbeat_ms);
+  EXPECT_EQ(o.drives.startup.rpdo_deadline_ms, d.drives.startup.rpdo_deadline_ms);
   EXPECT_EQ(o.drives.sdo_attempts, d.drives.sdo_attempts);
   EXPECT_EQ(o.auto_reset_communication_faults, d.auto_reset_communication_faults);
   EXPECT_EQ(o.max_auto_resets_per_minute, d.max_auto_resets_per_minute);
@@ -43,12 +44,13 @@ TEST(CanbridgeOptionsTest, ShippedConfigIsTheDefaults) {
 TEST(CanbridgeOptionsTest, ReadsValues) {
   const CanbridgeOptions o = LoadCanbridgeOptions(
       Write("good.yaml", "can_url: socketcan://can0\ncommand_timeout_s: 0.05\nbase: {node_id: 20}\n"
-                         "drives: {node_ids: [11, 12, 13, 14, 15, 16, 17], pdo_timeout_s: 0}\n"));
+                         "drives: {node_ids: [11, 12, 13, 14, 15, 16, 17], pdo_timeout_s: 0, rpdo_deadline_ms: 0}\n"));
   EXPECT_EQ(o.can_url, "socketcan://can0");
   EXPECT_EQ(o.command_timeout_s, 0.05);
   EXPECT_EQ(o.base.node_id, 20);
   EXPECT_EQ(o.drives.node_ids.front(), 11);
   EXPECT_EQ(o.drives.pdo_timeout_s, 0.0);
+  EXPECT_EQ(o.drives.startup.rpdo_deadline_ms, 0);
 }
 
 TEST(CanbridgeOptionsTest, ErrorsNameTheFileAndKey) {
@@ -69,6 +71,10 @@ TEST(CanbridgeOptionsTest, ErrorsNameTheFileAndKey) {
   EXPECT_NE(ErrorOf("drives: {node_ids: [-4294967297]}\n").find("node id -4294967297 is outside"), std::string::npos);
   EXPECT_NE(ErrorOf("drives: {node_ids: [0]}\n").find("node id 0 is outside 1..127"), std::string::npos);
   EXPECT_NE(ErrorOf("base: {wheel_radius_m: -1}\n").find("base"), std::string::npos);
+  // An RPDO deadline shorter than 3 CAN cycles (5 ms each) or beyond the uint16 event timer.
+  EXPECT_NE(ErrorOf("drives: {rpdo_deadline_ms: 10}\n").find("drives.rpdo_deadline_ms"), std::string::npos);
+  EXPECT_NE(ErrorOf("drives: {rpdo_deadline_ms: 65536}\n").find("drives.rpdo_deadline_ms"), std::string::npos);
+  EXPECT_NE(ErrorOf("drives: {rpdo_deadline_ms: -5}\n").find("drives.rpdo_deadline_ms"), std::string::npos);
 }
 
 }  // namespace

@@ -1,7 +1,7 @@
 // A simulated CiA 402 drive (sim/motors/drive_node.h) against the host side of drivers/arm: the
 // start-up SDO writes answered (and bad writes aborted), NMT states, the enable sequence of
 // cia402_host reaching Operation enabled, the target velocity followed only there, quick stop,
-// fault + EMCY + fault reset, the heartbeat's timing, the host's heartbeat lost.
+// fault + EMCY + fault reset, the heartbeat's timing, the host's heartbeat lost, RPDO1's deadline.
 
 #include "sim/motors/drive_node.h"
 
@@ -121,6 +121,7 @@ TEST(DriveNodeTest, BootsUpAndAnswersTheStartupWrites) {
   EXPECT_EQ(b.drive.dictionary().producer_heartbeat_ms(), 50);
   EXPECT_EQ(b.drive.dictionary().consumer_node_id(), 127);
   EXPECT_EQ(b.drive.dictionary().consumer_heartbeat_ms(), 300);
+  EXPECT_EQ(b.drive.dictionary().rpdo1_deadline_ms(), 50);
   EXPECT_TRUE(b.drive.dictionary().PdoValid(Pdo::kRpdo1));
   EXPECT_TRUE(b.drive.dictionary().PdoValid(Pdo::kTpdo2));
   EXPECT_FALSE(b.drive.dictionary().PdoValid(Pdo::kRpdo2));
@@ -336,6 +337,69 @@ TEST(DriveNodeTest, LostHostHeartbeatFaultsTheDrive) {
     heartbeat_emcy = heartbeat_emcy || canopen::DecodeEmcy(f, nullptr)->error_code == canopen::emcy_code::kHeartbeatError;
   }
   EXPECT_TRUE(heartbeat_emcy);
+}
+
+bool SentEmcy(const std::vector<can::CanFrame>& frames, std::uint16_t code) {
+  for (const can::CanFrame& f : OfFunction(frames, canopen::CanopenFunction::kEmcy)) {
+    if (canopen::DecodeEmcy(f, nullptr)->error_code == code) return true;
+  }
+  return false;
+}
+
+TEST(DriveNodeTest, NoRpdoWithinTheDeadlineFaultsTheDriveAndRampsTheJointToZero) {
+  Bench b;
+  b.Start();
+  ASSERT_EQ(b.Write({0x1400, 5}, 2, 50), 0u);  // RPDO1's event timer: a 50 ms deadline
+  ASSERT_TRUE(b.Enable());
+  for (int i = 0; i < 20; ++i) b.Cycle(0x000F, 1.0);
+  ASSERT_DOUBLE_EQ(b.drive.velocity_command_radps(), 1.0);
+  // SYNCs go on but the setpoints stop (the host died between the two): 45 ms is within the
+  // deadline, the drive keeps its last setpoint; by 60 ms it has given up on the host.
+  std::vector<can::CanFrame> sent;
+  for (int i = 0; i < 8; ++i) b.Cycle(std::nullopt);
+  EXPECT_EQ(b.drive.counts().rpdo_timeouts, 0);
+  EXPECT_EQ(b.drive.state(), DriveState::kOperationEnabled);
+  EXPECT_DOUBLE_EQ(b.drive.velocity_command_radps(), 1.0);
+  for (int i = 0; i < 3; ++i) {
+    b.Cycle(std::nullopt);
+    sent.insert(sent.end(), b.out.begin(), b.out.end());
+  }
+  EXPECT_EQ(b.drive.counts().rpdo_timeouts, 1);
+  EXPECT_TRUE(SentEmcy(sent, canopen::emcy_code::kRpdoTimeout));
+  EXPECT_EQ(b.drive.dictionary().Get({0x603F, 0}), canopen::emcy_code::kRpdoTimeout);
+  EXPECT_EQ(b.drive.state(), DriveState::kFaultReactionActive);
+  EXPECT_LT(b.drive.velocity_command_radps(), 1.0);  // ramping down at the quick-stop deceleration
+  // 1 rad/s at 6.28 rad/s^2: at zero within 0.16 s, then Fault; one timeout per silence.
+  for (int i = 0; i < 40; ++i) b.Cycle(std::nullopt);
+  EXPECT_EQ(b.drive.velocity_command_radps(), 0.0);
+  EXPECT_EQ(b.drive.state(), DriveState::kFault);
+  EXPECT_EQ(b.drive.counts().rpdo_timeouts, 1);
+}
+
+TEST(DriveNodeTest, TheDeadlineIsWatchedOnlyWhenSetAndOnlyWhileOperational) {
+  Bench unset;  // power-on: event timer 0, no monitoring (the setpoint is simply kept)
+  unset.Start();
+  ASSERT_TRUE(unset.Enable());
+  unset.Cycle(0x000F, 0.5);
+  for (int i = 0; i < 100; ++i) unset.Cycle(std::nullopt);
+  EXPECT_EQ(unset.drive.counts().rpdo_timeouts, 0);
+  EXPECT_EQ(unset.drive.state(), DriveState::kOperationEnabled);
+
+  Bench pre_op;  // set, but the host takes the drive out of operational: no PDOs are expected
+  pre_op.Start();
+  ASSERT_EQ(pre_op.Write({0x1400, 5}, 2, 50), 0u);
+  ASSERT_TRUE(pre_op.Enable());
+  pre_op.Cycle(0x000F, 0.5);
+  pre_op.drive.OnFrame(Nmt(canopen::NmtCommand::kEnterPreOperational), pre_op.t, &pre_op.out);
+  for (int i = 0; i < 40; ++i) pre_op.Step();
+  EXPECT_EQ(pre_op.drive.counts().rpdo_timeouts, 0);
+  // Operational again: the watch starts with the next RPDO1, not with the NMT start.
+  pre_op.drive.OnFrame(Nmt(canopen::NmtCommand::kStartRemoteNode), pre_op.t, &pre_op.out);
+  for (int i = 0; i < 40; ++i) pre_op.Cycle(std::nullopt);
+  EXPECT_EQ(pre_op.drive.counts().rpdo_timeouts, 0);
+  pre_op.Cycle(0x000F, 0.5);
+  for (int i = 0; i < 12; ++i) pre_op.Cycle(std::nullopt);
+  EXPECT_EQ(pre_op.drive.counts().rpdo_timeouts, 1);
 }
 
 }  // namespace

@@ -339,6 +339,39 @@ TEST_F(FaultEpisodeTest, AnObstacleGoalTheMissionsGoalReplacedRecoversWithoutARe
   EXPECT_GE(r.recover_s, 1.0) << "recovered before the mission's goal replaced the injected one";
 }
 
+// kill-canbridge, room seed 8 of the twenty-fifth session's table: "every drive commanded to 0"
+// only 23.1 s after the kill. A robot that has just come to rest (moving 0.2 s ago, every drive
+// at 0 since) is not injected: its stop would be a run of zeros that began before the fault.
+TEST_F(FaultEpisodeTest, ARobotThatHasJustComeToRestIsNotInjectedUntilItMovesAgain) {
+  GraphMonitor monitor(kUrl);
+  FaultInjector injector(InjectorOptions(), &monitor);
+  FaultEpisode episode(SelectFaults({"can-bus-off"})[0], 1, &injector, getpid(), QuickOptions());
+  GraphView view;
+  view.now_s = 10.0;
+  view.drive_state = drive_status_t::RUNNING;
+  view.last_drive_status_s = 9.95;
+  view.mission_state = mission_status_t::RUNNING;
+  view.last_moving_s = 9.8;
+  view.actuator_zero = true;
+  view.actuator_zero_since_s = 9.9;
+  EXPECT_FALSE(episode.Tick(view));
+  EXPECT_FALSE(episode.Injected());
+  view.now_s = 10.5;  // moving again
+  view.last_moving_s = 10.49;
+  view.actuator_zero = false;
+  view.actuator_zero_since_s = 9.9;
+  view.last_drive_status_s = 10.45;
+  EXPECT_FALSE(episode.Tick(view));
+  EXPECT_TRUE(episode.Injected());
+  // Then the stop: a run of zeros from after the injection.
+  view.now_s = 10.6;
+  view.actuator_zero = true;
+  view.actuator_zero_since_s = 10.56;
+  episode.Tick(view);
+  EXPECT_NEAR(episode.Result().safe_ms, 60.0, 1e-6);
+  EXPECT_EQ(episode.Result().safe_evidence, "every drive commanded to 0");
+}
+
 TEST_F(FaultEpisodeTest, ARobotThatNeverMovesIsNotInjected) {
   GraphMonitor monitor(kUrl);
   FaultInjector injector(InjectorOptions(), &monitor);
