@@ -52,7 +52,11 @@ DriveNode::DriveNode(const DriveNodeOptions& options, double start_time_s)
 }
 
 void DriveNode::PowerOn(bool reset_application) {
-  dictionary_ = DriveObjectDictionary(options_.node_id, options_.producer_heartbeat_ms);
+  DriveObjectDictionary power_on(options_.node_id, options_.producer_heartbeat_ms);
+  // Reset communication keeps the drive's own objects: a fault still present is still named by
+  // 0x603F (a host that restarted reads it to decide whether it may reset the fault itself).
+  if (!reset_application) power_on.ResetCommunicationArea(dictionary_);
+  dictionary_ = power_on;
   if (reset_application) {
     model_ = cia402::DriveModel(options_.model);
     model_.CompleteInitialization();  // transition 1: the simulated drive initialises at once

@@ -188,6 +188,12 @@ std::uint32_t DriveObjectDictionary::Get(ObjectAddress address) const {
   return it == objects_.end() ? 0 : it->second.value;
 }
 
+void DriveObjectDictionary::ResetCommunicationArea(const DriveObjectDictionary& current) {
+  for (const auto& [key, entry] : current.objects_) {
+    if (key.first >= 0x2000 || key == Key{0x1001, 0}) objects_[key] = entry;
+  }
+}
+
 bool DriveObjectDictionary::PdoValid(Pdo pdo) const { return (Get({CommIndexOf(pdo), 1}) & kInvalidBit) == 0; }
 
 }  // namespace topay::sim::motors

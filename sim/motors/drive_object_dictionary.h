@@ -43,6 +43,12 @@ class DriveObjectDictionary {
   void Set(canopen::ObjectAddress address, std::uint32_t value);
   std::uint32_t Get(canopen::ObjectAddress address) const;
 
+  /// NMT reset communication (CiA 301 §7.3.2.2.3): every object of the communication profile
+  /// area (0x1000-0x1FFF) back to its power-on value, the rest kept as `current` has it (the
+  /// error code 0x603F of a fault still present among them) and the error register 0x1001 too,
+  /// which shows the errors present, not a setting.
+  void ResetCommunicationArea(const DriveObjectDictionary& current);
+
   bool PdoValid(Pdo pdo) const;
   /// Producer heartbeat time 0x1017, ms (0: none).
   int producer_heartbeat_ms() const { return static_cast<int>(Get({0x1017, 0})); }

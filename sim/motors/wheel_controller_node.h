@@ -26,7 +26,9 @@ struct WheelControllerOptions {
   /// bus and the base protocol's ids (function base + node) would clash with theirs at 1..7.
   int node_id = 16;
   base::DriveGeometry geometry;              ///< wheel radius 0.1 m, track 0.5 m, 16384 ticks/rev
-  base::ModeStateMachineOptions modes;       ///< watchdog 0.1 s, timeout -> quick stop
+  /// Watchdog 0.05 s (ten 5 ms bridge cycles, as the arm drives' RPDO deadline: a dead bridge has
+  /// the whole robot braking within about 60 ms), timeout -> quick stop.
+  base::ModeStateMachineOptions modes{.command_timeout_s = 0.05};
   double status_period_s = 0.05;             ///< status frame period (20 Hz), s
   double feedback_period_s = 0.01;           ///< wheel speeds + odometry period (100 Hz), s
   double battery_voltage_v = 48.0;           ///< reported in the status frame, V

@@ -63,7 +63,7 @@ TEST(CanOverVcan, BridgeAndMotorsimMoveThePlantAndCanUtilsShareTheBus) {
   WriteText(dir + "/motorsim.yaml", "base:\n  command_timeout_s: 1.0\n");
   WriteText(dir + "/canbridge.yaml",
             "command_timeout_s: 0.5\nbase:\n  status_timeout_s: 1.0\ndrives:\n  heartbeat_timeout_s: 2.0\n"
-            "  pdo_timeout_s: 1.0\n  consumer_heartbeat_ms: 2000\n");
+            "  pdo_timeout_s: 1.0\n  consumer_heartbeat_ms: 2000\n  rpdo_deadline_ms: 1000\n");
   // Every process of the check: LCM with an 8 MB receive buffer (the emulated guest is slow; a
   // process that stalls must not lose its inputs), as the graphs use. Spawn execs without PATH.
   setenv("LCM_DEFAULT_URL", "udpm://239.255.76.67:7667?ttl=0&recv_buf_size=8388608", 1);

@@ -14,6 +14,7 @@ namespace {
 
 constexpr double kMovingRecentlyS = 0.3;  // moving = an ACTUATOR_COMMAND above threshold this recently
 constexpr double kResetPeriodS = 0.5;
+constexpr double kBrakingConfirmS = 0.05;  // a braking run this long is the drives stopping
 // The injector's goal ids: 900000001 on (the mission's are microsecond stamps, about 1.8e15).
 constexpr std::int64_t kToolGoalIds = 900000000, kToolGoalIdsEnd = 1000000000;
 bool IsToolGoal(std::int64_t goal_id) { return goal_id >= kToolGoalIds && goal_id < kToolGoalIdsEnd; }
@@ -61,8 +62,8 @@ FaultEpisode::FaultEpisode(const FaultSpec& fault, std::uint64_t seed, FaultInje
 }
 
 // Moving now: a robot that has just come to rest (every drive at 0 since before the injection)
-// would never show the stop the fault should cause (the safe state is a run of zero commands
-// that starts after the injection), and would say nothing about it either.
+// would never show the stop the fault should cause (the safe state is a stop that begins after
+// the injection), and would say nothing about it either.
 bool FaultEpisode::Ready(const GraphView& view) const {
   return !view.actuator_zero && view.last_moving_s >= 0.0 && view.now_s - view.last_moving_s < kMovingRecentlyS &&
          FreshDriveState(view) == drive_status_t::RUNNING && view.mission_state == mission_status_t::RUNNING;
@@ -133,9 +134,15 @@ void FaultEpisode::Inject(const GraphView& view) {
   phase_ = Phase::kFault;
 }
 
-// The safe state: the bridge STOPPED or FAULT, every drive commanded to 0, or the graph gone;
-// whichever is seen first after the injection.
+// The safe state: the bridge STOPPED or FAULT, every drive braking (or at 0) for good, or the
+// graph gone; whichever is seen first after the injection. And, apart, when every drive's output
+// reached 0 (the end of the devices' stop ramps).
 void FaultEpisode::WatchSafeState(const GraphView& view, double graph_end_s) {
+  const double reference_s =
+      fault_.from_last_command && view.last_control_command_s >= 0.0 ? view.last_control_command_s : inject_s_;
+  if (result_.zero_ms < 0.0 && view.actuator_zero && view.actuator_zero_since_s >= inject_s_) {
+    result_.zero_ms = 1000.0 * (view.actuator_zero_since_s - reference_s);
+  }
   if (result_.safe_ms >= 0.0) return;
   double safe_s = -1.0;
   std::string evidence;
@@ -147,15 +154,22 @@ void FaultEpisode::WatchSafeState(const GraphView& view, double graph_end_s) {
       break;
     }
   }
-  if (view.actuator_zero && view.actuator_zero_since_s >= inject_s_ &&
-      (safe_s < 0.0 || view.actuator_zero_since_s < safe_s)) {
+  // A run of braking outputs counts once it reached 0 or lasted kBrakingConfirmS (not one
+  // message of a tracked deceleration); it is timed from its start.
+  const double braking_s = view.actuator_braking_since_s;
+  if (braking_s >= inject_s_ && (view.actuator_zero || view.last_actuator_s - braking_s >= kBrakingConfirmS) &&
+      (safe_s < 0.0 || braking_s < safe_s)) {
+    safe_s = braking_s;
+    evidence = view.actuator_zero && view.actuator_zero_since_s <= braking_s ? "every drive commanded to 0"
+                                                                             : "every drive braking";
+  }
+  // Zeros after a braking run that began before the fault (a tracked deceleration through it).
+  if (view.actuator_zero && view.actuator_zero_since_s >= inject_s_ && safe_s < 0.0) {
     safe_s = view.actuator_zero_since_s;
     evidence = "every drive commanded to 0";
   }
   if (graph_end_s >= 0.0 && safe_s < 0.0) safe_s = graph_end_s, evidence = "graph stopped";
   if (safe_s < 0.0) return;
-  const double reference_s =
-      fault_.from_last_command && view.last_control_command_s >= 0.0 ? view.last_control_command_s : inject_s_;
   result_.safe_ms = 1000.0 * (safe_s - reference_s);
   result_.safe_evidence = evidence;
 }
@@ -206,7 +220,8 @@ bool FaultEpisode::Recovered(const GraphView& view) {
   if (fault_.stop_expected && result_.safe_ms < 0.0) return Awaiting("the stop");  // no recovery before it
   // Moving again after the fault was cleared and after the stop it caused, if it caused one.
   const double stopped_s = result_.safe_ms >= 0.0 ? inject_s_ + std::max(0.0, result_.safe_ms * 1e-3) : 0.0;
-  const bool moving_again = view.last_moving_s > std::max(clear_s_, stopped_s);
+  // Not on a stop ramp now: the ramp's own outputs are above the moving threshold for a while.
+  const bool moving_again = view.last_moving_s > std::max(clear_s_, stopped_s) && view.actuator_braking_since_s < 0.0;
   const bool step_done = view.mission_step > mission_step_at_start_;
   if (FreshDriveState(view) != drive_status_t::RUNNING) return Awaiting("the drives RUNNING");
   if (!(moving_again || step_done)) return Awaiting("the robot moving again or the mission's next step");
@@ -258,6 +273,9 @@ void FaultEpisode::Finish(const GraphView& view, const std::string& outcome) {
   }
   std::string head = result_.safe_ms >= 0.0 ? fmt::format("{} after {:.0f} ms", result_.safe_evidence, result_.safe_ms)
                                             : "no stop";
+  if (result_.zero_ms >= 0.0 && result_.safe_evidence == "every drive braking") {
+    head += fmt::format(", at 0 after {:.0f} ms", result_.zero_ms);
+  }
   if (resets_sent_ > 0) head += fmt::format("; {} FAULT_RESET sent", resets_sent_);
   const auto held = std::find_if(view.tracker_held_starts_s.begin(), view.tracker_held_starts_s.end(),
                                  [&](double s) { return s >= inject_s_; });

@@ -32,6 +32,7 @@ struct EpisodeResult {
   std::string notes;              ///< what the injector did, or why it could not
   double safe_ms = -1.0;          ///< reference -> safe state, ms (-1: no stop seen)
   std::string safe_evidence;      ///< what showed the safe state
+  double zero_ms = -1.0;          ///< reference -> every drive's output at 0, ms (-1: not seen)
   bool recovered = false;
   double recover_s = -1.0;        ///< injection -> recovery, s (-1: not recovered)
   std::string reaction;           ///< what the graph did, readable

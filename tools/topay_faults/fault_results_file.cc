@@ -49,7 +49,7 @@ T Field(const json& j, const char* key) {
 json ToJson(const EpisodeResult& e) {
   return {{"fault", e.fault},         {"seed", e.seed},           {"injected", e.injected},
           {"refused", e.refused},     {"notes", e.notes},         {"safe_ms", e.safe_ms},
-          {"safe_evidence", e.safe_evidence}, {"recovered", e.recovered}, {"recover_s", e.recover_s},
+          {"safe_evidence", e.safe_evidence}, {"zero_ms", e.zero_ms}, {"recovered", e.recovered}, {"recover_s", e.recover_s},
           {"reaction", e.reaction},   {"other_restarts", e.other_restarts}, {"contacts", e.contacts}};
 }
 
@@ -63,6 +63,7 @@ EpisodeResult EpisodeFromJson(const json& j) {
   e.notes = Field<std::string>(j, "notes");
   e.safe_ms = Field<double>(j, "safe_ms");
   e.safe_evidence = Field<std::string>(j, "safe_evidence");
+  e.zero_ms = j.contains("zero_ms") ? Field<double>(j, "zero_ms") : -1.0;  // older files: not measured
   e.recovered = Field<bool>(j, "recovered");
   e.recover_s = Field<double>(j, "recover_s");
   e.reaction = Field<std::string>(j, "reaction");

@@ -41,8 +41,8 @@ std::string Cell(std::string text) {
 
 std::string FaultSummaryTable(const std::vector<FaultSpec>& faults, const std::vector<EpisodeResult>& episodes) {
   std::string table =
-      "| fault | runs | reaction seen (count) | to safe state ms, median / max | recovered | to recovery s, "
-      "median / max | other restarts | contacts |\n|---|---|---|---|---|---|---|---|\n";
+      "| fault | runs | reaction seen (count) | to safe state ms, median / max | every drive at 0 ms, median / max "
+      "| recovered | to recovery s, median / max | other restarts | contacts |\n|---|---|---|---|---|---|---|---|---|\n";
   for (const FaultSpec& fault : faults) {
     std::vector<const EpisodeResult*> runs;
     int refused = 0;
@@ -50,18 +50,19 @@ std::string FaultSummaryTable(const std::vector<FaultSpec>& faults, const std::v
       if (e.fault != fault.name) continue;
       if (e.injected) runs.push_back(&e); else ++refused;
     }
-    std::vector<double> safe_ms, recover_s;
+    std::vector<double> safe_ms, zero_ms, recover_s;
     int recovered = 0, restarts = 0;
     long contacts = 0;
     for (const EpisodeResult* e : runs) {
       if (e->safe_ms >= 0.0) safe_ms.push_back(e->safe_ms);
+      if (e->zero_ms >= 0.0) zero_ms.push_back(e->zero_ms);
       if (e->recovered) ++recovered, recover_s.push_back(e->recover_s);
       restarts += e->other_restarts;
       contacts += static_cast<long>(e->contacts);
     }
-    table += fmt::format("| {} | {}{} | {} | {} | {} / {} | {} | {} | {} |\n", fault.name, runs.size(),
+    table += fmt::format("| {} | {}{} | {} | {} | {} | {} / {} | {} | {} | {} |\n", fault.name, runs.size(),
                          refused > 0 ? fmt::format(" ({} not injected)", refused) : "", Cell(CommonEvidence(runs)),
-                         MedianMax(safe_ms, "{:.0f}"), recovered, runs.size(), MedianMax(recover_s, "{:.1f}"),
+                         MedianMax(safe_ms, "{:.0f}"), MedianMax(zero_ms, "{:.0f}"), recovered, runs.size(), MedianMax(recover_s, "{:.1f}"),
                          restarts, contacts);
   }
   return table;

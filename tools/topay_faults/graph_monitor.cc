@@ -87,6 +87,7 @@ void GraphMonitor::Reset() {
   const auto heartbeat_s = view_.heartbeat_s;
   const auto heartbeat_pid = view_.heartbeat_pid;
   view_ = GraphView{};
+  braking_ = BrakingRun(kZeroThreshold);
   view_.heartbeat_s = heartbeat_s;
   view_.heartbeat_pid = heartbeat_pid;
 }
@@ -112,6 +113,9 @@ void GraphMonitor::OnMessage(const std::string& channel, const std::uint8_t* dat
         if (zero && (!v.actuator_zero || v.actuator_zero_since_s < 0.0)) v.actuator_zero_since_s = t;
         v.actuator_zero = zero;
         if (largest >= kMovingThreshold) v.last_moving_s = t;
+        axes_.assign({c->v_mps, c->omega_radps});
+        axes_.insert(axes_.end(), c->qdot_radps.begin(), c->qdot_radps.end());
+        v.actuator_braking_since_s = braking_.Add(axes_, t);
         v.last_actuator_s = t;
       }
     } else if (channel == channels::DRIVE_STATUS) {

@@ -15,6 +15,8 @@
 #include <thread>
 #include <vector>
 
+#include "braking_run.h"
+
 namespace lcm {
 class LCM;
 struct ReceiveBuffer;
@@ -44,6 +46,10 @@ struct GraphView {
   double last_actuator_s = -1.0;          ///< ACTUATOR_COMMAND receipt
   bool actuator_zero = true;              ///< the last ACTUATOR_COMMAND commands every axis to 0
   double actuator_zero_since_s = -1.0;    ///< receipt of the first of the current run of zero commands
+  /// Receipt of the first of the current run of ACTUATOR_COMMANDs in which every axis is at 0 or
+  /// smaller than in the one before (the drives braking: their own stop ramps); -1 when the last
+  /// one was not such a command.
+  double actuator_braking_since_s = -1.0;
   double last_moving_s = -1.0;            ///< last ACTUATOR_COMMAND with an axis above the moving threshold
   int drive_state = -1;                   ///< the bridge's last state (-1: no DRIVE_STATUS yet)
   double last_drive_status_s = -1.0;
@@ -111,6 +117,8 @@ class GraphMonitor {
   mutable std::mutex mutex_;
   GraphView view_;
   std::map<std::string, std::vector<std::uint8_t>> last_;
+  BrakingRun braking_{kZeroThreshold};  // over ACTUATOR_COMMAND (under mutex_)
+  std::vector<double> axes_;            // its scratch
   std::mutex tap_mutex_;  // held while the tap runs: SetTap(nullptr) returns only once it is not running
   MessageTap tap_;
   bool stop_ = false;

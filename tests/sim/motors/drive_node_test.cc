@@ -402,5 +402,37 @@ TEST(DriveNodeTest, TheDeadlineIsWatchedOnlyWhenSetAndOnlyWhileOperational) {
   EXPECT_EQ(pre_op.drive.counts().rpdo_timeouts, 1);
 }
 
+// kill-canbridge: a drive faulted by its RPDO deadline while the bridge was dead; the restarted
+// bridge resets its communication and reads 0x603F to see whether it may reset the fault itself.
+// The code must survive the reset communication (it read 0 before: the operator was needed).
+TEST(DriveNodeTest, ResetCommunicationKeepsAFaultAndItsCodeButResetsTheCommunicationObjects) {
+  Bench b;
+  b.Start();
+  ASSERT_EQ(b.Write({0x1400, 5}, 2, 50), 0u);
+  ASSERT_EQ(b.Write({0x1016, 1}, 4, (127u << 16) | 300u), 0u);
+  ASSERT_TRUE(b.Enable());
+  b.Cycle(0x000F, 0.5);
+  for (int i = 0; i < 60; ++i) b.Cycle(std::nullopt);  // 0.3 s without setpoints: 0x8250
+  ASSERT_EQ(b.drive.state(), DriveState::kFault);
+  b.drive.OnFrame(Nmt(canopen::NmtCommand::kResetCommunication), b.t, &b.out);
+  b.Step();
+  EXPECT_EQ(b.drive.nmt_state(), NmtState::kPreOperational);
+  EXPECT_EQ(b.drive.state(), DriveState::kFault);
+  EXPECT_EQ(b.drive.dictionary().Get({0x603F, 0}), canopen::emcy_code::kRpdoTimeout);
+  EXPECT_NE(b.drive.dictionary().Get({0x1001, 0}) & canopen::error_register::kCommunication, 0u);
+  EXPECT_EQ(b.drive.dictionary().rpdo1_deadline_ms(), 0);  // communication objects: power-on
+  EXPECT_EQ(b.drive.dictionary().consumer_heartbeat_ms(), 0);
+  const auto reply = b.Sdo(*canopen::EncodeSdoUploadRequest({kNode, {0x603F, 0}}, nullptr));
+  ASSERT_TRUE(reply);
+  const auto* upload = std::get_if<canopen::SdoUploadResponse>(&*reply);
+  ASSERT_NE(upload, nullptr);
+  EXPECT_EQ(upload->value, canopen::emcy_code::kRpdoTimeout);
+  // Reset node: the whole drive to power-on, the fault cleared.
+  b.drive.OnFrame(Nmt(canopen::NmtCommand::kResetNode), b.t, &b.out);
+  b.Step();
+  EXPECT_NE(b.drive.state(), DriveState::kFault);
+  EXPECT_EQ(b.drive.dictionary().Get({0x603F, 0}), 0u);
+}
+
 }  // namespace
 }  // namespace topay::sim::motors

@@ -83,15 +83,15 @@ TEST(WheelControllerNodeTest, CommandTimeoutBrakesToZero) {
   }
   EXPECT_NEAR(node.command().v_m_per_s, 0.8, 1e-9);
   EXPECT_EQ(node.mode(), BaseMode::kCanCommand);
-  // Silence: the watchdog (0.1 s) trips, quick stop ramps to zero at 1 m/s^2.
+  // Silence: the watchdog (0.05 s) trips, quick stop ramps to zero at 1 m/s^2.
   const double last_command_s = t - 0.005;
-  for (; t < last_command_s + 0.099; t += 0.005) node.Step(t, std::nullopt, &out);
+  for (; t < last_command_s + 0.049; t += 0.005) node.Step(t, std::nullopt, &out);
   EXPECT_EQ(node.mode(), BaseMode::kCanCommand);
-  node.Step(last_command_s + 0.11, std::nullopt, &out);
+  node.Step(last_command_s + 0.06, std::nullopt, &out);
   EXPECT_EQ(node.mode(), BaseMode::kQuickStop);
   EXPECT_EQ(node.counts().timeouts, 1);
   EXPECT_LT(node.command().v_m_per_s, 0.8);
-  for (t = last_command_s + 0.11; t < last_command_s + 1.2; t += 0.005) node.Step(t, std::nullopt, &out);
+  for (t = last_command_s + 0.06; t < last_command_s + 1.2; t += 0.005) node.Step(t, std::nullopt, &out);
   EXPECT_EQ(node.command().v_m_per_s, 0.0);
   ASSERT_TRUE(LastStatus(out));
   EXPECT_EQ(LastStatus(out)->mode, BaseMode::kQuickStop);

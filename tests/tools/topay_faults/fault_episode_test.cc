@@ -363,13 +363,21 @@ TEST_F(FaultEpisodeTest, ARobotThatHasJustComeToRestIsNotInjectedUntilItMovesAga
   view.last_drive_status_s = 10.45;
   EXPECT_FALSE(episode.Tick(view));
   EXPECT_TRUE(episode.Injected());
-  // Then the stop: a run of zeros from after the injection.
+  // Then the stop: the drives braking from 10.53 s (not yet long enough to count), ...
+  view.now_s = 10.55;
+  view.actuator_braking_since_s = 10.53;
+  view.last_actuator_s = 10.55;
+  episode.Tick(view);
+  EXPECT_LT(episode.Result().safe_ms, 0.0);
+  // ... and at 0 from 10.56 s: the stop began at 10.53 s and ended at 10.56 s.
   view.now_s = 10.6;
+  view.last_actuator_s = 10.6;
   view.actuator_zero = true;
   view.actuator_zero_since_s = 10.56;
   episode.Tick(view);
-  EXPECT_NEAR(episode.Result().safe_ms, 60.0, 1e-6);
-  EXPECT_EQ(episode.Result().safe_evidence, "every drive commanded to 0");
+  EXPECT_NEAR(episode.Result().safe_ms, 30.0, 1e-6);
+  EXPECT_EQ(episode.Result().safe_evidence, "every drive braking");
+  EXPECT_NEAR(episode.Result().zero_ms, 60.0, 1e-6);
 }
 
 TEST_F(FaultEpisodeTest, ARobotThatNeverMovesIsNotInjected) {

@@ -69,7 +69,8 @@ TEST_F(FaultResultsFile, WhatIsWrittenReadsBackTheSame) {
   refused.recover_s = -1.0;
   refused.contacts = 3;
   refused.reaction = "bad \xff byte";  // texts off the bus may be any bytes
-  const std::vector<EpisodeResult> written = {Episode("kill-tracker", 96.25), refused};
+  std::vector<EpisodeResult> written = {Episode("kill-tracker", 96.25), refused};
+  written[0].zero_ms = 412.5;
   const std::string path = (dir_ / "results.json").string();
   ASSERT_TRUE(WriteEpisodes(path, written));
   const std::vector<EpisodeResult> read = ReadEpisodes(path);
@@ -77,6 +78,8 @@ TEST_F(FaultResultsFile, WhatIsWrittenReadsBackTheSame) {
   EXPECT_EQ(read[0].fault, "kill-tracker");
   EXPECT_EQ(read[0].seed, 7u);
   EXPECT_DOUBLE_EQ(read[0].safe_ms, 96.25);
+  EXPECT_DOUBLE_EQ(read[0].zero_ms, 412.5);
+  EXPECT_DOUBLE_EQ(read[1].zero_ms, -1.0);
   EXPECT_EQ(read[0].safe_evidence, "bridge STOPPED: stale command");
   EXPECT_EQ(read[0].other_restarts, 1);
   EXPECT_TRUE(read[0].recovered);

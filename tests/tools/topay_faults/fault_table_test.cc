@@ -25,10 +25,12 @@ TEST(FaultTable, SummarisesEachFaultsEpisodes) {
   EpisodeResult refused;
   refused.fault = "can-bus-off";
   refused.notes = "no MOTORSIM";
-  const std::vector<EpisodeResult> episodes = {Episode(10, true, 2.0), Episode(30, true, 4.0), Episode(50, false, -1),
-                                               refused};
+  std::vector<EpisodeResult> episodes = {Episode(10, true, 2.0), Episode(30, true, 4.0), Episode(50, false, -1),
+                                         refused};
+  episodes[0].zero_ms = 200;  // the stop ramps ended: two of three seen
+  episodes[1].zero_ms = 400;
   const std::string table = FaultSummaryTable({f}, episodes);
-  EXPECT_NE(table.find("| can-bus-off | 3 (1 not injected) | bridge STOPPED: bus-off x3 | 30 / 50 | 2 / 3 | 3.0 / 4.0 | 0 | 0 |"),
+  EXPECT_NE(table.find("| can-bus-off | 3 (1 not injected) | bridge STOPPED: bus-off x3 | 30 / 50 | 300 / 400 | 2 / 3 | 3.0 / 4.0 | 0 | 0 |"),
             std::string::npos)
       << table;
   const std::string rows = EpisodeTable(episodes);
@@ -38,7 +40,7 @@ TEST(FaultTable, SummarisesEachFaultsEpisodes) {
 TEST(FaultTable, AFaultWithoutEpisodesShowsDashes) {
   FaultSpec f;
   f.name = "kill-logger";
-  EXPECT_NE(FaultSummaryTable({f}, {}).find("| kill-logger | 0 | - | - | 0 / 0 | - | 0 | 0 |"), std::string::npos);
+  EXPECT_NE(FaultSummaryTable({f}, {}).find("| kill-logger | 0 | - | - | - | 0 / 0 | - | 0 | 0 |"), std::string::npos);
 }
 
 }  // namespace
