@@ -67,7 +67,10 @@ class TestHost {
     for (int j = 1; j <= 7; ++j) {
       if (!state[j]) continue;
       const bool faulted = state[j] == cia402::DriveState::kFault || state[j] == cia402::DriveState::kFaultReactionActive;
-      if (faulted && !reset_faults) continue;
+      if (faulted && !reset_faults) {  // a host keeps its setpoint stream (0x0000: no reset edge)
+        Send(cia402::EncodeRpdo1({j, 0x0000, 0.0}, {}, nullptr));
+        continue;
+      }
       const cia402::HostStep step = cia402::NextStepTowardsOperationEnabled(*state[j], previous_[j]);
       previous_[j] = step.controlword;
       const bool enabled = state[j] == cia402::DriveState::kOperationEnabled;
@@ -149,9 +152,16 @@ class MotorsimProcess : public testing::Test {
       watcher_->lcm().handleTimeout(5);
     }
   }
-  // Startup SDO writes to `node`, one at a time; the number confirmed.
+  // Startup SDO writes to `node`, one at a time; the number confirmed. RPDO1's deadline 0.5 s:
+  // this test's host is the test itself, which a loaded machine may stall for more than the
+  // bridge's 50 ms (the deadline has its own tests: drive_node_test).
+  static cia402::StartupOptions HostStartup() {
+    cia402::StartupOptions options;
+    options.rpdo_deadline_ms = 500;
+    return options;
+  }
   int StartupWrites(int node) {
-    const auto writes = cia402::StartupSdoWrites(node, {}, nullptr);
+    const auto writes = cia402::StartupSdoWrites(node, HostStartup(), nullptr);
     int confirmed = 0;
     for (const cia402::SdoWrite& w : *writes) {
       host_->sdo_replies.clear();
@@ -179,7 +189,7 @@ class MotorsimProcess : public testing::Test {
 
 TEST_F(MotorsimProcess, HostEnablesTheDrivesAndTheCommandedMotionMovesThePlant) {
   // The drives answer the start-up writes (in pre-operational, before any NMT start).
-  const int expected = static_cast<int>(cia402::StartupSdoWrites(1, {}, nullptr)->size());
+  const int expected = static_cast<int>(cia402::StartupSdoWrites(1, HostStartup(), nullptr)->size());
   EXPECT_EQ(StartupWrites(1), expected) << ReadText(dir_ + "/motorsim.txt");
 
   Run(1.0);  // NMT start, enable sequence, CAN command mode
