@@ -14,6 +14,13 @@ FaultSpec Kill(const std::string& process, const std::string& expected, bool sto
   f.expected = expected;
   f.stop_expected = stop;
   f.from_last_command = from_last_command;
+  f.stop_within_limit = from_last_command;
+  return f;
+}
+
+// The stop must begin within 100 ms of the fault itself (the devices' own watchdogs).
+FaultSpec WithStopLimit(FaultSpec f) {
+  f.stop_within_limit = true;
   return f;
 }
 
@@ -33,10 +40,11 @@ std::vector<FaultSpec> KillFaults() {
   std::vector<FaultSpec> faults = {
       Kill("tracker", "command stream lost: the bridge stops the drives within 100 ms; restarted, the mission resumes",
            true, true),
-      Kill("canbridge",
-           "the devices' own watchdogs stop them (arm drives: RPDO deadline 50 ms, EMCY 0x8250; wheels: "
-           "command watchdog 100 ms); restarted, the bridge resets the drives' RPDO timeouts and re-enables them",
-           true),
+      WithStopLimit(Kill("canbridge",
+                         "the devices' own watchdogs stop them (arm drives: RPDO deadline 50 ms, EMCY 0x8250; "
+                         "wheels: command watchdog 50 ms); restarted, the bridge resets the drives' faults and "
+                         "re-enables them",
+                         true)),
       Kill("motorsim", "drive heartbeats lost: the bridge stops; restarted drives are re-enabled", true),
       Kill("estimator",
            "a gap in ROBOT_STATE: the tracker decelerates once it is 0.1 s stale (unless the restart is quicker); "

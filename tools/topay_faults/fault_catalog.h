@@ -29,6 +29,9 @@ struct FaultSpec {
   /// The command stream to the bridge is what is lost: the time to the safe state is measured
   /// from the last CONTROL_COMMAND on the bus (the 100 ms), not from the injection.
   bool from_last_command = false;
+  /// The stop must begin within the 100 ms (kill-tracker: of the last command; kill-canbridge:
+  /// of the kill, the drives' own watchdogs).
+  bool stop_within_limit = false;
   bool ends_mission = false;   ///< the mission cannot go on (kill of the mission process)
   bool operator_reset = false; ///< needs FAULT_RESET on DRIVE_COMMAND (sent by the tool, as an operator)
   /// The planner must fail the tool's goal with a reason (PLANNER_STATUS FAILED): no recovery

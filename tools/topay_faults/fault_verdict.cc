@@ -18,9 +18,9 @@ void Check(const FaultSpec& fault, const EpisodeResult& e, std::vector<std::stri
   if (e.contacts > 0) out->push_back(fmt::format("{}: {} ground-truth contact(s)", who, e.contacts));
   if (e.other_restarts > 0) out->push_back(fmt::format("{}: {} other process(es) died: {}", who, e.other_restarts, e.reaction));
   if (fault.stop_expected && e.safe_ms < 0.0) out->push_back(who + ": the drives were not commanded to stop");
-  if (fault.from_last_command && e.safe_ms > kCommandLossStopLimitMs) {
-    out->push_back(fmt::format("{}: stopped {:.0f} ms after the last command (limit {:.0f} ms)", who, e.safe_ms,
-                               kCommandLossStopLimitMs));
+  if (fault.stop_within_limit && e.safe_ms > kCommandLossStopLimitMs) {
+    out->push_back(fmt::format("{}: stopped {:.0f} ms after {} (limit {:.0f} ms)", who, e.safe_ms,
+                               fault.from_last_command ? "the last command" : "the fault", kCommandLossStopLimitMs));
   }
   if (!e.recovered && !ClearFailure(e)) out->push_back(who + ": neither recovered nor a clear failure: " + e.reaction);
 }

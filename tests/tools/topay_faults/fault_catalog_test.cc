@@ -46,6 +46,12 @@ TEST(FaultCatalog, SelectsByNameAndRefusesAnUnknownOne) {
   ASSERT_EQ(chosen.size(), 2u);
   EXPECT_EQ(chosen[1].target, "tracker");
   EXPECT_TRUE(chosen[1].from_last_command);
+  EXPECT_TRUE(chosen[1].stop_within_limit);
+  // The 100 ms for the two command streams a kill cuts: the tracker's and the bridge's.
+  const FaultSpec bridge = SelectFaults({"kill-canbridge"})[0];
+  EXPECT_TRUE(bridge.stop_within_limit);
+  EXPECT_FALSE(bridge.from_last_command);
+  EXPECT_FALSE(SelectFaults({"kill-motorsim"})[0].stop_within_limit);
   EXPECT_EQ(SelectFaults({}).size(), FaultCatalog().size());
   try {
     SelectFaults({"kill-everything"});

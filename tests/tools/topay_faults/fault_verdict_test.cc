@@ -12,6 +12,7 @@ FaultSpec CommandLoss() {
   f.name = "kill-tracker";
   f.stop_expected = true;
   f.from_last_command = true;
+  f.stop_within_limit = true;
   return f;
 }
 
@@ -40,6 +41,20 @@ TEST(FaultVerdict, EachBrokenRuleIsNamed) {
   late.safe_ms = 140.0;
   ASSERT_EQ(Of(late).size(), 1u);
   EXPECT_NE(Of(late)[0].find("140 ms after the last command (limit 100 ms)"), std::string::npos);
+
+  // A dead bridge: the devices' own stop, timed from the kill.
+  FaultSpec bridge;
+  bridge.name = "kill-canbridge";
+  bridge.stop_expected = true;
+  bridge.stop_within_limit = true;
+  EpisodeResult slow = Good();
+  slow.fault = "kill-canbridge";
+  slow.safe_ms = 110.0;
+  const std::vector<std::string> slow_violations = Violations({bridge}, {slow});
+  ASSERT_EQ(slow_violations.size(), 1u);
+  EXPECT_NE(slow_violations[0].find("110 ms after the fault (limit 100 ms)"), std::string::npos);
+  slow.safe_ms = 67.0;
+  EXPECT_TRUE(Violations({bridge}, {slow}).empty());
 
   EpisodeResult no_stop = Good();
   no_stop.safe_ms = -1.0;
