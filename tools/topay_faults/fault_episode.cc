@@ -134,16 +134,18 @@ void FaultEpisode::Inject(const GraphView& view) {
   phase_ = Phase::kFault;
 }
 
-// The safe state: the bridge STOPPED or FAULT, every drive braking (or at 0) for good, or the
-// graph gone; whichever is seen first after the injection. And, apart, when every drive's output
-// reached 0 (the end of the devices' stop ramps).
+// The safe state, then, apart, when every drive's output reached 0 (the end of the devices' stop
+// ramps), from the same reference (a restarted tracker's new commands must not move it).
 void FaultEpisode::WatchSafeState(const GraphView& view, double graph_end_s) {
-  const double reference_s =
-      fault_.from_last_command && view.last_control_command_s >= 0.0 ? view.last_control_command_s : inject_s_;
-  if (result_.zero_ms < 0.0 && view.actuator_zero && view.actuator_zero_since_s >= inject_s_) {
-    result_.zero_ms = 1000.0 * (view.actuator_zero_since_s - reference_s);
+  if (result_.safe_ms < 0.0) FindSafeState(view, graph_end_s);
+  if (result_.zero_ms < 0.0 && result_.safe_ms >= 0.0 && view.actuator_zero && view.actuator_zero_since_s >= inject_s_) {
+    result_.zero_ms = 1000.0 * (view.actuator_zero_since_s - safe_reference_s_);
   }
-  if (result_.safe_ms >= 0.0) return;
+}
+
+// The safe state: the bridge STOPPED or FAULT, every drive braking (or at 0) for good, or the
+// graph gone; whichever is seen first after the injection.
+void FaultEpisode::FindSafeState(const GraphView& view, double graph_end_s) {
   double safe_s = -1.0;
   std::string evidence;
   for (const DriveStateChange& change : view.drive_changes) {
@@ -170,7 +172,9 @@ void FaultEpisode::WatchSafeState(const GraphView& view, double graph_end_s) {
   }
   if (graph_end_s >= 0.0 && safe_s < 0.0) safe_s = graph_end_s, evidence = "graph stopped";
   if (safe_s < 0.0) return;
-  result_.safe_ms = 1000.0 * (safe_s - reference_s);
+  safe_reference_s_ =
+      fault_.from_last_command && view.last_control_command_s >= 0.0 ? view.last_control_command_s : inject_s_;
+  result_.safe_ms = 1000.0 * (safe_s - safe_reference_s_);
   result_.safe_evidence = evidence;
 }
 

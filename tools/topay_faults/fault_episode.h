@@ -58,6 +58,7 @@ class FaultEpisode {
   bool Ready(const GraphView& view) const;
   void Inject(const GraphView& view);
   void WatchSafeState(const GraphView& view, double graph_end_s);
+  void FindSafeState(const GraphView& view, double graph_end_s);
   void OperatorReset(const GraphView& view);
   // Notes the planner's answer to an injected goal: a refusal (FAILED naming it), or that it
   // took the goal (PLANNING naming it).
@@ -76,6 +77,7 @@ class FaultEpisode {
   Phase phase_ = Phase::kWaitReady;
   double start_s_ = -1.0;
   double inject_s_ = 0.0;
+  double safe_reference_s_ = 0.0;  // what the safe state was timed from (the injection or the last command)
   double clear_s_ = 0.0;
   double recovered_at_s_ = 0.0;
   double last_reset_s_ = -1.0;
