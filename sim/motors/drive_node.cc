@@ -52,14 +52,14 @@ DriveNode::DriveNode(const DriveNodeOptions& options, double start_time_s)
 }
 
 void DriveNode::PowerOn(bool reset_application) {
-  DriveObjectDictionary power_on(options_.node_id, options_.producer_heartbeat_ms);
   // Reset communication keeps the drive's own objects: a fault still present is still named by
   // 0x603F (a host that restarted reads it to decide whether it may reset the fault itself).
-  if (!reset_application) power_on.ResetCommunicationArea(dictionary_);
-  dictionary_ = power_on;
   if (reset_application) {
+    dictionary_ = DriveObjectDictionary(options_.node_id, options_.producer_heartbeat_ms);
     model_ = cia402::DriveModel(options_.model);
     model_.CompleteInitialization();  // transition 1: the simulated drive initialises at once
+  } else {
+    dictionary_.ResetCommunicationArea();
   }
   nmt_ = NmtState::kBootUp;
   boot_up_due_ = true;
@@ -187,8 +187,7 @@ void DriveNode::CheckRpdoDeadline(double time_s, std::vector<can::CanFrame>* out
   if (!last_rpdo_s_ || deadline_ms <= 0 || time_s - *last_rpdo_s_ < deadline_ms * 1e-3) return;
   last_rpdo_s_.reset();
   ++counts_.rpdo_timeouts;
-  fault_reaction_since_s_ = time_s;
-  EnterFault(canopen::emcy_code::kRpdoTimeout, canopen::error_register::kCommunication, out);
+  EnterFault(canopen::emcy_code::kRpdoTimeout, canopen::error_register::kCommunication, time_s, out);
 }
 
 void DriveNode::OnSdo(const can::CanFrame& frame, std::vector<can::CanFrame>* out) {
@@ -255,11 +254,12 @@ void DriveNode::ApplyControlword(std::uint16_t controlword, std::vector<can::Can
 }
 
 void DriveNode::InjectFault(std::uint16_t emcy_code, double time_s, std::vector<can::CanFrame>* out) {
-  fault_reaction_since_s_ = time_s;
-  EnterFault(emcy_code != 0 ? emcy_code : options_.fault_emcy_code, canopen::error_register::kGeneric, out);
+  EnterFault(emcy_code != 0 ? emcy_code : options_.fault_emcy_code, canopen::error_register::kGeneric, time_s, out);
 }
 
-void DriveNode::EnterFault(std::uint16_t emcy_code, std::uint8_t error_register, std::vector<can::CanFrame>* out) {
+void DriveNode::EnterFault(std::uint16_t emcy_code, std::uint8_t error_register, double time_s,
+                           std::vector<can::CanFrame>* out) {
+  fault_reaction_since_s_ = time_s;
   ++counts_.faults;
   const auto reg = static_cast<std::uint8_t>(dictionary_.Get({0x1001, 0}) | error_register | canopen::error_register::kGeneric);
   dictionary_.Set({0x1001, 0}, reg);
@@ -307,8 +307,7 @@ void DriveNode::Step(double time_s, bool heartbeat_suppressed, std::vector<can::
   if (!host_lost_ && consumer_.IsLost(time_s)) {  // CiA 301 heartbeat event
     host_lost_ = true;
     ++counts_.host_heartbeat_lost;
-    fault_reaction_since_s_ = time_s;
-    EnterFault(canopen::emcy_code::kHeartbeatError, canopen::error_register::kCommunication, out);
+    EnterFault(canopen::emcy_code::kHeartbeatError, canopen::error_register::kCommunication, time_s, out);
   }
   CheckRpdoDeadline(time_s, out);
   UpdateOutput(dt_s);

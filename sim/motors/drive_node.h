@@ -101,7 +101,8 @@ class DriveNode {
   void OnHostHeartbeat(const can::CanFrame& frame, double time_s);
   void CheckRpdoDeadline(double time_s, std::vector<can::CanFrame>* out);
   void ApplyControlword(std::uint16_t controlword, std::vector<can::CanFrame>* out);
-  void EnterFault(std::uint16_t emcy_code, std::uint8_t error_register, std::vector<can::CanFrame>* out);
+  // EMCY, 0x1001/0x603F and the fault reaction (transition 13), its ramp timed from time_s.
+  void EnterFault(std::uint16_t emcy_code, std::uint8_t error_register, double time_s, std::vector<can::CanFrame>* out);
   void SendEmcy(std::uint16_t code, std::uint8_t error_register, std::vector<can::CanFrame>* out);
   void UpdateOutput(double dt_s);
   void UpdateStatusObjects();

@@ -1,5 +1,6 @@
 #include "sim/motors/drive_object_dictionary.h"
 
+#include <utility>
 #include <vector>
 
 #include "drivers/arm/arm_pdo.h"
@@ -64,7 +65,8 @@ std::uint32_t DefaultCobId(std::uint16_t comm, int node) {
 
 }  // namespace
 
-DriveObjectDictionary::DriveObjectDictionary(int node_id, int producer_heartbeat_ms) : node_id_(node_id) {
+DriveObjectDictionary::DriveObjectDictionary(int node_id, int producer_heartbeat_ms)
+    : node_id_(node_id), power_on_producer_heartbeat_ms_(producer_heartbeat_ms) {
   using A = ObjectAccess;
   Add(0x1000, 0, 4, A::kReadOnly, kCiA402Servo);
   Add(0x1001, 0, 1, A::kReadOnly, 0);
@@ -188,10 +190,12 @@ std::uint32_t DriveObjectDictionary::Get(ObjectAddress address) const {
   return it == objects_.end() ? 0 : it->second.value;
 }
 
-void DriveObjectDictionary::ResetCommunicationArea(const DriveObjectDictionary& current) {
-  for (const auto& [key, entry] : current.objects_) {
-    if (key.first >= 0x2000 || key == Key{0x1001, 0}) objects_[key] = entry;
+void DriveObjectDictionary::ResetCommunicationArea() {
+  DriveObjectDictionary power_on(node_id_, power_on_producer_heartbeat_ms_);
+  for (const auto& [key, entry] : objects_) {
+    if (key.first >= 0x2000 || key == Key{0x1001, 0}) power_on.objects_[key] = entry;
   }
+  objects_ = std::move(power_on.objects_);
 }
 
 bool DriveObjectDictionary::PdoValid(Pdo pdo) const { return (Get({CommIndexOf(pdo), 1}) & kInvalidBit) == 0; }

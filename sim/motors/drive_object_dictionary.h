@@ -44,10 +44,10 @@ class DriveObjectDictionary {
   std::uint32_t Get(canopen::ObjectAddress address) const;
 
   /// NMT reset communication (CiA 301 §7.3.2.2.3): every object of the communication profile
-  /// area (0x1000-0x1FFF) back to its power-on value, the rest kept as `current` has it (the
-  /// error code 0x603F of a fault still present among them) and the error register 0x1001 too,
-  /// which shows the errors present, not a setting.
-  void ResetCommunicationArea(const DriveObjectDictionary& current);
+  /// area (0x1000-0x1FFF) back to its power-on value; the rest kept (the error code 0x603F of a
+  /// fault still present among them), and the error register 0x1001 too, which shows the
+  /// errors present, not a setting.
+  void ResetCommunicationArea();
 
   bool PdoValid(Pdo pdo) const;
   /// Producer heartbeat time 0x1017, ms (0: none).
@@ -68,6 +68,7 @@ class DriveObjectDictionary {
   std::uint32_t CheckMapping(std::uint16_t map_index, std::uint8_t sub, std::uint32_t value) const;
 
   int node_id_;
+  int power_on_producer_heartbeat_ms_;
   std::map<Key, ObjectEntry> objects_;
 };
 

@@ -18,7 +18,6 @@ class BrakingRun {
   /// time_s. Returns the start of the current run (its first message's time), -1 when this
   /// message ended it or none has begun (the first message has nothing to compare with).
   double Add(const std::vector<double>& axes, double time_s);
-  double since_s() const { return since_s_; }
 
  private:
   double zero_threshold_;

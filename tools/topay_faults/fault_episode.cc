@@ -15,6 +15,8 @@ namespace {
 constexpr double kMovingRecentlyS = 0.3;  // moving = an ACTUATOR_COMMAND above threshold this recently
 constexpr double kResetPeriodS = 0.5;
 constexpr double kBrakingConfirmS = 0.05;  // a braking run this long is the drives stopping
+constexpr const char* kAtZeroEvidence = "every drive commanded to 0";
+constexpr const char* kBrakingEvidence = "every drive braking";
 // The injector's goal ids: 900000001 on (the mission's are microsecond stamps, about 1.8e15).
 constexpr std::int64_t kToolGoalIds = 900000000, kToolGoalIdsEnd = 1000000000;
 bool IsToolGoal(std::int64_t goal_id) { return goal_id >= kToolGoalIds && goal_id < kToolGoalIdsEnd; }
@@ -162,13 +164,12 @@ void FaultEpisode::FindSafeState(const GraphView& view, double graph_end_s) {
   if (braking_s >= inject_s_ && (view.actuator_zero || view.last_actuator_s - braking_s >= kBrakingConfirmS) &&
       (safe_s < 0.0 || braking_s < safe_s)) {
     safe_s = braking_s;
-    evidence = view.actuator_zero && view.actuator_zero_since_s <= braking_s ? "every drive commanded to 0"
-                                                                             : "every drive braking";
+    evidence = view.actuator_zero && view.actuator_zero_since_s <= braking_s ? kAtZeroEvidence : kBrakingEvidence;
   }
   // Zeros after a braking run that began before the fault (a tracked deceleration through it).
   if (view.actuator_zero && view.actuator_zero_since_s >= inject_s_ && safe_s < 0.0) {
     safe_s = view.actuator_zero_since_s;
-    evidence = "every drive commanded to 0";
+    evidence = kAtZeroEvidence;
   }
   if (graph_end_s >= 0.0 && safe_s < 0.0) safe_s = graph_end_s, evidence = "graph stopped";
   if (safe_s < 0.0) return;
@@ -277,7 +278,7 @@ void FaultEpisode::Finish(const GraphView& view, const std::string& outcome) {
   }
   std::string head = result_.safe_ms >= 0.0 ? fmt::format("{} after {:.0f} ms", result_.safe_evidence, result_.safe_ms)
                                             : "no stop";
-  if (result_.zero_ms >= 0.0 && result_.safe_evidence == "every drive braking") {
+  if (result_.zero_ms >= 0.0 && result_.safe_evidence == kBrakingEvidence) {
     head += fmt::format(", at 0 after {:.0f} ms", result_.zero_ms);
   }
   if (resets_sent_ > 0) head += fmt::format("; {} FAULT_RESET sent", resets_sent_);

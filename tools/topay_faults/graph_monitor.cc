@@ -20,10 +20,20 @@ namespace topay::tools {
 namespace {
 
 // The largest magnitude of a drive command's axes (base and joints); inf for a non-finite one.
-double LargestAxis(const control_command_t& c) {
-  double largest = std::max(std::abs(c.v_mps), std::abs(c.omega_radps));
-  for (double qdot : c.qdot_radps) largest = std::max(largest, std::abs(qdot));
-  return std::isfinite(largest) ? largest : INFINITY;
+// v, omega and the joint rates of an ACTUATOR_COMMAND, into *axes (its capacity kept).
+void Axes(const control_command_t& c, std::vector<double>* axes) {
+  axes->assign({c.v_mps, c.omega_radps});
+  axes->insert(axes->end(), c.qdot_radps.begin(), c.qdot_radps.end());
+}
+
+// The largest |axis|; INFINITY when one is not finite.
+double LargestAxis(const std::vector<double>& axes) {
+  double largest = 0.0;
+  for (double a : axes) {
+    if (!std::isfinite(a)) return INFINITY;
+    largest = std::max(largest, std::abs(a));
+  }
+  return largest;
 }
 
 }  // namespace
@@ -108,13 +118,12 @@ void GraphMonitor::OnMessage(const std::string& channel, const std::uint8_t* dat
       if (CheckedDecode<control_command_t>(data, size, nullptr)) v.last_control_command_s = t;
     } else if (channel == channels::ACTUATOR_COMMAND) {
       if (const auto c = CheckedDecode<control_command_t>(data, size, nullptr)) {
-        const double largest = LargestAxis(*c);
+        Axes(*c, &axes_);
+        const double largest = LargestAxis(axes_);
         const bool zero = largest < kZeroThreshold;
         if (zero && (!v.actuator_zero || v.actuator_zero_since_s < 0.0)) v.actuator_zero_since_s = t;
         v.actuator_zero = zero;
         if (largest >= kMovingThreshold) v.last_moving_s = t;
-        axes_.assign({c->v_mps, c->omega_radps});
-        axes_.insert(axes_.end(), c->qdot_radps.begin(), c->qdot_radps.end());
         v.actuator_braking_since_s = braking_.Add(axes_, t);
         v.last_actuator_s = t;
       }

@@ -17,6 +17,14 @@ struct Expected {
   int size_bytes;
 };
 
+// The write to index:subindex in `writes`, null when there is none.
+const SdoWrite* FindWrite(const std::vector<SdoWrite>& writes, std::uint16_t index, std::uint8_t subindex) {
+  const auto it = std::find_if(writes.begin(), writes.end(), [&](const SdoWrite& w) {
+    return w.address.index == index && w.address.subindex == subindex;
+  });
+  return it == writes.end() ? nullptr : &*it;
+}
+
 TEST(StartupSdoTest, DefaultSequenceForNode3) {
   std::string error;
   const auto writes = StartupSdoWrites(3, StartupOptions{}, &error);
@@ -57,10 +65,8 @@ TEST(StartupSdoTest, TargetPositionMappedOnRequest) {
   options.mode_of_operation = mode::kCyclicSynchronousPosition;
   const auto writes = StartupSdoWrites(1, options, nullptr);
   ASSERT_TRUE(writes);
-  const auto mapped = std::find_if(writes->begin(), writes->end(), [](const SdoWrite& w) {
-    return w.address.index == 0x1601 && w.address.subindex == 1;
-  });
-  ASSERT_NE(mapped, writes->end());
+  const SdoWrite* mapped = FindWrite(*writes, 0x1601, 1);
+  ASSERT_NE(mapped, nullptr);
   EXPECT_EQ(mapped->value, 0x607A0020u);
   EXPECT_EQ(writes->back().value, 8u);
 }
@@ -101,10 +107,8 @@ TEST(StartupSdoTest, ADeadlineOfZeroIsStillWrittenAndOnlyForRpdo1) {
   options.rpdo_deadline_ms = 0;  // not monitored: the drive's power-on value 0 is written
   const auto writes = StartupSdoWrites(2, options, nullptr);
   ASSERT_TRUE(writes);
-  const auto timer = std::find_if(writes->begin(), writes->end(), [](const SdoWrite& w) {
-    return w.address.index == 0x1400 && w.address.subindex == 5;
-  });
-  ASSERT_NE(timer, writes->end());
+  const SdoWrite* timer = FindWrite(*writes, 0x1400, 5);
+  ASSERT_NE(timer, nullptr);
   EXPECT_EQ(timer->value, 0u);
   EXPECT_EQ(timer->size_bytes, 2);
   // Only RPDO1 carries one: the TPDOs' event timers are left alone.
