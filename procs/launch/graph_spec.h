@@ -43,9 +43,11 @@ struct ProcessSpec {
   int max_restarts = -1;              ///< -1: unlimited
   bool heartbeat = true;              ///< supervised by HEARTBEAT (false: ready once started)
   /// How late a heartbeat may be: the process is reported silent and restarted after
-  /// heartbeat_period_s + heartbeat_timeout_s without one (default 3 s late, i.e. 4 s silent:
-  /// four heartbeats lost in a row. With 2 s, two lost datagrams of a 10 %-lossy bus killed
-  /// working processes (docs/reliability.md); a dead process is seen by its exit at once).
+  /// heartbeat_period_s + heartbeat_timeout_s without one (default 3 s late, i.e. 4 s silent). A
+  /// heartbeat is the bus's HEARTBEAT or the watchdog datagram on the launcher's local socket
+  /// (procs/runtime/watchdog_notify.h), which a lossy bus cannot lose (with 2 s, and once with
+  /// 4 s, lost datagrams of a 10 %-lossy bus killed working processes: docs/reliability.md); a
+  /// dead process is seen by its exit at once.
   double heartbeat_timeout_s = 3.0;
   double startup_timeout_s = 5.0;     ///< time allowed to the first heartbeat
   double ready_delay_s = 0.3;  ///< without heartbeat: counted ready this long after its start

@@ -64,6 +64,11 @@ Supervisor::Supervisor(GraphSpec graph, SupervisorOptions options)
                              "): no multicast route? use --isolated or add one");
   }
   lcm_->subscribe(std::string(channels::HEARTBEAT), &Supervisor::OnHeartbeat, this);
+  try {  // abstract: nothing left on disk, and the children share the launcher's network namespace
+    watchdog_ = std::make_unique<procs::WatchdogSocket>("@topay-launch-" + std::to_string(getpid()));
+  } catch (const std::exception& e) {
+    Log(std::string("watchdog socket: ") + e.what() + "; supervising by the bus heartbeat only");
+  }
   for (const ProcessSpec& spec : graph_.processes) {
     auto p = std::make_unique<Process>();
     p->spec = spec;
@@ -107,6 +112,13 @@ void Supervisor::OnHeartbeat(const lcm::ReceiveBuffer* rbuf, const std::string&)
   }
 }
 
+void Supervisor::OnWatchdog(pid_t pid, std::string_view text) {
+  if (text != procs::kWatchdogMessage) return;
+  for (auto& p : processes_) {
+    if (p->pid == pid && p->alive() && p->state == ProcState::kRunning) p->last_heartbeat = Clock::now();
+  }
+}
+
 bool Supervisor::AllReady() const {
   return std::all_of(processes_.begin(), processes_.end(),
                      [](const auto& p) { return p->state == ProcState::kRunning; });
@@ -137,6 +149,7 @@ void Supervisor::Start(Process& p, Clock::time_point now) {
                                             {"TOPAY_RUN_DIR", options_.run_dir}};
   if (!graph_.lcm_url.empty()) env["LCM_DEFAULT_URL"] = graph_.lcm_url;
   if (p.spec.realtime.mlockall) env["TOPAY_MLOCKALL"] = "1";
+  if (watchdog_) env[procs::kNotifySocketEnv] = watchdog_->name();
   const SpawnedChild child = SpawnChild(p.spec, env, signals_.previous_mask());
   guardian_.Add(child.pid);
   p.pid = child.pid;
@@ -221,7 +234,7 @@ void Supervisor::Supervise(Clock::time_point now) {
     const double silent = Seconds(now - p->last_heartbeat);
     if (silent <= limit) continue;
     char text[160];
-    std::snprintf(text, sizeof(text), ": no heartbeat for %.2f s (limit %.2f s), killing pid %d", silent, limit, p->pid);
+    std::snprintf(text, sizeof(text), ": no heartbeat for %.2f s (limit %.2f s; bus and watchdog), killing pid %d", silent, limit, p->pid);
     Log(p->spec.name + text);
     p->killed_silent = true;
     kill(-p->pid, SIGKILL);
@@ -314,6 +327,7 @@ Clock::time_point Supervisor::NextWake(Clock::time_point now) const {
 void Supervisor::PollOnce(Clock::time_point now) {
   std::vector<pollfd> fds = {{signals_.fd(), POLLIN, 0}, {lcm_->getFileno(), POLLIN, 0}};
   for (const auto& s : streams_) fds.push_back({s->fd, POLLIN, 0});
+  if (watchdog_) fds.push_back({watchdog_->fd(), POLLIN, 0});  // last: the streams' indices stay i + 2
   const auto wait = std::chrono::ceil<std::chrono::milliseconds>(NextWake(now) - Clock::now()).count();
   if (poll(fds.data(), fds.size(), static_cast<int>(std::clamp<long long>(wait, 0, 1000))) < 0) {
     if (errno != EINTR) throw std::runtime_error(std::string("poll: ") + std::strerror(errno));
@@ -332,6 +346,9 @@ void Supervisor::PollOnce(Clock::time_point now) {
   if (fds[1].revents & POLLIN) lcm_->handleTimeout(0);
   for (std::size_t i = 0; i < streams_.size(); ++i) {
     if (fds[i + 2].revents != 0) ReadOutput(*streams_[i], (fds[i + 2].revents & (POLLHUP | POLLERR)) != 0);
+  }
+  if (watchdog_ && (fds.back().revents & POLLIN)) {
+    watchdog_->ReadAll([this](pid_t pid, std::string_view text) { OnWatchdog(pid, text); });
   }
   std::erase_if(streams_, [](const auto& s) { return s->fd < 0; });
 }

@@ -20,6 +20,7 @@
 #include "procs/launch/log_player.h"
 #include "procs/launch/status_report.h"
 #include "procs/runtime/signal_fd.h"
+#include "procs/runtime/watchdog_notify.h"
 
 namespace topay::launch {
 
@@ -64,6 +65,9 @@ class Supervisor {
   void OnExit(Process& p, int status, Clock::time_point now);
   void Supervise(Clock::time_point now);
   void OnHeartbeat(const lcm::ReceiveBuffer* rbuf, const std::string& channel);
+  /// A datagram on the watchdog socket: "WATCHDOG=1" from a running child keeps it alive as a
+  /// heartbeat does (its health and status come only with the bus heartbeat).
+  void OnWatchdog(pid_t pid, std::string_view text);
   void ReadOutput(Stream& stream, bool hang_up);
   // supervisor_status.cc: CPU and memory from /proc, the status rows, their three outputs.
   void SampleResources(Clock::time_point now);
@@ -86,6 +90,7 @@ class Supervisor {
   GroupGuardian guardian_;  // forked before LCM and any child
   Console console_;
   std::unique_ptr<lcm::LCM> lcm_;
+  std::unique_ptr<procs::WatchdogSocket> watchdog_;  // the children's NOTIFY_SOCKET (null: bus heartbeats only)
   std::vector<std::unique_ptr<Process>> processes_;
   std::vector<std::unique_ptr<Stream>> streams_;
   std::unique_ptr<LogPlayer> player_;

@@ -113,12 +113,11 @@ void MissionNode::OnPlannerStatus(const planner_status_t& msg, std::int64_t now)
     planner_ended_ = true;
     ended_trajectory_id_ = msg.trajectory_id;
     reached_at_rest_ = msgs::ReportsReachedAtRest(msg);
-  } else if ((msg.state == planner_status_t::FAILED || msg.state == planner_status_t::CANCELLED) &&
-             retry_utime_ == 0) {
-    AttemptFailed(msg.state == planner_status_t::FAILED
-                      ? (msg.failure_reason.empty() ? std::string("plan failed") : msg.failure_reason)
-                      : std::string("goal cancelled"),
-                  "no plan", now);
+  } else if (msg.state == planner_status_t::CANCELLED && retry_utime_ == 0) {
+    GoalPreempted(msg.detail, now);
+    return;
+  } else if (msg.state == planner_status_t::FAILED && retry_utime_ == 0) {
+    AttemptFailed(msg.failure_reason.empty() ? std::string("plan failed") : msg.failure_reason, "no plan", now);
     return;
   }
   CheckArrival(now);
@@ -192,6 +191,8 @@ void MissionNode::BeginStep(std::size_t index, std::int64_t now) {
   step_index_ = index;
   step_start_utime_ = now;
   attempts_ = 0;
+  preemptions_ = 0;
+  resend_after_preemption_ = false;
   step_replans_ = 0;
   attempt_replans_ = 0;
   goal_id_ = 0;
@@ -230,7 +231,8 @@ void MissionNode::BeginStep(std::size_t index, std::int64_t now) {
 }
 
 void MissionNode::SendGoal(std::int64_t now) {
-  ++attempts_;
+  if (!resend_after_preemption_) ++attempts_;
+  resend_after_preemption_ = false;
   goal_id_ = next_goal_id_++;
   retry_utime_ = 0;
   step_replans_ += attempt_replans_;
@@ -284,6 +286,26 @@ void MissionNode::AttemptFailed(const std::string& reason, const char* outcome, 
   }
   retry_utime_ = now + Micros(options_.retry_delay_s);
   Publish(now, fmt::format("attempt {} failed ({}), retrying", attempts_, last_failure_));
+}
+
+// Another sender's goal superseded ours (the planner takes the newest goal): not a failed plan,
+// so it is sent again without using an attempt, up to max_preemptions times per step (hostile
+// payloads of the twenty-seventh session: two forged copies and an injected goal used up a
+// step's three attempts in 4 s).
+void MissionNode::GoalPreempted(const std::string& detail, std::int64_t now) {
+  ++preemptions_;
+  last_failure_ = detail.empty() ? std::string("goal cancelled") : "goal cancelled: " + detail;
+  if (preemptions_ > options_.max_preemptions) {
+    Finish(mission_status_t::FAILED,
+           fmt::format("step {} ({}): goal superseded {} times by other goals (max_preemptions {}): {}",
+                       step_index_ + 1, step().Describe(), preemptions_, options_.max_preemptions, last_failure_),
+           now);
+    return;
+  }
+  resend_after_preemption_ = true;
+  retry_utime_ = now + Micros(options_.retry_delay_s);
+  Publish(now, fmt::format("{} ({} of {} allowed this step), sending it again", last_failure_, preemptions_,
+                           options_.max_preemptions));
 }
 
 void MissionNode::CheckArrival(std::int64_t now) {

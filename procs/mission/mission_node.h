@@ -89,6 +89,7 @@ class MissionNode {
   // An attempt of a goto / home step failed (`reason`): the goal is sent again after
   // retry_delay_s, or after max_attempts the mission FAILS ("<outcome> after N attempts: ...").
   void AttemptFailed(const std::string& reason, const char* outcome, std::int64_t now);
+  void GoalPreempted(const std::string& detail, std::int64_t now);
   void CompleteStep(std::int64_t now);
   void Finish(std::int8_t state, const std::string& detail, std::int64_t now);
   // Publishes MISSION_STATUS with `detail` (logged as a progress line if it changed).
@@ -132,6 +133,8 @@ class MissionNode {
   goal_t goal_msg_{};                  // ... as sent (repeated unchanged)
   std::int64_t goal_sent_utime_ = 0;   // ... last sent or repeated
   int attempts_ = 0;
+  int preemptions_ = 0;                   ///< this step's goals superseded by other senders' goals
+  bool resend_after_preemption_ = false;  ///< the next SendGoal uses no attempt
   std::int64_t retry_utime_ = 0;       // 0: none scheduled
   bool planner_ended_ = false;         // SUCCEEDED "ended" for goal_id_
   std::int64_t ended_trajectory_id_ = 0;     // the trajectory the planner reported ended

@@ -20,6 +20,7 @@ void Require(bool ok, double value, const std::string& source, const char* field
 
 void CheckMissionOptions(const MissionOptions& o, const std::string& source) {
   if (o.max_attempts < 1) throw ConfigError(source, "max_attempts", "must be >= 1");
+  if (o.max_preemptions < 0) throw ConfigError(source, "max_preemptions", "must be >= 0");
   Require(o.retry_delay_s >= 0.0, o.retry_delay_s, source, "retry_delay_s", ">= 0");
   Require(o.step_timeout_s > 0.0, o.step_timeout_s, source, "step_timeout_s", "> 0");
   Require(o.tolerance.position_m >= 0.0, o.tolerance.position_m, source, "tolerance.position_m", ">= 0");
@@ -38,6 +39,7 @@ MissionOptions LoadMissionOptions(const std::string& path) {
   YamlSection top(root, path);
   ReadRobotFiles(&top, &o.robot_urdf, &o.robot_yaml);
   top.Read("max_attempts", &o.max_attempts);
+  top.Read("max_preemptions", &o.max_preemptions);
   top.Read("retry_delay_s", &o.retry_delay_s);
   top.Read("step_timeout_s", &o.step_timeout_s);
   YamlSection tolerance = top.Section("tolerance");

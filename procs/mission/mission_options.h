@@ -13,9 +13,14 @@ struct MissionOptions {
   std::string source;      ///< The file these came from ("" = defaults).
   std::string robot_urdf;  ///< "" = the shipped robot (config/robot/topay_mm.urdf).
   std::string robot_yaml;  ///< "" = config/robot/topay_mm.yaml.
-  /// Plans tried per goto / home step: a FAILED (or CANCELLED) plan is sent again with a new
-  /// goal id until this many were tried, then the mission fails. >= 1.
+  /// Plans tried per goto / home step: a FAILED plan is sent again with a new goal id until
+  /// this many were tried, then the mission fails. >= 1.
   int max_attempts = 3;
+  /// A goal the planner reports CANCELLED (another sender's goal superseded it: an operator, a
+  /// forged or corrupted copy) is sent again with a new goal id after retry_delay_s without
+  /// using up an attempt, up to this many times per step; one more fails the mission ("goal
+  /// superseded N times"). >= 0.
+  int max_preemptions = 10;
   /// A failed plan is sent again after this long (s): the map grows meanwhile. >= 0.
   double retry_delay_s = 0.5;
   /// A goto / home step that has not arrived after this long (s) fails the mission (a step's

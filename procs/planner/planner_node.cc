@@ -172,7 +172,11 @@ void PlannerNode::OnGoal(const goal_t& msg) {
   }
   std::string error;
   const std::optional<msgs::PlanGoal> goal = msgs::FromMessage(msg, &error);
-  std::string reason = goal ? ScreenGoal(*goal, map_, reach_, options_.goals) : "bad goal: " + error;
+  const std::string reason = goal ? ScreenGoal(*goal, map_, reach_, options_.goals) : "bad goal: " + error;
+  if (!reason.empty()) {
+    RefuseGoal(msg.goal_id, reason);
+    return;
+  }
   if (goal_ && !goal_->done) {
     // Superseded: said also when no plan is running (its trajectory under way, a retry due),
     // so whoever sent it knows at once (a mission waited for a forged goal's end, finding 36).
@@ -181,19 +185,35 @@ void PlannerNode::OnGoal(const goal_t& msg) {
     PublishStatus(planner_status_t::CANCELLED, "", fmt::format("goal {} superseded by goal {}",
                                                                goal_->goal.goal_id, msg.goal_id));
   }
-  if (!reason.empty()) {
-    ++counts_.goals_refused;
-    spdlog::warn("goal {} refused: {}", msg.goal_id, reason);
-    goal_.reset();
-    status_.goal_id = msg.goal_id;
-    PublishStatus(planner_status_t::FAILED, reason, "goal refused before planning");
-    return;
-  }
   goal_ = GoalRecord{*goal};
   collision_points_.clear();
   pending_.reset();
   retry_at_utime_ = 0;
   RequestPlan(PlanTrigger::kGoal, fmt::format("new goal {}", goal->goal_id));
+}
+
+void PlannerNode::RefuseGoal(std::int64_t goal_id, const std::string& reason) {
+  ++counts_.goals_refused;
+  spdlog::warn("goal {} refused: {}", goal_id, reason);
+  if (!goal_ || goal_->done) {
+    goal_.reset();
+    status_.goal_id = goal_id;
+    PublishStatus(planner_status_t::FAILED, reason, "goal refused before planning");
+    return;
+  }
+  // A goal in hand goes on: only a goal the planner takes supersedes it (a malformed or
+  // impossible goal from any sender must not end the mission's; fault table, session 27). The
+  // refusal is said under its own id, apart from the status of the goal in hand.
+  planner_status_t refusal;
+  refusal.utime = clock_.Now();
+  refusal.state = planner_status_t::FAILED;
+  refusal.goal_id = goal_id;
+  refusal.trajectory_id = 0;
+  refusal.failure_reason = reason;
+  refusal.front_end_ms = refusal.sampling_ms = refusal.optimization_ms = refusal.total_ms = 0.0;
+  refusal.replans = 0;
+  refusal.detail = fmt::format("goal refused before planning; goal {} in hand goes on", goal_->goal.goal_id);
+  loop_->lcm().publish(std::string(channels::PLANNER_STATUS), &refusal);
 }
 
 void PlannerNode::OnRobotState(const robot_state_t& msg) {

@@ -98,6 +98,8 @@ class PlannerNode {
               TrackedRobotPredictor* tracked_start = nullptr);
 
   void OnGoal(const goal_t& msg);
+  /// A goal that fails its screen: FAILED under its id; a goal in hand is kept.
+  void RefuseGoal(std::int64_t goal_id, const std::string& reason);
   void OnRobotState(const robot_state_t& msg);
   void OnMap(const map_update_t& msg);
   void OnTrackerStatus(const tracker_status_t& msg);

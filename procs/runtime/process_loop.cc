@@ -65,6 +65,10 @@ void ProcessLoop::PublishHeartbeat() {
     hb.status += " (malformed messages dropped: " + std::to_string(stats_.total_malformed()) + ")";
   }
   lcm_->publish(std::string(channels::HEARTBEAT), &hb);
+  if (watchdog_.enabled() && !watchdog_.Notify() && !watchdog_warned_) {
+    watchdog_warned_ = true;  // the bus heartbeat still goes out; said once
+    spdlog::warn("{} (the launcher then sees only the bus heartbeat)", watchdog_.error());
+  }
 }
 
 void ProcessLoop::RunDueTimers(Clock::time_point now) {

@@ -1,7 +1,8 @@
 #pragma once
 // The event loop of every process of the graph: one thread waits (poll) on the LCM file
 // descriptor, on a signalfd for SIGINT/SIGTERM and on the next timer deadline, so an idle
-// process sleeps. It publishes the HEARTBEAT and dispatches typed, checked subscriptions.
+// process sleeps. It publishes the HEARTBEAT (and with it a watchdog datagram to the launcher,
+// watchdog_notify.h) and dispatches typed, checked subscriptions.
 
 #include <lcm/lcm-cpp.hpp>
 
@@ -15,6 +16,7 @@
 #include "procs/runtime/channel_stats.h"
 #include "procs/runtime/process_options.h"
 #include "procs/runtime/signal_fd.h"
+#include "procs/runtime/watchdog_notify.h"
 #include "topay_msgs/checked_decode.h"
 
 namespace topay::procs {
@@ -93,6 +95,8 @@ class ProcessLoop {
   std::int8_t health_ = 0;
   std::string status_ = "starting";
   std::int64_t heartbeat_seq_ = 0;
+  WatchdogNotifier watchdog_;  // "WATCHDOG=1" to the launcher with every heartbeat (NOTIFY_SOCKET)
+  bool watchdog_warned_ = false;
   bool stop_ = false;
 };
 

@@ -2,6 +2,7 @@
 // planner statuses, robot states and tracker statuses in, the goals, gripper commands and
 // mission statuses it publishes recorded.
 
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -250,6 +251,50 @@ TEST_F(MissionNodeTest, RetriesRunOutIntoAFailedMissionWithTheReason) {
   EXPECT_NE(statuses_.back().detail.find("2 attempts"), std::string::npos) << statuses_.back().detail;
   node_->Tick(At(3.0));
   EXPECT_EQ(goals_.size(), 2u) << "nothing more after the end";
+}
+
+// Hostile payloads (twenty-seventh session): two forged copies of the mission's goal and an
+// injected goal each superseded the goal in hand, and the three CANCELLED statuses used up the
+// step's three attempts. A goal superseded by another sender's is sent again without using an
+// attempt; failed plans still count.
+TEST_F(MissionNodeTest, ASupersededGoalIsSentAgainWithoutUsingAnAttempt) {
+  options_.max_attempts = 2;
+  options_.retry_delay_s = 0.0;
+  Make({Goto(a_, "pickup")});
+  Start();
+  for (int k = 0; k < 5; ++k) {
+    const std::int64_t id = goals_.back().goal_id;
+    Planner(id, planner_status_t::CANCELLED, 1.0 + k, fmt::format("goal {} superseded by goal {}", id, 900000001 + k));
+    node_->Tick(At(1.05 + k));
+    ASSERT_EQ(goals_.size(), static_cast<std::size_t>(k + 2));
+    EXPECT_NE(goals_.back().goal_id, id) << "a new goal id";
+    EXPECT_EQ(statuses_.back().attempts, 1) << "after preemption " << k + 1;
+  }
+  EXPECT_FALSE(node_->finished());
+  Planner(goals_.back().goal_id, planner_status_t::FAILED, 7.0, "", "no path");
+  node_->Tick(At(7.1));
+  EXPECT_EQ(statuses_.back().attempts, 2);
+  Planner(goals_.back().goal_id, planner_status_t::FAILED, 8.0, "", "no path");
+  EXPECT_EQ(node_->state(), mission_status_t::FAILED);
+  EXPECT_NE(statuses_.back().detail.find("2 attempts"), std::string::npos) << statuses_.back().detail;
+}
+
+TEST_F(MissionNodeTest, AGoalSupersededMoreThanMaxPreemptionsTimesFailsTheMissionClearly) {
+  options_.max_preemptions = 2;
+  options_.retry_delay_s = 0.0;
+  Make({Goto(a_, "pickup")});
+  Start();
+  for (int k = 0; k < 3; ++k) {
+    const std::int64_t id = goals_.back().goal_id;
+    Planner(id, planner_status_t::CANCELLED, 1.0 + k, fmt::format("goal {} superseded by goal 77", id));
+    node_->Tick(At(1.05 + k));
+  }
+  EXPECT_EQ(node_->state(), mission_status_t::FAILED);
+  EXPECT_EQ(goals_.size(), 3u) << "the first goal and 2 sent again";
+  EXPECT_NE(statuses_.back().detail.find("goal superseded 3 times by other goals (max_preemptions 2)"),
+            std::string::npos)
+      << statuses_.back().detail;
+  EXPECT_NE(statuses_.back().detail.find("superseded by goal 77"), std::string::npos) << statuses_.back().detail;
 }
 
 TEST_F(MissionNodeTest, AStepThatDoesNotArriveTimesOut) {

@@ -170,6 +170,8 @@ TEST(MissionOptionsTest, DefaultsAndAFileWithEveryKey) {
   EXPECT_DOUBLE_EQ(defaults.status_period_s, 0.5);
   const MissionOptions shipped = LoadMissionOptions(std::string(TOPAY_SOURCE_DIR) + "/config/mission/mission.yaml");
   EXPECT_EQ(shipped.max_attempts, defaults.max_attempts);
+  EXPECT_EQ(defaults.max_preemptions, 10);
+  EXPECT_EQ(shipped.max_preemptions, defaults.max_preemptions);
   EXPECT_DOUBLE_EQ(shipped.step_timeout_s, defaults.step_timeout_s);
   EXPECT_DOUBLE_EQ(shipped.arrival_settle_s, defaults.arrival_settle_s);
   EXPECT_DOUBLE_EQ(shipped.goal_repeat_period_s, defaults.goal_repeat_period_s);
@@ -179,6 +181,10 @@ TEST(MissionOptionsTest, DefaultsAndAFileWithEveryKey) {
   std::filesystem::create_directories(dir);
   std::ofstream(dir + "/bad.yaml") << "max_attempts: 0\n";
   EXPECT_THROW(LoadMissionOptions(dir + "/bad.yaml"), ConfigError);
+  std::ofstream(dir + "/preemptions.yaml") << "max_preemptions: -1\n";
+  EXPECT_THROW(LoadMissionOptions(dir + "/preemptions.yaml"), ConfigError);
+  std::ofstream(dir + "/preemptions_ok.yaml") << "max_preemptions: 0\n";
+  EXPECT_EQ(LoadMissionOptions(dir + "/preemptions_ok.yaml").max_preemptions, 0);
   std::ofstream(dir + "/typo.yaml") << "tolerance: {position: 0.1}\n";
   EXPECT_THROW(LoadMissionOptions(dir + "/typo.yaml"), ConfigError);
   std::ofstream(dir + "/settle.yaml") << "arrival_settle_s: 0\n";

@@ -455,6 +455,38 @@ TEST_F(PlannerProcess, AGoalIdTakenBeforeTheLastIsNotReusedAndAReplacedGoalIsCan
   EXPECT_NE(log.find("GOAL 32 ignored: its id was issued before with a different target"), std::string::npos) << log;
 }
 
+// Fault table of the twenty-seventh session: a NaN goal, an unreachable one and one inside an
+// obstacle (the fault tool's, another sender's) each superseded the mission's goal before it was
+// refused, so three of them failed the mission's three attempts. A refused goal now leaves the
+// goal in hand alone: FAILED under its own id, nothing said against the goal in hand.
+TEST_F(PlannerProcess, ARefusedGoalLeavesTheGoalInHand) {
+  Send(ReachableGoal(33));
+  ASSERT_TRUE(SpinWithRobot([&] { return !out_.trajectories.empty(); }, 60.0)) << ReadText(dir_ + "/planner.txt");
+  const std::size_t planned = out_.trajectories.size();
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  Send(Goal(34, {nan, 0.0, 0.5}));
+  Send(Goal(35, {0.0, 0.0, 0.4}));   // inside an obstacle
+  Send(Goal(36, {-1.0, 2.0, 3.0}));  // outside the arm's reach
+  for (const std::int64_t id : {34, 35, 36}) {
+    ASSERT_TRUE(SpinWithRobot([&] { return out_.Last(id, planner_status_t::FAILED) != nullptr; }, 10.0))
+        << "goal " << id << "\n" << ReadText(dir_ + "/planner.txt");
+    const planner_status_t& refused = *out_.Last(id, planner_status_t::FAILED);
+    EXPECT_FALSE(refused.failure_reason.empty());
+    EXPECT_NE(refused.detail.find("goal 33 in hand goes on"), std::string::npos) << refused.detail;
+  }
+  const std::size_t after_refusals = out_.statuses.size();
+  ASSERT_TRUE(SpinWithRobot([&] { return out_.statuses.size() > after_refusals; }, 5.0));  // the periodic status
+  EXPECT_EQ(out_.statuses.back().goal_id, 33);
+  EXPECT_NE(out_.statuses.back().state, planner_status_t::FAILED);
+  EXPECT_EQ(out_.Last(33, planner_status_t::CANCELLED), nullptr);
+  EXPECT_EQ(out_.Last(33, planner_status_t::FAILED), nullptr);
+  for (std::size_t k = planned; k < out_.trajectories.size(); ++k) EXPECT_EQ(out_.trajectories[k].goal_id, 33);
+  const std::string log = StopPlannerAndReadLog();
+  EXPECT_NE(log.find("4 goals (3 refused, 0 failed as the map came to refuse them, 0 repeats ignored, 0 cancelled)"),
+            std::string::npos)
+      << log;
+}
+
 // The mapper stops (its MAP_UPDATEs lost): once the map's newest scan is older than
 // map.stale_stop_s the trajectory under way is stopped (STOPPING, a stopping trajectory) and no
 // plan goes out; when fresh updates come back the goal is planned again.
