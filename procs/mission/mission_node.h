@@ -89,6 +89,9 @@ class MissionNode {
   // An attempt of a goto / home step failed (`reason`): the goal is sent again after
   // retry_delay_s, or after max_attempts the mission FAILS ("<outcome> after N attempts: ...").
   void AttemptFailed(const std::string& reason, const char* outcome, std::int64_t now);
+  // The planner reported the goal CANCELLED (another sender's goal superseded it, `detail`):
+  // sent again after retry_delay_s without using an attempt, or after max_preemptions the
+  // mission FAILS ("goal superseded N times by other goals").
   void GoalPreempted(const std::string& detail, std::int64_t now);
   void CompleteStep(std::int64_t now);
   void Finish(std::int8_t state, const std::string& detail, std::int64_t now);
