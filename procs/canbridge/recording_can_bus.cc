@@ -13,7 +13,7 @@ std::int64_t RealtimeNowNs() {
 RecordingCanBus::RecordingCanBus(std::unique_ptr<can::CanBus> inner, const std::string& path, std::string interface,
                                  std::function<std::int64_t()> now_ns)
     : inner_(std::move(inner)),
-      file_(path, std::ios::out | std::ios::trunc),
+      file_(path, std::ios::out | std::ios::app),
       writer_(file_),
       interface_(std::move(interface)),
       now_ns_(std::move(now_ns)) {

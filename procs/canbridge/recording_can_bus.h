@@ -19,7 +19,9 @@ std::int64_t RealtimeNowNs();
 
 class RecordingCanBus final : public can::CanBus {
  public:
-  /// Records the traffic of `inner` into `path` (truncated) under `interface` (e.g. "can0").
+  /// Records the traffic of `inner` into `path` under `interface` (e.g. "can0"), appended to what
+  /// the file holds: a bridge the launcher restarts continues its run's log (truncated, the log
+  /// of a mission with a bridge restart held only the traffic since the last one).
   /// `now_ns` stamps sent frames (default RealtimeNowNs). Throws std::runtime_error when the
   /// file cannot be opened.
   RecordingCanBus(std::unique_ptr<can::CanBus> inner, const std::string& path, std::string interface,

@@ -52,8 +52,33 @@ TEST(ReplayCanBusTest, HandsOutFramesAtTheLogsTiming) {
   EXPECT_EQ(bus.status().frames_sent, 0u);
 }
 
+// A bridge the launcher restarts continues its run's log (twenty-seventh session: the log of a
+// mission with kill-canbridge held only the traffic since the last restart).
+TEST(CanbridgeRecordReplayTest, ARestartedRecorderAppendsToTheLog) {
+  const std::string path = OutDir() + "/record_append.log";
+  std::filesystem::remove(path);
+  auto wire = std::make_shared<MemoryWire>();
+  std::int64_t now_ns = 1'000'000'000;
+  for (int run = 0; run < 2; ++run) {
+    RecordingCanBus recorder(std::make_unique<MemoryCanBus>(wire, "bridge"), path, "can0", [&now_ns] { return now_ns; });
+    const can::CanFrame frame =
+        can::CanFrame::Standard(static_cast<std::uint32_t>(0x201 + run), {static_cast<std::uint8_t>(run)});
+    ASSERT_TRUE(recorder.Send(frame).ok());
+    now_ns += 1'000'000'000;
+  }
+  std::ifstream file(path);
+  std::vector<can::CandumpRecord> records;
+  std::string error;
+  ASSERT_TRUE(can::ReadCandumpLog(file, &records, &error)) << error;
+  ASSERT_EQ(records.size(), 2u) << "the second recorder kept the first one's line";
+  EXPECT_EQ(records[0].frame.id, 0x201u);
+  EXPECT_EQ(records[1].frame.id, 0x202u);
+  EXPECT_LT(records[0].timestamp_us, records[1].timestamp_us);
+}
+
 TEST(CanbridgeRecordReplayTest, RecordedRunReplaysIntoTheSameFeedback) {
   const std::string path = OutDir() + "/record_replay.log";
+  std::filesystem::remove(path);  // the recorder appends
   double t = 2000.0;
   auto wire = std::make_shared<MemoryWire>();
   wire->now_ns = [&t] { return static_cast<std::int64_t>(t * 1e9); };
