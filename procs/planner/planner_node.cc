@@ -204,14 +204,11 @@ void PlannerNode::RefuseGoal(std::int64_t goal_id, const std::string& reason) {
   // A goal in hand goes on: only a goal the planner takes supersedes it (a malformed or
   // impossible goal from any sender must not end the mission's; fault table, session 27). The
   // refusal is said under its own id, apart from the status of the goal in hand.
-  planner_status_t refusal;
+  planner_status_t refusal{};  // no trajectory, timings or replans: it was never planned
   refusal.utime = clock_.Now();
   refusal.state = planner_status_t::FAILED;
   refusal.goal_id = goal_id;
-  refusal.trajectory_id = 0;
   refusal.failure_reason = reason;
-  refusal.front_end_ms = refusal.sampling_ms = refusal.optimization_ms = refusal.total_ms = 0.0;
-  refusal.replans = 0;
   refusal.detail = fmt::format("goal refused before planning; goal {} in hand goes on", goal_->goal.goal_id);
   loop_->lcm().publish(std::string(channels::PLANNER_STATUS), &refusal);
 }

@@ -1,7 +1,5 @@
 #include "procs/runtime/watchdog_notify.h"
 
-#include <sys/socket.h>
-#include <sys/un.h>
 #include <unistd.h>
 
 #include <cerrno>
@@ -36,6 +34,7 @@ WatchdogNotifier::WatchdogNotifier(std::optional<std::string> socket_name) {
     socket_name = env;
   }
   name_ = *socket_name;
+  if (!MakeAddress(name_, &address_, &address_length_, &error_)) address_length_ = 0;
   fd_ = socket(AF_UNIX, SOCK_DGRAM | SOCK_CLOEXEC | SOCK_NONBLOCK, 0);
   if (fd_ < 0) error_ = std::string("notify socket: ") + std::strerror(errno);
 }
@@ -45,12 +44,9 @@ WatchdogNotifier::~WatchdogNotifier() {
 }
 
 bool WatchdogNotifier::Notify() {
-  if (fd_ < 0) return false;
-  sockaddr_un address;
-  socklen_t length = 0;
-  if (!MakeAddress(name_, &address, &length, &error_)) return false;
+  if (fd_ < 0 || address_length_ == 0) return false;  // a bad name: error_ says so
   if (sendto(fd_, kWatchdogMessage.data(), kWatchdogMessage.size(), MSG_DONTWAIT | MSG_NOSIGNAL,
-             reinterpret_cast<const sockaddr*>(&address), length) < 0) {
+             reinterpret_cast<const sockaddr*>(&address_), address_length_) < 0) {
     error_ = "notify socket " + name_ + ": " + std::strerror(errno);
     return false;
   }

@@ -7,7 +7,9 @@
 // with 10 % of the bus's datagrams dropped, four heartbeats in a row were lost and the launcher
 // killed a working mapper (docs/reliability.md, finding 40).
 
+#include <sys/socket.h>
 #include <sys/types.h>
+#include <sys/un.h>
 
 #include <functional>
 #include <optional>
@@ -38,6 +40,8 @@ class WatchdogNotifier {
  private:
   int fd_ = -1;
   std::string name_;
+  sockaddr_un address_{};         // the socket's address, made once (0 length: a bad name, error_)
+  socklen_t address_length_ = 0;
   std::string error_;
 };
 
